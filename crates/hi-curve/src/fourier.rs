@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: MIT
+//! Fourier coefficients of a harmonic curve and uniform sampling by FFT (MATH.md §7).
+//!
+//! The harmonic curve through n points is the real trigonometric polynomial
+//!
+//! X(t) = a₀ + Σⱼ₌₁ᴹ (aⱼ·cos 2πjt + bⱼ·sin 2πjt),  M = ⌊n/2⌋,
+//!
+//! with aⱼ = (2/n)·Σₖ xₖ cos(2πjk/n), bⱼ = (2/n)·Σₖ xₖ sin(2πjk/n), a₀ the mean, and for even n
+//! the Nyquist term halved, `a_M` = (1/n)·Σₖ (−1)ᵏ xₖ, `b_M` = 0 (eq. 5.1; the thesis's `b_m` = 0).
+//! In complex form cⱼ = (aⱼ − i·bⱼ)/2 = c̄₋ⱼ, so for even n the Nyquist bin is split in half
+//! between +M and −M, which is what makes the even case real.
+//!
+//! Sampling N uniform points is then an inverse FFT of length N of the zero-padded (N > 2M) or
+//! folded (N ≤ 2M) spectrum: O(N log N) instead of the O(nN) direct sum.
+
+use std::cell::RefCell;
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+
+use crate::ControlPoint;
+use crate::trig::{for_each_harmonic, quarter_turns};
+
+thread_local! {
+    static PLANNER: RefCell<RealFftPlanner<f64>> = RefCell::new(RealFftPlanner::new());
+}
+
+fn forward_plan(len: usize) -> Arc<dyn RealToComplex<f64>> {
+    PLANNER.with(|p| p.borrow_mut().plan_fft_forward(len))
+}
+
+fn inverse_plan(len: usize) -> Arc<dyn ComplexToReal<f64>> {
+    PLANNER.with(|p| p.borrow_mut().plan_fft_inverse(len))
+}
+
+/// A real trigonometric polynomial X(t) = a₀ + Σⱼ₌₁ᴹ (aⱼ cos 2πjt + bⱼ sin 2πjt) with point
+/// coefficients: the spectrum of a harmonic curve (MATH.md §7, eq. 5.1).
+///
+/// # Examples
+///
+/// ```
+/// use hi_curve::Fourier;
+///
+/// // Four samples of cos 2πt: a₁ = 1, everything else 0.
+/// let f = Fourier::from_points(&[1.0, 0.0, -1.0, 0.0]);
+/// assert_eq!(f.degree(), 2);
+/// assert!((f.cos_coeffs()[1] - 1.0).abs() < 1e-15);
+/// assert!(f.cos_coeffs()[2].abs() < 1e-15 && f.sin_coeffs()[1].abs() < 1e-15);
+/// // FFT sampling at 8 points gives cos(2πl/8).
+/// let s = f.sample_uniform(8);
+/// assert!((s[1] - 0.5f64.sqrt()).abs() < 1e-15);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Fourier<P> {
+    // Invariant: cos.len() == sin.len() >= 1; sin[0] is zero.
+    cos: Vec<P>,
+    sin: Vec<P>,
+}
+
+impl<P: ControlPoint> Fourier<P> {
+    /// The spectrum of the harmonic curve through `points` (one real FFT per coordinate).
+    ///
+    /// An empty slice gives the zero polynomial of degree 0.
+    #[must_use]
+    pub fn from_points(points: &[P]) -> Self {
+        let n = points.len();
+        if n == 0 {
+            return Self { cos: vec![P::ZERO], sin: vec![P::ZERO] };
+        }
+        let m = n / 2;
+        let plan = forward_plan(n);
+        let mut input = plan.make_input_vec();
+        let mut spectrum = plan.make_output_vec();
+        let mut scratch = plan.make_scratch_vec();
+        // spectra[i][j] = Σₖ xₖ[i]·e^{−2πijk/n}
+        let mut spectra = Vec::with_capacity(P::DIM);
+        for i in 0..P::DIM {
+            for (slot, p) in input.iter_mut().zip(points) {
+                *slot = p.coord(i);
+            }
+            plan.process_with_scratch(&mut input, &mut spectrum, &mut scratch)
+                .expect("buffer sizes come from the plan");
+            spectra.push(spectrum.clone());
+        }
+        let nf = n as f64;
+        let mut cos = Vec::with_capacity(m + 1);
+        let mut sin = Vec::with_capacity(m + 1);
+        for j in 0..=m {
+            let nyquist = n.is_multiple_of(2) && j == m;
+            let scale = if j == 0 || nyquist { 1.0 / nf } else { 2.0 / nf };
+            cos.push(P::from_coords(|i| spectra[i][j].re * scale));
+            sin.push(if j == 0 || nyquist {
+                P::ZERO
+            } else {
+                P::from_coords(|i| -spectra[i][j].im * scale)
+            });
+        }
+        Self { cos, sin }
+    }
+
+    /// A trigonometric polynomial from its coefficients `a₀…a_M` and `b₀…b_M`.
+    ///
+    /// Returns `None` if the two lists differ in length or are empty. b₀ is ignored (sin 0 = 0).
+    #[must_use]
+    pub fn from_coeffs(cos: Vec<P>, mut sin: Vec<P>) -> Option<Self> {
+        if cos.is_empty() || cos.len() != sin.len() {
+            return None;
+        }
+        sin[0] = P::ZERO;
+        Some(Self { cos, sin })
+    }
+
+    /// The degree M: the highest frequency that may be present.
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.cos.len() - 1
+    }
+
+    /// The cosine coefficients a₀, …, `a_M` (a₀ is the centroid of the points).
+    #[must_use]
+    pub fn cos_coeffs(&self) -> &[P] {
+        &self.cos
+    }
+
+    /// The sine coefficients b₀ (always 0), …, `b_M`.
+    #[must_use]
+    pub fn sin_coeffs(&self) -> &[P] {
+        &self.sin
+    }
+
+    /// The complex coefficient cⱼ of e^{2πijt} for −M ≤ j ≤ M, as (real part, imaginary part):
+    /// c₀ = a₀, cⱼ = (aⱼ − i·bⱼ)/2 and c₋ⱼ = c̄ⱼ.
+    #[must_use]
+    pub fn complex_coeff(&self, j: isize) -> Option<(P, P)> {
+        let a = j.unsigned_abs();
+        if a > self.degree() {
+            return None;
+        }
+        if j == 0 {
+            return Some((self.cos[0], P::ZERO));
+        }
+        let im = if j > 0 { -self.sin[a] * 0.5 } else { self.sin[a] * 0.5 };
+        Some((self.cos[a] * 0.5, im))
+    }
+
+    /// X(t) by the spectral sum, O(M).
+    #[must_use]
+    pub fn eval(&self, t: f64) -> P {
+        self.eval_deriv(t, 0)
+    }
+
+    /// The derivative X⁽ᵖ⁾(t) = Σⱼ (2πj)ᵖ·[aⱼ cos(2πjt + pπ/2) + bⱼ sin(2πjt + pπ/2)], O(M).
+    #[must_use]
+    pub fn eval_deriv(&self, t: f64, order: usize) -> P {
+        let mut res = if order == 0 { self.cos[0] } else { P::ZERO };
+        for_each_harmonic(t, self.degree(), |j, c, s| {
+            let w = (2.0 * PI * j as f64).powi(order as i32);
+            let (sp, cp) = quarter_turns(s, c, order);
+            res += (self.cos[j] * cp + self.sin[j] * sp) * w;
+        });
+        res
+    }
+
+    /// X(l/N) for l = 0, …, N−1 by one inverse real FFT per coordinate, O(M + N log N).
+    ///
+    /// Exact sampling for every N ≥ 1: when N ≤ 2M the frequencies fold (alias) onto the N
+    /// output bins as sampling folds them. N = 0 gives an empty vector.
+    #[must_use]
+    pub fn sample_uniform(&self, n_samples: usize) -> Vec<P> {
+        self.sample_uniform_deriv(n_samples, 0)
+    }
+
+    /// X⁽ᵖ⁾(l/N) for l = 0, …, N−1 by FFT; see [`Fourier::sample_uniform`].
+    #[must_use]
+    pub fn sample_uniform_deriv(&self, n_samples: usize, order: usize) -> Vec<P> {
+        if n_samples == 0 {
+            return Vec::new();
+        }
+        let big_n = n_samples;
+        let half = big_n / 2;
+        let plan = inverse_plan(big_n);
+        let mut spectrum = plan.make_input_vec();
+        let mut output = plan.make_output_vec();
+        let mut scratch = plan.make_scratch_vec();
+        let mut coords = vec![vec![0.0; big_n]; P::DIM];
+        for (i, coord) in coords.iter_mut().enumerate() {
+            spectrum.fill(Complex::new(0.0, 0.0));
+            if order == 0 {
+                spectrum[0].re += self.cos[0].coord(i);
+            }
+            for j in 1..=self.degree() {
+                // cⱼ·(2πij)ᵖ, and its conjugate at −j.
+                let c = Complex::new(0.5 * self.cos[j].coord(i), -0.5 * self.sin[j].coord(i));
+                let w = 2.0 * PI * j as f64;
+                let factor = Complex::new(0.0, w).powu(order as u32);
+                let c = c * factor;
+                let p = j % big_n;
+                let q = (big_n - p) % big_n;
+                if p <= half {
+                    spectrum[p] += c;
+                }
+                if q <= half {
+                    spectrum[q] += c.conj();
+                }
+            }
+            // The result is real: bins 0 and N/2 (N even) have no imaginary part.
+            spectrum[0].im = 0.0;
+            if big_n.is_multiple_of(2) {
+                spectrum[half].im = 0.0;
+            }
+            plan.process_with_scratch(&mut spectrum, &mut output, &mut scratch)
+                .expect("buffer sizes come from the plan, imaginary parts are zeroed");
+            coord.copy_from_slice(&output);
+        }
+        (0..big_n).map(|l| P::from_coords(|i| coords[i][l])).collect()
+    }
+
+    /// The polynomial t ↦ X(t + offset): aⱼ' = aⱼ cos φ + bⱼ sin φ, bⱼ' = bⱼ cos φ − aⱼ sin φ
+    /// with φ = 2πj·offset.
+    #[must_use]
+    pub fn shifted(&self, offset: f64) -> Self {
+        let mut res = self.clone();
+        for_each_harmonic(offset, self.degree(), |j, c, s| {
+            res.cos[j] = self.cos[j] * c + self.sin[j] * s;
+            res.sin[j] = self.sin[j] * c - self.cos[j] * s;
+        });
+        res
+    }
+
+    /// The difference `self − other`, as a polynomial of the larger degree.
+    #[must_use]
+    pub fn sub(&self, other: &Self) -> Self {
+        let len = self.cos.len().max(other.cos.len());
+        let get = |v: &[P], j: usize| v.get(j).copied().unwrap_or(P::ZERO);
+        Self {
+            cos: (0..len).map(|j| get(&self.cos, j) - get(&other.cos, j)).collect(),
+            sin: (0..len).map(|j| get(&self.sin, j) - get(&other.sin, j)).collect(),
+        }
+    }
+
+    /// An upper bound of maxₜ |X(t)|: |a₀| + Σⱼ √(|aⱼ|² + |bⱼ|²) (Cauchy–Schwarz on each term).
+    #[must_use]
+    pub fn sup_bound(&self) -> f64 {
+        self.cos[0].norm()
+            + (1..=self.degree())
+                .map(|j| (self.cos[j].dot(self.cos[j]) + self.sin[j].dot(self.sin[j])).sqrt())
+                .sum::<f64>()
+    }
+
+    /// maxₜ |X(t)| measured on a uniform grid of L ≥ 32·M points (by FFT), with a guaranteed
+    /// upper bound: by Bernstein's inequality |X'| ≤ 2πM·max|X|, so
+    /// max|X| ≤ `max_grid` / (1 − πM/L). Returns (grid maximum, upper bound).
+    #[must_use]
+    pub fn sup_norm(&self) -> (f64, f64) {
+        let m = self.degree();
+        let l = (32 * m).max(64);
+        let grid = self.sample_uniform(l).into_iter().map(|p| p.norm()).fold(0.0, f64::max);
+        let bernstein = grid / (1.0 - PI * m as f64 / l as f64);
+        (grid, bernstein.min(self.sup_bound()).max(grid))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+
+    fn direct_dft_coeffs(x: &[f64]) -> (Vec<f64>, Vec<f64>) {
+        let n = x.len();
+        let m = n / 2;
+        let mut a = vec![0.0; m + 1];
+        let mut b = vec![0.0; m + 1];
+        for j in 0..=m {
+            let scale =
+                if j == 0 || (n.is_multiple_of(2) && j == m) { 1.0 } else { 2.0 } / n as f64;
+            for (k, xk) in x.iter().enumerate() {
+                let ang = 2.0 * PI * (j * k) as f64 / n as f64;
+                a[j] += scale * xk * ang.cos();
+                b[j] += scale * xk * ang.sin();
+            }
+        }
+        if n.is_multiple_of(2) {
+            b[m] = 0.0;
+        }
+        (a, b)
+    }
+
+    #[test]
+    fn fft_coefficients_match_direct_dft() {
+        for n in [1usize, 2, 3, 4, 5, 8, 13, 64] {
+            let x: Vec<f64> = (0..n).map(|k| ((k * 7 + 3) % 11) as f64 - 4.5).collect();
+            let f = Fourier::from_points(&x);
+            let (a, b) = direct_dft_coeffs(&x);
+            for j in 0..=n / 2 {
+                assert!((f.cos_coeffs()[j] - a[j]).abs() < 1e-13, "n={n} a{j}");
+                assert!((f.sin_coeffs()[j] - b[j]).abs() < 1e-13, "n={n} b{j}");
+            }
+        }
+    }
+
+    #[test]
+    fn folded_sampling_matches_direct_evaluation() {
+        let pts: Vec<DVec2> =
+            (0..9).map(|k| DVec2::new((k as f64).sin() * 3.0, (k * k) as f64 * 0.1)).collect();
+        let f = Fourier::from_points(&pts);
+        for big_n in [1usize, 2, 3, 4, 5, 8, 9, 10, 17, 40] {
+            for order in 0..3 {
+                let s = f.sample_uniform_deriv(big_n, order);
+                for (l, p) in s.iter().enumerate() {
+                    let direct = f.eval_deriv(l as f64 / big_n as f64, order);
+                    let scale = 1.0 + direct.length();
+                    assert!((*p - direct).length() < 1e-12 * scale, "N={big_n} p={order} l={l}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn shift_moves_the_curve() {
+        let f = Fourier::from_points(&[0.3, -1.0, 2.0, 0.5, 0.25]);
+        let g = f.shifted(0.17);
+        for t in [0.0, 0.1, 0.55] {
+            assert!((g.eval(t) - f.eval(t + 0.17)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn sup_norm_brackets_the_maximum() {
+        let f = Fourier::from_coeffs(vec![0.0, 0.0, 0.0, 1.0], vec![0.0; 4]).unwrap();
+        let (grid, bound) = f.sup_norm();
+        assert!((grid - 1.0).abs() < 1e-15 && (1.0..1.2).contains(&bound), "{grid} {bound}");
+    }
+}

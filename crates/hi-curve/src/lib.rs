@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+//! Harmonic interpolating curves (A. Hardy, *Harmonic interpolation for smooth curves and
+//! surfaces*, 2005, chapters 3 and 5).
+//!
+//! Given points x₀, …, xₙ₋₁ (in one, two or three dimensions), the harmonic curve
+//!
+//! X(t) = Σₖ σⁿₖ(t)·xₖ,  t ∈ [0, 1),
+//!
+//! is smooth, 1-periodic and passes through xₖ at t = k/n, with no linear system to solve. The
+//! basis σⁿₖ is the periodic Dirichlet kernel for odd n and Hardy's real kernel for even n
+//! ([`Sigma`]); the curve is a trigonometric polynomial of degree ⌊n/2⌋, so it also has an
+//! exact Fourier representation ([`Fourier`]) that gives fast spectral paths (FFT sampling,
+//! insertion, subdivision).
+//!
+//! | what | where |
+//! |---|---|
+//! | basis σⁿₖ in four forms, derivatives, complex kernel | [`Sigma`], [`Form`] |
+//! | the curve, derivatives, curvature, torsion, Frenet frame, arc length | [`HarmonicCurve`] |
+//! | Fourier coefficients and uniform sampling by FFT | [`Fourier`] |
+//! | rotation (Thm 5.1 and an exact one), insertion/reduction (Thm 5.3), subdivision (§5.2) | [`HarmonicCurve`] methods |
+//! | trigonometric interpolation of §2.13 | [`TrigonometricCurve`] |
+//! | non-uniform interpolation (§3.10): the thesis formula and true node interpolation | [`NonUniformCurve`] |
+//!
+//! # Examples
+//!
+//! ```
+//! use glam::DVec2;
+//! use hi_curve::{HarmonicCurve, ParamCurve};
+//!
+//! // The harmonic curve through the vertices of a square is its circumcircle (MATH.md §3).
+//! let square = vec![DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y];
+//! let curve = HarmonicCurve::new(square);
+//! for i in 0..100 {
+//!     let t = i as f64 / 100.0;
+//!     assert!((curve.eval(t).length() - 1.0).abs() < 1e-14);
+//!     assert!((curve.curvature(t).unwrap() - 1.0).abs() < 1e-12);
+//! }
+//! assert!((curve.eval(0.25) - DVec2::Y).length() < 1e-15); // passes through x₁ at t = 1/4
+//! ```
+//!
+//! # Feature flags
+//!
+//! None: the crate has no optional features.
+
+mod basis;
+mod curve;
+mod differential;
+mod error;
+mod fourier;
+mod nonuniform;
+mod point;
+mod resample;
+mod trig;
+mod trigonometric;
+
+pub use basis::{Form, Sigma};
+pub use curve::HarmonicCurve;
+pub use differential::{FrenetFrame, ParamCurve, PlaneCurve, SpaceCurve};
+pub use error::Error;
+pub use fourier::Fourier;
+pub use nonuniform::{NonUniformCurve, NonUniformVariant, chord_length_params};
+pub use point::ControlPoint;
+pub use resample::ReductionError;
+pub use trigonometric::TrigonometricCurve;
+
+/// Default accuracy for methods that take an `accuracy` argument (arc length), as in kurbo.
+pub const DEFAULT_ACCURACY: f64 = 1e-9;

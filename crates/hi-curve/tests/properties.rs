@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: MIT
+//! Property tests of the harmonic basis and curve: the identities of MATH.md §1–2 on random
+//! input, for both parities of n.
+
+use std::f64::consts::PI;
+
+use glam::{DMat2, DVec2, DVec3};
+use hi_curve::{HarmonicCurve, ParamCurve, PlaneCurve, Sigma};
+use proptest::prelude::*;
+
+/// The suggested tolerance of MATH.md for O(1) data.
+fn close(got: f64, expected: f64, rel: f64) -> bool {
+    (got - expected).abs() <= 1e-11 + rel * expected.abs()
+}
+
+fn points_2d(max_n: usize) -> impl Strategy<Value = Vec<DVec2>> {
+    prop::collection::vec(
+        (-10.0..10.0f64, -10.0..10.0f64).prop_map(|(x, y)| DVec2::new(x, y)),
+        1..max_n,
+    )
+}
+
+fn points_3d(max_n: usize) -> impl Strategy<Value = Vec<DVec3>> {
+    prop::collection::vec(
+        (-10.0..10.0f64, -10.0..10.0f64, -10.0..10.0f64).prop_map(|(x, y, z)| DVec3::new(x, y, z)),
+        1..max_n,
+    )
+}
+
+fn max_norm2(a: DVec2, b: DVec2, scale: f64) -> bool {
+    (a - b).length() <= 1e-11 * (1.0 + scale)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// σₖ(j/n) = δⱼₖ, up to the rounding of j/n to a double (|σ′| ≤ πn/… times 2⁻⁵⁴).
+    #[test]
+    fn basis_interpolates(n in 1usize..300, j in 0usize..300, k in 0usize..300) {
+        let (j, k) = (j % n, k % n);
+        let v = Sigma::new(n).eval(k, j as f64 / n as f64);
+        let expected = if j == k { 1.0 } else { 0.0 };
+        prop_assert!((v - expected).abs() < 1e-15 + 2e-16 * n as f64, "n={n} j={j} k={k}: {v}");
+    }
+
+    /// Σₖ σₖ(t) = 1 (Theorem 3.1), for every t, including far from [0, 1).
+    #[test]
+    fn partition_of_unity(n in 1usize..500, t in -1e3..1e3f64) {
+        let sum: f64 = Sigma::new(n).values(t).iter().sum();
+        prop_assert!((sum - 1.0).abs() < 1e-12, "n={n} t={t}: {sum}");
+    }
+
+    /// Σₖ σₖ(t)² = 1 for odd n and 1 − sin²(πnt)/n for even n (MATH.md §1).
+    #[test]
+    fn sum_of_squares(n in 1usize..400, t in 0.0..1.0f64) {
+        let sum: f64 = Sigma::new(n).values(t).iter().map(|v| v * v).sum();
+        let expected = if n % 2 == 1 { 1.0 } else { 1.0 - (PI * n as f64 * t).sin().powi(2) / n as f64 };
+        prop_assert!((sum - expected).abs() < 1e-12, "n={n} t={t}: {sum} vs {expected}");
+    }
+
+    /// The curve commutes with affine maps: the curve of A·xₖ + b is A·X(t) + b.
+    #[test]
+    fn affine_invariance(pts in points_2d(40), a in prop::array::uniform4(-3.0..3.0f64),
+                         b in prop::array::uniform2(-5.0..5.0f64), t in -2.0..2.0f64) {
+        let m = DMat2::from_cols_array(&a);
+        let shift = DVec2::from_array(b);
+        let image: Vec<DVec2> = pts.iter().map(|p| m * *p + shift).collect();
+        let lhs = HarmonicCurve::new(image).eval(t);
+        let rhs = m * HarmonicCurve::new(pts).eval(t) + shift;
+        prop_assert!(max_norm2(lhs, rhs, 100.0), "{lhs} vs {rhs}");
+    }
+
+    /// Theorem 5.3: inserting m ≥ 1 points gives the same curve, for every n and m.
+    #[test]
+    fn insertion_is_exact(pts in points_2d(60), m in 1usize..40, t in 0.0..1.0f64) {
+        let curve = HarmonicCurve::new(pts);
+        let (bigger, err) = curve.resample(curve.n() + m).unwrap();
+        prop_assert_eq!(err.max_deviation, 0.0);
+        prop_assert!(max_norm2(bigger.eval(t), curve.eval(t), 10.0));
+        prop_assert!(max_norm2(bigger.eval_deriv(t, 1), curve.eval_deriv(t, 1), 10.0 * 2.0 * PI * curve.n() as f64));
+    }
+
+    /// The exact rotation: Y(t) = X(t + o) for every n, odd or even.
+    #[test]
+    fn exact_rotation_is_exact(pts in points_2d(60), o in -1.5..1.5f64, t in 0.0..1.0f64) {
+        let curve = HarmonicCurve::new(pts);
+        let rotated = curve.rotate(o).unwrap();
+        prop_assert_eq!(rotated.n(), curve.n() + curve.n() % 2 * 0 + (1 - curve.n() % 2));
+        prop_assert!(max_norm2(rotated.eval(t), curve.eval(t + o), 10.0));
+    }
+
+    /// Theorem 5.1 as stated: exact for odd n; for even n off by exactly
+    /// −c·sin(πno)·sin(πnt), c = (1/n)Σ(−1)ᵏxₖ (MATH.md §2).
+    #[test]
+    fn thesis_rotation(pts in points_2d(60), o in -1.5..1.5f64, t in 0.0..1.0f64) {
+        let curve = HarmonicCurve::new(pts);
+        let n = curve.n() as f64;
+        let rotated = curve.rotate_theorem_5_1(o).unwrap();
+        prop_assert_eq!(rotated.n(), curve.n());
+        let defect = curve.eval(t + o) - rotated.eval(t);
+        let expected = if curve.n() % 2 == 1 {
+            DVec2::ZERO
+        } else {
+            -curve.alternating_mean() * ((PI * n * o).sin() * (PI * n * t).sin())
+        };
+        prop_assert!(max_norm2(defect, expected, 10.0), "defect {defect}, expected {expected}");
+    }
+
+    /// §5.2: every subdivision level lies on the original curve, the original points are kept
+    /// exactly, and the direct formula of the thesis agrees with the FFT path.
+    #[test]
+    fn subdivision_lies_on_the_curve(pts in points_2d(30), levels in 0u32..4) {
+        let curve = HarmonicCurve::new(pts);
+        let n = curve.n();
+        let sub = curve.subdivide(levels).unwrap();
+        let step = 1usize << levels;
+        prop_assert_eq!(sub.n(), n * step);
+        for (i, p) in sub.points().iter().enumerate() {
+            let t = i as f64 / sub.n() as f64;
+            prop_assert!(max_norm2(*p, curve.eval(t), 10.0));
+            if i % step == 0 {
+                prop_assert_eq!(*p, curve.points()[i / step]);
+            }
+        }
+        let direct = curve.subdivide_step_direct();
+        let fft = curve.subdivide(1).unwrap();
+        for (a, b) in direct.iter().zip(fft.points()) {
+            prop_assert!(max_norm2(*a, *b, 10.0));
+        }
+    }
+
+    /// The FFT sampling path equals the thesis's direct sum to 1e-12 relative.
+    #[test]
+    fn fft_path_equals_direct_path(pts in points_3d(80), extra in 0usize..200) {
+        let curve = HarmonicCurve::new(pts);
+        let big_n = 1 + extra + curve.n() / 2;
+        let fft = curve.sample_uniform(big_n).unwrap();
+        let direct = curve.sample_uniform_direct(big_n).unwrap();
+        let scale = curve.points().iter().map(|p| p.length()).fold(1.0, f64::max);
+        for (a, b) in fft.iter().zip(&direct) {
+            prop_assert!((*a - *b).length() <= 1e-12 * scale, "{a} vs {b}");
+        }
+    }
+
+    /// A regular polygon (any n ≥ 3, odd or even, any radius, phase and centre) gives its exact
+    /// circumcircle, with curvature 1/R.
+    #[test]
+    fn regular_polygon_is_a_circle(n in 3usize..64, r in 0.1..100.0f64, phase in 0.0..1.0f64,
+                                   cx in -50.0..50.0f64, cy in -50.0..50.0f64, t in 0.0..1.0f64) {
+        let centre = DVec2::new(cx, cy);
+        let pts: Vec<DVec2> = (0..n)
+            .map(|k| centre + r * DVec2::from_angle(2.0 * PI * (k as f64 / n as f64 + phase)))
+            .collect();
+        let curve = HarmonicCurve::new(pts);
+        let p = curve.eval(t);
+        let expected = centre + r * DVec2::from_angle(2.0 * PI * (t + phase));
+        prop_assert!((p - expected).length() < 1e-12 * (r + centre.length()), "{p} vs {expected}");
+        let kappa = curve.signed_curvature(t).unwrap();
+        prop_assert!(close(kappa, 1.0 / r, 1e-10), "κ = {kappa}, 1/R = {}", 1.0 / r);
+        prop_assert!(close(curve.curvature(t).unwrap(), 1.0 / r, 1e-10));
+        prop_assert!(close(curve.arclen(1e-12), 2.0 * PI * r, 1e-12));
+    }
+
+    /// Derivatives: the spectral path (FFT of the data) equals Σₖ σₖ⁽ᵖ⁾(t)·xₖ with the
+    /// cosine-sum derivatives of the basis.
+    #[test]
+    fn spectral_derivatives_equal_basis_derivatives(pts in points_2d(40), t in -1.0..1.0f64, order in 1usize..4) {
+        let curve = HarmonicCurve::new(pts);
+        let sigma = curve.basis();
+        let by_basis = curve.points().iter().enumerate()
+            .fold(DVec2::ZERO, |acc, (k, p)| acc + *p * sigma.deriv(k, t, order));
+        let spectral = curve.eval_deriv(t, order);
+        let scale = 10.0 * (2.0 * PI * curve.n() as f64).powi(order as i32);
+        prop_assert!((by_basis - spectral).length() <= 1e-12 * scale, "{by_basis} vs {spectral}");
+    }
+}

@@ -1,0 +1,9 @@
+// SPDX-License-Identifier: MIT
+//! Geometry images and surface fitting from scans (Hardy 2005, §5.3, §5.4, §5.8).
+//!
+//! This crate will turn an unorganised set of points into a geometry image (spherical or
+//! octahedral parametrisation), the geometry image into a harmonic surface, and that surface
+//! into cubic Bézier patches, with smoothing and reduction that report their error. It builds on
+//! `hi-surface`.
+//!
+//! Nothing is implemented yet.

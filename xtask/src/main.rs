@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+//! Project automation for the `harmonic` workspace, run as `cargo xtask <command>`
+//! (see <https://github.com/matklad/cargo-xtask/>).
+//!
+//! Commands:
+//! - `figures [--check]`: regenerate the thesis figures into `docs/figures/` (with `--check`,
+//!   fail instead if a committed file is stale);
+//! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
+
+mod figures;
+mod layers;
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Result, bail};
+
+fn main() -> Result<()> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let root = project_root();
+    match args.first().map(String::as_str) {
+        Some("figures") => figures::run(&root, args.iter().any(|a| a == "--check")),
+        Some("layers") => {
+            layers::check(&root)?;
+            println!("layers: every crate depends only on crates below it");
+            Ok(())
+        }
+        _ => bail!("usage: cargo xtask <figures [--check] | layers>"),
+    }
+}
+
+/// The workspace root: the parent of this crate's directory.
+pub(crate) fn project_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask lives in the workspace root").to_path_buf()
+}
