@@ -36,16 +36,19 @@ pub trait ParamCurve<P: ControlPoint> {
 
     /// Unsigned curvature κ(t) = |X′ × X″|/|X′|³, in any dimension (0 for 1-D curves).
     ///
-    /// `None` where the curve is singular (X′ = 0, a cusp): κ is undefined there.
+    /// Computed as |X″ − (X″·T)T|/|X′|² with T = X′/|X′| (the part of the acceleration normal
+    /// to the tangent), which equals |X′ × X″|/|X′|³ without the cancellation of
+    /// |X′|²|X″|² − (X′·X″)². `None` where the curve is singular (X′ = 0, a cusp).
     fn curvature(&self, t: f64) -> Option<f64> {
         let d1 = self.eval_deriv(t, 1);
         let d2 = self.eval_deriv(t, 2);
-        let speed2 = d1.dot(d1);
-        if is_singular(speed2.sqrt(), self.scale()) {
+        let speed = d1.norm();
+        if is_singular(speed, self.scale()) {
             return None;
         }
-        let cross2 = (speed2 * d2.dot(d2) - d1.dot(d2).powi(2)).max(0.0);
-        Some(cross2.sqrt() / (speed2 * speed2.sqrt()))
+        let tangent = d1 * (1.0 / speed);
+        let normal_part = d2 - tangent * d2.dot(tangent);
+        Some(normal_part.norm() / (speed * speed))
     }
 
     /// Arc length ∫ |X′(t)| dt from `t0` to `t1` (negative if t1 < t0) by adaptive 8-point
@@ -57,7 +60,9 @@ pub trait ParamCurve<P: ControlPoint> {
 }
 
 fn is_singular(speed: f64, scale: f64) -> bool {
-    !(speed > SINGULAR * scale.max(f64::MIN_POSITIVE))
+    // Written so that a NaN speed also counts as singular.
+    speed.partial_cmp(&(SINGULAR * scale.max(f64::MIN_POSITIVE)))
+        != Some(std::cmp::Ordering::Greater)
 }
 
 fn gauss(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {

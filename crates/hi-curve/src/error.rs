@@ -33,15 +33,6 @@ pub enum Error {
         /// The basis size.
         n: usize,
     },
-    /// An operation needs more points than were given.
-    TooFewPoints {
-        /// What needs them.
-        what: &'static str,
-        /// How many it needs.
-        needed: usize,
-        /// How many there are.
-        got: usize,
-    },
     /// A count (of samples, points or levels) is out of the range an operation accepts.
     InvalidCount {
         /// Which count.
@@ -74,6 +65,13 @@ pub enum Error {
     },
     /// All points coincide, so chord-length parameters are undefined.
     ZeroLengthPolygon,
+    /// Two consecutive points coincide, so their chord-length parameters coincide too.
+    CoincidentPoints {
+        /// Index of the first point.
+        first: usize,
+        /// Index of the next point (cyclically).
+        second: usize,
+    },
     /// A linear system of the construction is singular to working precision.
     Singular {
         /// Which system.
@@ -95,15 +93,15 @@ impl fmt::Display for Error {
             Error::IndexOutOfRange { k, n } => {
                 write!(f, "basis index k = {k} is out of range for n = {n} (need k < n)")
             }
-            Error::TooFewPoints { what, needed, got } => {
-                write!(f, "{what} needs at least {needed} points, got {got}")
-            }
             Error::InvalidCount { what, value, expected } => {
                 write!(f, "{what} = {value} is invalid: expected {expected}")
             }
-            Error::ParameterCountMismatch { points, params } => {
-                write!(f, "{params} parameters were given for {points} points")
-            }
+            Error::ParameterCountMismatch { points, params } => write!(
+                f,
+                "{} given for {}: one parameter per point is needed",
+                plural(*params, "parameter"),
+                plural(*points, "point")
+            ),
             Error::ParameterOutOfRange { index, value } => {
                 write!(f, "parameter {index} = {value} is outside [0, 1)")
             }
@@ -114,9 +112,18 @@ impl fmt::Display for Error {
             Error::ZeroLengthPolygon => {
                 write!(f, "all points coincide: chord-length parameters are undefined")
             }
+            Error::CoincidentPoints { first, second } => write!(
+                f,
+                "points {first} and {second} coincide, so their chord-length parameters do too"
+            ),
             Error::Singular { what } => write!(f, "the {what} is singular to working precision"),
         }
     }
 }
 
 impl std::error::Error for Error {}
+
+/// "1 point", "2 points".
+fn plural(count: usize, noun: &str) -> String {
+    if count == 1 { format!("1 {noun}") } else { format!("{count} {noun}s") }
+}

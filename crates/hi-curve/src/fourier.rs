@@ -21,7 +21,7 @@ use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 
 use crate::ControlPoint;
-use crate::trig::{for_each_harmonic, quarter_turns};
+use crate::trig::{for_each_harmonic, pow_order, quarter_turns};
 
 thread_local! {
     static PLANNER: RefCell<RealFftPlanner<f64>> = RefCell::new(RealFftPlanner::new());
@@ -64,6 +64,7 @@ impl<P: ControlPoint> Fourier<P> {
     ///
     /// An empty slice gives the zero polynomial of degree 0.
     #[must_use]
+    #[allow(clippy::missing_panics_doc, reason = "the FFT buffers come from the plan itself")]
     pub fn from_points(points: &[P]) -> Self {
         let n = points.len();
         if n == 0 {
@@ -85,18 +86,16 @@ impl<P: ControlPoint> Fourier<P> {
             spectra.push(spectrum.clone());
         }
         let nf = n as f64;
-        let mut cos = Vec::with_capacity(m + 1);
-        let mut sin = Vec::with_capacity(m + 1);
-        for j in 0..=m {
-            let nyquist = n.is_multiple_of(2) && j == m;
-            let scale = if j == 0 || nyquist { 1.0 / nf } else { 2.0 / nf };
-            cos.push(P::from_coords(|i| spectra[i][j].re * scale));
-            sin.push(if j == 0 || nyquist {
-                P::ZERO
-            } else {
-                P::from_coords(|i| -spectra[i][j].im * scale)
-            });
-        }
+        let (cos, sin) = (0..=m)
+            .map(|j| {
+                let real_only = j == 0 || (n.is_multiple_of(2) && j == m);
+                let scale = if real_only { 1.0 / nf } else { 2.0 / nf };
+                let a = P::from_coords(|i| spectra[i][j].re * scale);
+                let b =
+                    if real_only { P::ZERO } else { P::from_coords(|i| -spectra[i][j].im * scale) };
+                (a, b)
+            })
+            .unzip();
         Self { cos, sin }
     }
 
@@ -156,7 +155,7 @@ impl<P: ControlPoint> Fourier<P> {
     pub fn eval_deriv(&self, t: f64, order: usize) -> P {
         let mut res = if order == 0 { self.cos[0] } else { P::ZERO };
         for_each_harmonic(t, self.degree(), |j, c, s| {
-            let w = (2.0 * PI * j as f64).powi(order as i32);
+            let w = pow_order(2.0 * PI * j as f64, order);
             let (sp, cp) = quarter_turns(s, c, order);
             res += (self.cos[j] * cp + self.sin[j] * sp) * w;
         });
@@ -174,6 +173,10 @@ impl<P: ControlPoint> Fourier<P> {
 
     /// X⁽ᵖ⁾(l/N) for l = 0, …, N−1 by FFT; see [`Fourier::sample_uniform`].
     #[must_use]
+    #[allow(
+        clippy::missing_panics_doc,
+        reason = "the FFT buffers come from the plan and the imaginary parts that must be zero are zeroed"
+    )]
     pub fn sample_uniform_deriv(&self, n_samples: usize, order: usize) -> Vec<P> {
         if n_samples == 0 {
             return Vec::new();
@@ -193,9 +196,14 @@ impl<P: ControlPoint> Fourier<P> {
             for j in 1..=self.degree() {
                 // cⱼ·(2πij)ᵖ, and its conjugate at −j.
                 let c = Complex::new(0.5 * self.cos[j].coord(i), -0.5 * self.sin[j].coord(i));
-                let w = 2.0 * PI * j as f64;
-                let factor = Complex::new(0.0, w).powu(order as u32);
-                let c = c * factor;
+                // (iw)ᵖ = wᵖ·iᵖ
+                let w = pow_order(2.0 * PI * j as f64, order);
+                let c = match order % 4 {
+                    0 => c * w,
+                    1 => Complex::new(-c.im, c.re) * w,
+                    2 => -c * w,
+                    _ => Complex::new(c.im, -c.re) * w,
+                };
                 let p = j % big_n;
                 let q = (big_n - p) % big_n;
                 if p <= half {

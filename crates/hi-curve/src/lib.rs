@@ -63,5 +63,10 @@ pub use point::ControlPoint;
 pub use resample::ReductionError;
 pub use trigonometric::TrigonometricCurve;
 
+/// The Rust examples of the project README, run as doctests so they stay true.
+#[doc = include_str!("../../../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
 /// Default accuracy for methods that take an `accuracy` argument (arc length), as in kurbo.
 pub const DEFAULT_ACCURACY: f64 = 1e-9;

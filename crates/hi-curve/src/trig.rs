@@ -110,6 +110,15 @@ pub(crate) fn node_offset(t: f64, k: usize, n: usize) -> f64 {
     NodeFrame::new(t, n).offset(k).1
 }
 
+/// wᵖ for a derivative order p of any size (`powi` takes an `i32`).
+#[inline]
+pub(crate) fn pow_order(w: f64, order: usize) -> f64 {
+    match i32::try_from(order) {
+        Ok(p) => w.powi(p),
+        Err(_) => w.powf(order as f64),
+    }
+}
+
 /// Rotates (sin θ, cos θ) to (sin(θ + pπ/2), cos(θ + pπ/2)).
 #[inline]
 pub(crate) fn quarter_turns(sin: f64, cos: f64, p: usize) -> (f64, f64) {

@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 
 use crate::differential::ParamCurve;
 use crate::point::check_points;
-use crate::trig::{for_each_harmonic, quarter_turns};
+use crate::trig::{for_each_harmonic, pow_order, quarter_turns};
 use crate::{ControlPoint, Error, Fourier};
 
 /// The trigonometric interpolant of §2.13 (frequencies 0…n−1), real part per coordinate.
@@ -100,7 +100,7 @@ impl<P: ControlPoint> TrigonometricCurve<P> {
         let (mut re, mut im) = if order == 0 { self.coeffs[0] } else { (P::ZERO, P::ZERO) };
         for_each_harmonic(t, self.coeffs.len() - 1, |k, c, s| {
             // (2πk)ᵖ·e^{i(2πkt + pπ/2)}·(cr + i·ci)
-            let w = (2.0 * PI * k as f64).powi(order as i32);
+            let w = pow_order(2.0 * PI * k as f64, order);
             let (sp, cp) = quarter_turns(s, c, order);
             let (cr, ci) = self.coeffs[k];
             re += (cr * cp - ci * sp) * w;

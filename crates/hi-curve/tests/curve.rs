@@ -192,3 +192,18 @@ fn one_and_two_points() {
         assert!((two.eval(t) - expected).length() < 1e-15);
     }
 }
+
+#[test]
+fn collinear_points_have_zero_curvature() {
+    // X(t) = a + f(t)·d, a line traversed back and forth: κ = 0 wherever X′ ≠ 0. Rounding
+    // leaves about ε·|X″|/|X′|², which grows near the turning points.
+    let (a, d) = (DVec3::new(1.0, -2.0, 0.5), DVec3::new(0.3, 0.4, 1.2));
+    let pts: Vec<DVec3> = [0.0, 2.0, 1.5, -1.0, 0.25].iter().map(|s| a + *s * d).collect();
+    let curve = HarmonicCurve::new(pts);
+    for t in [0.05, 0.33, 0.61, 0.9] {
+        let kappa = curve.curvature(t).unwrap();
+        let noise = f64::EPSILON * curve.eval_deriv(t, 2).length()
+            / curve.eval_deriv(t, 1).length_squared();
+        assert!(kappa < 16.0 * noise, "t = {t}: κ = {kappa:e}, rounding level {noise:e}");
+    }
+}

@@ -28,8 +28,22 @@ fn uniform(n: usize) -> Vec<f64> {
     (0..n).map(|k| k as f64 / n as f64).collect()
 }
 
+/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
+/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
+fn config(cases: u32) -> ProptestConfig {
+    let mut config = ProptestConfig::default();
+    if std::env::var_os("PROPTEST_CASES").is_none() {
+        config.cases = cases;
+    }
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
+    }
+    config.failure_persistence = None;
+    config
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(128))]
+    #![proptest_config(config(128))]
 
     /// The nodes variant passes through xₖ at tₖ, for any distinct nodes.
     #[test]
@@ -171,7 +185,11 @@ fn bad_parameters_are_rejected() {
     assert_eq!(chord_length_params(&[DVec2::X, DVec2::X]).unwrap_err(), Error::ZeroLengthPolygon);
     assert_eq!(
         chord_length_params(&[DVec2::ZERO, DVec2::X, DVec2::X]).unwrap_err(),
-        Error::ParametersNotDistinct { first: 1, second: 2 }
+        Error::CoincidentPoints { first: 1, second: 2 }
     );
     assert_eq!(NonUniformCurve::<DVec2>::try_new(vec![], v).unwrap_err(), Error::Empty);
+    assert_eq!(
+        Error::ParameterCountMismatch { points: 2, params: 1 }.to_string(),
+        "1 parameter given for 2 points: one parameter per point is needed"
+    );
 }

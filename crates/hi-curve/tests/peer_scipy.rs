@@ -66,7 +66,7 @@ fn fixture_from_scipy_matches() {
         let err = max_error(&ours(&x, big_n), &expected);
         // N(0,1) data: scipy and we agree to rounding (PEERS.md measured ≤ 7e-15 at n = 33).
         assert!(err < 1e-13, "n = {}, N = {big_n}: {err:e}", x.len());
-        if x.len() % 2 == 0 { even += 1 } else { odd += 1 }
+        if x.len().is_multiple_of(2) { even += 1 } else { odd += 1 }
     }
     assert!(odd > 20 && even > 20, "both parities: {odd} odd, {even} even");
 }

@@ -37,7 +37,7 @@ pub(crate) fn for_each_value(n: usize, t: f64, mut f: impl FnMut(usize, f64)) {
     let frame = NodeFrame::new(t, n);
     let numerator = sin_cos_pi(frame.frac).0;
     let nf = n as f64;
-    let even = n % 2 == 0;
+    let even = n.is_multiple_of(2);
     for k in 0..n {
         let (j, d) = frame.offset(k);
         if d.abs() < TINY {

@@ -9,7 +9,7 @@
 
 use std::f64::consts::PI;
 
-use crate::trig::{NodeFrame, for_each_multiple, quarter_turns, sin_cos_pi};
+use crate::trig::{NodeFrame, for_each_multiple, pow_order, quarter_turns, sin_cos_pi};
 
 /// dᵖσⁿₖ/dtᵖ(t) for 0 ≤ k < n.
 pub(super) fn eval_deriv(n: usize, k: usize, t: f64, order: usize) -> f64 {
@@ -23,13 +23,13 @@ pub(super) fn eval_deriv(n: usize, k: usize, t: f64, order: usize) -> f64 {
         let (s, c) = sin_cos_pi(frame.frac);
         let (s, c) = if j_whole % 2 == 0 { (s, c) } else { (-s, -c) };
         let (_, cp) = quarter_turns(s, c, order);
-        sum += (PI * nf).powi(order as i32) * cp;
+        sum += pow_order(PI * nf, order) * cp;
     }
     let n_pairs = if n % 2 == 1 { m } else { m.saturating_sub(1) };
     // cos(2πjd) = cos(πj·(2d)); 2d is exact.
     for_each_multiple(2.0 * d, n_pairs, |j, c, s| {
         let (_, cp) = quarter_turns(s, c, order);
-        sum += 2.0 * (2.0 * PI * j as f64).powi(order as i32) * cp;
+        sum += 2.0 * pow_order(2.0 * PI * j as f64, order) * cp;
     });
     sum / nf
 }

@@ -159,7 +159,8 @@ impl Sigma {
     /// The derivative dᵖσⁿₖ/dtᵖ(t) of any order p (p = 0 is the value), from the cosine sum
     /// (eq. 5.4 for p = 1): dᵖ/dtᵖ cos(ωt) = ωᵖ·cos(ωt + pπ/2). O(n).
     ///
-    /// The magnitude grows like (πn)ᵖ; for very high orders the result overflows to ±∞.
+    /// The magnitude grows like (πn)ᵖ; once that overflows (p ≳ 700/ln(πn)) the result is ±∞
+    /// or NaN (∞ − ∞ between terms of the sum).
     #[must_use]
     pub fn deriv(&self, k: usize, t: f64, order: usize) -> f64 {
         if order == 0 {

@@ -41,7 +41,7 @@ pub enum NonUniformVariant {
 /// # Errors
 ///
 /// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::ZeroLengthPolygon`] when all points
-/// coincide (n ≥ 2), and [`Error::ParametersNotDistinct`] when two consecutive points coincide.
+/// coincide (n ≥ 2), and [`Error::CoincidentPoints`] when two consecutive points coincide.
 ///
 /// # Examples
 ///
@@ -67,7 +67,7 @@ pub fn chord_length_params<P: ControlPoint>(points: &[P]) -> Result<Vec<f64>, Er
     }
     for k in 0..n {
         if (points[(k + 1) % n] - points[k]).norm() == 0.0 {
-            return Err(Error::ParametersNotDistinct { first: k, second: (k + 1) % n });
+            return Err(Error::CoincidentPoints { first: k, second: (k + 1) % n });
         }
     }
     Ok(acc.into_iter().map(|s| s / len).collect())

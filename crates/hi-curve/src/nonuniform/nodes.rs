@@ -88,6 +88,9 @@ impl<P: ControlPoint> Nodes<P> {
     }
 
     pub(super) fn eval(&self, t: f64) -> P {
+        if self.points.len() == 1 {
+            return self.points[0];
+        }
         let mut num = P::ZERO;
         let mut den = 0.0;
         match self.terms(t, |k, w| {

@@ -9,7 +9,7 @@ use realfft::num_complex::Complex64;
 
 use super::linalg::{Lu, norm1};
 use super::{ComplexPoint, complex_of, max_over_gaps};
-use crate::trig::{quarter_turns, sin_cos_pi};
+use crate::trig::{pow_order, quarter_turns, sin_cos_pi};
 use crate::{ControlPoint, Error};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -63,7 +63,7 @@ impl<P: ControlPoint> Thesis<P> {
         for (&w_pi, &(re, im)) in self.omegas_over_pi.iter().zip(&self.weights) {
             let (s, c) = sin_cos_pi(w_pi * t);
             let (sp, cp) = quarter_turns(s, c, order);
-            let scale = (w_pi * std::f64::consts::PI).powi(order as i32);
+            let scale = pow_order(w_pi * std::f64::consts::PI, order);
             // Re[(cp + i sp)(re + i im)] = cp·re − sp·im
             res += (re * cp - im * sp) * scale;
         }

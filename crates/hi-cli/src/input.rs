@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: MIT
+//! Reading the points of a curve from a JSON file or stdin.
+//!
+//! Accepted shapes: `{"points": [...]}` or the bare array `[...]`, whose items are all
+//! points of one dimension: arrays of 1, 2 or 3 numbers. A 1-D point may also be a bare
+//! number, so `[1, 2, 3]` and `[[1], [2], [3]]` are the same three points.
+
+use std::io::Read;
+use std::path::Path;
+
+use glam::{DVec2, DVec3};
+use serde_json::Value;
+
+use crate::error::Failure;
+
+/// The name under which stdin is read (`--input -`) and shown in messages.
+const STDIN_NAME: &str = "<stdin>";
+
+/// The points of a curve, in the dimension the input gave them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Points {
+    /// 1-D points.
+    One(Vec<f64>),
+    /// 2-D points.
+    Two(Vec<DVec2>),
+    /// 3-D points.
+    Three(Vec<DVec3>),
+}
+
+/// Reads the points of the file at `path`, or of stdin when `path` is `-`.
+///
+/// # Errors
+///
+/// [`Failure::Input`] naming the file and the problem: unreadable file, malformed JSON, wrong
+/// shape, mixed dimensions, no points.
+pub(crate) fn read_points(path: &Path) -> Result<Points, Failure> {
+    let (name, text) = if path.as_os_str() == "-" {
+        let mut text = String::new();
+        std::io::stdin()
+            .read_to_string(&mut text)
+            .map_err(|e| Failure::input(format!("{STDIN_NAME}: cannot read: {e}")))?;
+        (STDIN_NAME.to_owned(), text)
+    } else {
+        let name = path.display().to_string();
+        match std::fs::read_to_string(path) {
+            Ok(text) => (name, text),
+            Err(e) => return Err(Failure::input(format!("{name}: cannot read: {e}"))),
+        }
+    };
+    parse_points(&text).map_err(|message| Failure::input(format!("{name}: {message}")))
+}
+
+/// Parses the JSON text of a point list.
+///
+/// # Errors
+///
+/// A message naming the problem (without the file name).
+pub(crate) fn parse_points(text: &str) -> Result<Points, String> {
+    let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e))?;
+    let items = match value {
+        Value::Array(items) => items,
+        Value::Object(mut map) => {
+            if let Some(key) = map.keys().find(|k| *k != "points") {
+                return Err(format!(
+                    "unknown key \"{key}\": the object must have the key \"points\" only"
+                ));
+            }
+            match map.remove("points") {
+                Some(Value::Array(items)) => items,
+                Some(other) => {
+                    return Err(format!("\"points\" must be an array, found {}", kind(&other)));
+                }
+                None => return Err("the object has no key \"points\"".to_owned()),
+            }
+        }
+        other => {
+            return Err(format!(
+                "expected an array of points or an object {{\"points\": [...]}}, found {}",
+                kind(&other)
+            ));
+        }
+    };
+    if items.is_empty() {
+        return Err("no points given: at least one point is needed".to_owned());
+    }
+    let rows = items
+        .iter()
+        .enumerate()
+        .map(|(i, item)| coordinates(i, item))
+        .collect::<Result<Vec<_>, _>>()?;
+    let dim = rows[0].len();
+    if let Some((i, row)) = rows.iter().enumerate().find(|(_, row)| row.len() != dim) {
+        return Err(format!("point {i} has {} coordinates, point 0 has {dim}", row.len()));
+    }
+    Ok(match dim {
+        1 => Points::One(rows.iter().map(|r| r[0]).collect()),
+        2 => Points::Two(rows.iter().map(|r| DVec2::new(r[0], r[1])).collect()),
+        _ => Points::Three(rows.iter().map(|r| DVec3::new(r[0], r[1], r[2])).collect()),
+    })
+}
+
+/// The coordinates of point `index`: 1 to 3 finite numbers.
+fn coordinates(index: usize, item: &Value) -> Result<Vec<f64>, String> {
+    let values: &[Value] = match item {
+        Value::Number(_) => std::slice::from_ref(item),
+        Value::Array(values) => values,
+        other => {
+            return Err(format!(
+                "point {index} must be a number or an array of 1 to 3 numbers, found {}",
+                kind(other)
+            ));
+        }
+    };
+    if !(1..=3).contains(&values.len()) {
+        return Err(format!(
+            "point {index} has {} coordinates: points must have 1, 2 or 3",
+            values.len()
+        ));
+    }
+    values
+        .iter()
+        .enumerate()
+        .map(|(c, v)| match v.as_f64() {
+            Some(x) if x.is_finite() => Ok(x),
+            Some(x) => {
+                Err(format!("point {index}, coordinate {c} is {x}: coordinates must be finite"))
+            }
+            None => {
+                Err(format!("point {index}, coordinate {c} must be a number, found {}", kind(v)))
+            }
+        })
+        .collect()
+}
+
+/// What a JSON value is, in words.
+fn kind(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// A one-line message for a JSON syntax error, explaining overflowing numbers.
+fn json_error(e: &serde_json::Error) -> String {
+    let message = e.to_string();
+    if message.starts_with("number out of range") {
+        format!(
+            "invalid JSON: {message} (a number too large for a double, which would be infinite: \
+             coordinates must be finite)"
+        )
+    } else {
+        format!("invalid JSON: {message}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shapes() {
+        assert_eq!(parse_points("[1, [2], 3.5]"), Ok(Points::One(vec![1.0, 2.0, 3.5])));
+        assert_eq!(
+            parse_points(r#"{"points": [[1, 2]]}"#),
+            Ok(Points::Two(vec![DVec2::new(1.0, 2.0)]))
+        );
+        assert_eq!(parse_points("[[1, 2, 3]]"), Ok(Points::Three(vec![DVec3::new(1.0, 2.0, 3.0)])));
+    }
+
+    #[test]
+    fn errors() {
+        let err = |text: &str| parse_points(text).unwrap_err();
+        assert_eq!(
+            err("[[1,2,3],[1,2,3],[1,2,3],[1,2]]"),
+            "point 3 has 2 coordinates, point 0 has 3"
+        );
+        assert_eq!(err("[]"), "no points given: at least one point is needed");
+        assert!(err("[[1,2,3,4]]").contains("4 coordinates"), "dimension 4");
+        assert!(err("[[]]").contains("0 coordinates"), "dimension 0");
+        assert!(err("[1e999]").contains("number out of range"), "overflow");
+        assert!(err(r#"{"pts": []}"#).contains("unknown key \"pts\""), "unknown key");
+        assert!(err(r#"[["a"]]"#).contains("a string"), "string coordinate");
+        assert!(err("7").contains("found a number"), "scalar");
+    }
+}
