@@ -65,7 +65,8 @@ pub(crate) fn check(root: &Path) -> Result<()> {
     manifests.sort();
     let mut texts = Vec::new();
     for (name, path) in manifests {
-        let text = std::fs::read_to_string(&path).with_context(|| format!("reading {}", path.display()))?;
+        let text = std::fs::read_to_string(&path)
+            .with_context(|| format!("reading {}", path.display()))?;
         texts.push((name, text));
     }
     let problems = violations(&texts);
@@ -77,7 +78,9 @@ fn violations(manifests: &[(String, String)]) -> Vec<String> {
     let mut problems = Vec::new();
     for (name, text) in manifests {
         let Some(own) = layer_of(name) else {
-            problems.push(format!("{name} has no layer in docs/architecture.md (add it to xtask/src/layers.rs)"));
+            problems.push(format!(
+                "{name} has no layer in docs/architecture.md (add it to xtask/src/layers.rs)"
+            ));
             continue;
         };
         for dep in hi_dependencies(text) {
@@ -117,7 +120,10 @@ mod tests {
         assert!(violations(&ok).is_empty());
         let upward = [m("hi-curve", "[dependencies]\nhi-surface.workspace = true\n")];
         assert_eq!(violations(&upward).len(), 1, "{:?}", violations(&upward));
-        let sideways = [m("hi-raytrace", "[dev-dependencies]\nhi-geomimage = { path = \"../hi-geomimage\" }\n")];
+        let sideways = [m(
+            "hi-raytrace",
+            "[dev-dependencies]\nhi-geomimage = { path = \"../hi-geomimage\" }\n",
+        )];
         assert_eq!(violations(&sideways).len(), 1);
         let foundation = [m("hi-bezier", "[dependencies]\nhi-interval.workspace = true\n")];
         assert_eq!(violations(&foundation).len(), 1, "foundations depend on no hi-* crate");

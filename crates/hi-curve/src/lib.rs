@@ -58,8 +58,8 @@ pub use curve::HarmonicCurve;
 pub use differential::{FrenetFrame, ParamCurve, PlaneCurve, SpaceCurve};
 pub use error::Error;
 pub use fourier::Fourier;
+pub use hi_bezier::ControlPoint;
 pub use nonuniform::{NonUniformCurve, NonUniformVariant, chord_length_params};
-pub use point::ControlPoint;
 pub use resample::ReductionError;
 pub use trigonometric::TrigonometricCurve;
 

@@ -1,0 +1,328 @@
+// SPDX-License-Identifier: MIT
+//! `cargo xtask figures`: the thesis figures, regenerated into `docs/figures/`.
+//!
+//! The figures are listed in a registry ([`registry`]): each [`Figure`] has the thesis's
+//! number and caption, a line on what is drawn and on the data, and one or more [`Panel`]s, each
+//! a file and a function that draws it. Topic modules hold the drawing functions and export their
+//! figures as a `FIGURES` slice:
+//!
+//! | module | figures |
+//! |---|---|
+//! | [`basis`] | 3.1–3.6, the functions σ and σₖ |
+//! | [`curves`] | 3.13, 3.14, 3.19: uniform harmonic curves against other curves |
+//! | [`nonuniform`] | 3.20–3.23, non-uniform harmonic interpolation (§3.10) |
+//! | [`theorems`] | 5.2, 5.6: subdivision, rotation and insertion (chapter 5) |
+//!
+//! [`plot`] gives them a common look on top of plotters and [`data`] holds the point sets.
+//! To add a figure, write its drawing function in a topic module (a new one for a new topic) and
+//! add a [`Figure`] to that module's `FIGURES`; the files, the index page `README.md` and the
+//! check follow from the registry.
+//!
+//! Every file is a pure function of the code: `--check` regenerates everything in memory and
+//! fails, naming the files, if anything committed differs, is missing or is left over; so does
+//! the test `committed_figures_are_current`.
+
+mod basis;
+mod curves;
+mod data;
+mod nonuniform;
+mod plot;
+mod theorems;
+
+use std::fmt::Write as _;
+use std::io::IsTerminal;
+use std::path::Path;
+
+use anyhow::{Context, Result, bail};
+use indicatif::{ProgressBar, ProgressStyle};
+
+/// The folder of the generated files, relative to the workspace root.
+const OUT_DIR: &str = "docs/figures";
+/// The index page inside [`OUT_DIR`].
+const INDEX: &str = "README.md";
+
+/// A function that draws one panel, given the title to write above it, as the file's bytes.
+type Draw = fn(&str) -> Result<Vec<u8>>;
+
+/// One figure of the thesis.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Figure {
+    /// Chapter and number: (3, 13) is figure 3.13.
+    pub(crate) number: (u32, u32),
+    /// The thesis's caption (as in shared/spec/FIGURES.md).
+    pub(crate) caption: &'static str,
+    /// One line on what is drawn.
+    pub(crate) drawn: &'static str,
+    /// The data: exact, or which stand-in and why.
+    pub(crate) data: &'static str,
+    /// The files of the figure: one, or one per panel.
+    pub(crate) panels: &'static [Panel],
+}
+
+/// One file of a figure.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Panel {
+    /// Appended to the figure's file stem: "" for a single file, "a", "b", "a-thesis", ….
+    pub(crate) suffix: &'static str,
+    /// The panel's caption, "(a) Trigonometric interpolation"; "" to use the figure's caption.
+    pub(crate) title: &'static str,
+    /// Draws it.
+    pub(crate) draw: Draw,
+}
+
+impl Figure {
+    /// "3.13".
+    fn label(&self) -> String {
+        format!("{}.{}", self.number.0, self.number.1)
+    }
+
+    /// The file name of `panel`: `fig-3-13a.svg`, numbers padded so that names sort.
+    fn file(&self, panel: &Panel) -> String {
+        format!("fig-{}-{:02}{}.svg", self.number.0, self.number.1, panel.suffix)
+    }
+
+    /// The title drawn above `panel`.
+    fn title(&self, panel: &Panel) -> String {
+        if panel.title.is_empty() {
+            format!("Figure {}: {}", self.label(), self.caption)
+        } else {
+            format!("Figure {} {}", self.label(), panel.title)
+        }
+    }
+}
+
+/// Every figure, in the thesis's order.
+fn registry() -> Vec<Figure> {
+    let mut all =
+        [basis::FIGURES, curves::FIGURES, nonuniform::FIGURES, theorems::FIGURES].concat();
+    all.sort_by_key(|f| f.number);
+    all
+}
+
+/// A generated file: its name inside [`OUT_DIR`] and its bytes.
+type Output = (String, Vec<u8>);
+
+/// Draws every figure and the index page, in memory, with a progress bar if `progress` and
+/// standard error is a terminal.
+fn generate(progress: bool) -> Result<Vec<Output>> {
+    let figures = registry();
+    let count: usize = figures.iter().map(|f| f.panels.len()).sum();
+    let bar = if progress && std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new(count as u64);
+        bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    let mut outputs = Vec::with_capacity(count + 1);
+    for figure in &figures {
+        for panel in figure.panels {
+            let file = figure.file(panel);
+            bar.set_message(file.clone());
+            let bytes =
+                (panel.draw)(&figure.title(panel)).with_context(|| format!("drawing {file}"))?;
+            outputs.push((file, bytes));
+            bar.inc(1);
+        }
+    }
+    bar.finish_and_clear();
+    outputs.push((INDEX.to_owned(), index(&figures).into_bytes()));
+    Ok(outputs)
+}
+
+/// The index page: every figure with its files, caption and notes, then the stand-in data.
+fn index(figures: &[Figure]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# Figures of the thesis\n");
+    let _ = writeln!(
+        s,
+        "Curve figures of A. Hardy, *Harmonic interpolation for smooth curves and surfaces* (2005), \
+         drawn with `hi-curve`.\n\
+         Generated by `cargo xtask figures` from `xtask/src/figures/`: do not edit by hand. \
+         `cargo xtask figures --check` (and `cargo test -p xtask`) fails when a file here is stale.\n\n\
+         The thesis does not print its figures' point coordinates: where a figure needs points, a \
+         stand-in is used and named below (coordinates in [Stand-in data](#stand-in-data)).\n"
+    );
+    let _ = writeln!(s, "| figure | caption | files | what is drawn | data |");
+    let _ = writeln!(s, "|---|---|---|---|---|");
+    for f in figures {
+        let files: Vec<String> = f
+            .panels
+            .iter()
+            .map(|p| {
+                let file = f.file(p);
+                format!("[{file}]({file})")
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "| [{}](#figure-{}) | {} | {} | {} | {} |",
+            f.label(),
+            f.label().replace('.', ""),
+            f.caption,
+            files.join("<br>"),
+            f.drawn,
+            f.data
+        );
+    }
+    let _ = writeln!(s);
+    for f in figures {
+        let _ = writeln!(s, "## Figure {}\n", f.label());
+        let _ = writeln!(s, "*{}.* {} Data: {}\n", f.caption, f.drawn, f.data);
+        for p in f.panels {
+            let file = f.file(p);
+            if !p.title.is_empty() {
+                let _ = writeln!(s, "{}: `{file}`\n", p.title);
+            }
+            let _ = writeln!(s, "![{}]({file})\n", f.title(p));
+        }
+    }
+    let _ = writeln!(s, "## Stand-in data\n");
+    for d in data::STAND_INS {
+        let points: Vec<String> = (d.points)()
+            .iter()
+            .map(|p| {
+                if d.space {
+                    format!("({}, {}, {})", p.x, p.y, p.z)
+                } else {
+                    format!("({}, {})", p.x, p.y)
+                }
+            })
+            .collect();
+        let (first, second) = (plot::sub(d.letter, 0), plot::sub(d.letter, 1));
+        let _ = writeln!(
+            s,
+            "- **{}**: {}.\n  Points {first}, {second}, …: {}.",
+            d.name,
+            d.about,
+            points.join(", ")
+        );
+    }
+    s
+}
+
+/// The names of the files in `dir` that differ from `outputs`, are missing, or are figures
+/// (`fig-*.svg`) that nothing generates any more.
+fn stale_files(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
+    let mut stale = Vec::new();
+    for (name, bytes) in outputs {
+        match std::fs::read(dir.join(name)) {
+            Ok(on_disk) if on_disk == *bytes => {}
+            Ok(_) => stale.push(format!("{name} (differs)")),
+            Err(_) => stale.push(format!("{name} (missing)")),
+        }
+    }
+    for name in orphans(dir, outputs)? {
+        stale.push(format!("{name} (no longer generated)"));
+    }
+    Ok(stale)
+}
+
+/// The `fig-*.svg` files in `dir` that are not among `outputs`, sorted.
+fn orphans(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
+    if !dir.exists() {
+        return Ok(Vec::new());
+    }
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
+        let name = entry?.file_name().to_string_lossy().into_owned();
+        if name.starts_with("fig-")
+            && name.ends_with(".svg")
+            && !outputs.iter().any(|(n, _)| *n == name)
+        {
+            found.push(name);
+        }
+    }
+    found.sort();
+    Ok(found)
+}
+
+/// Writes every figure and the index into `docs/figures/` (or, with `check`, verifies that the
+/// committed ones are current, writing nothing).
+///
+/// # Errors
+///
+/// If a figure fails to draw, a file cannot be read or written, or (with `check`) a file is
+/// stale; the error names the stale files.
+pub(crate) fn run(root: &Path, check: bool) -> Result<()> {
+    let dir = root.join(OUT_DIR);
+    let outputs = generate(true)?;
+    if check {
+        let stale = stale_files(&dir, &outputs)?;
+        if !stale.is_empty() {
+            bail!(
+                "{} file(s) in {OUT_DIR} are stale; run `cargo xtask figures`:\n  {}",
+                stale.len(),
+                stale.join("\n  ")
+            );
+        }
+        println!("figures: {} files in {OUT_DIR} are current", outputs.len());
+        return Ok(());
+    }
+    std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
+    let mut written = 0;
+    for (name, bytes) in &outputs {
+        let path = dir.join(name);
+        if std::fs::read(&path).ok().as_deref() != Some(bytes.as_slice()) {
+            std::fs::write(&path, bytes).with_context(|| format!("writing {}", path.display()))?;
+            written += 1;
+        }
+    }
+    for name in orphans(&dir, &outputs)? {
+        std::fs::remove_file(dir.join(&name)).with_context(|| format!("removing {name}"))?;
+        println!("figures: removed {name}, which nothing generates any more");
+    }
+    println!("figures: {} files in {OUT_DIR}, {written} rewritten", outputs.len());
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn committed_figures_are_current() {
+        let dir = crate::project_root().join(OUT_DIR);
+        let outputs = generate(false).expect("every figure draws");
+        let stale = stale_files(&dir, &outputs).expect("docs/figures is readable");
+        assert!(stale.is_empty(), "stale figures, run `cargo xtask figures`: {stale:?}");
+    }
+
+    #[test]
+    fn the_registry_is_ordered_and_names_are_unique() {
+        let figures = registry();
+        for w in figures.windows(2) {
+            assert!(
+                w[0].number < w[1].number,
+                "figure {} is listed twice or out of order",
+                w[1].label()
+            );
+        }
+        let mut files: Vec<String> =
+            figures.iter().flat_map(|f| f.panels.iter().map(|p| f.file(p))).collect();
+        let count = files.len();
+        files.sort();
+        files.dedup();
+        assert_eq!(files.len(), count, "two panels share a file name");
+        for f in &figures {
+            assert!(!f.panels.is_empty(), "figure {} has no file", f.label());
+            if f.panels.len() > 1 {
+                assert!(
+                    f.panels.iter().all(|p| !p.title.is_empty()),
+                    "figure {}: panels need titles",
+                    f.label()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn drawing_is_deterministic() {
+        let figure = registry()[0];
+        let panel = &figure.panels[0];
+        let title = figure.title(panel);
+        let first = (panel.draw)(&title).expect("draws");
+        let second = (panel.draw)(&title).expect("draws");
+        assert!(first == second, "two drawings of {} differ", figure.file(panel));
+    }
+}
