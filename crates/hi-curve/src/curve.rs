@@ -210,4 +210,8 @@ impl<P: ControlPoint> ParamCurve<P> for HarmonicCurve<P> {
     fn scale(&self) -> f64 {
         spread(&self.points, self.centroid())
     }
+
+    fn is_periodic(&self) -> bool {
+        true
+    }
 }

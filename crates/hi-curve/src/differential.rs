@@ -20,12 +20,16 @@ const GAUSS_8: [(f64, f64); 4] = [
     (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
 ];
 
-/// A curve t ↦ X(t) with derivatives of every order: what curvature, torsion, Frenet frames and
-/// arc length need. Implemented by every curve type of this crate, so comparisons can be
-/// generic.
+/// A curve t ↦ X(t), t ∈ [0, 1], with derivatives of every order: what curvature, torsion,
+/// Frenet frames, arc length and fairness measures need. Implemented by every curve type of
+/// this crate, so comparisons can be generic.
 pub trait ParamCurve<P: ControlPoint> {
     /// X(t).
     fn eval(&self, t: f64) -> P;
+
+    /// True if the curve is closed and 1-periodic (X(t + 1) = X(t)); false for an open curve
+    /// from X(0) to X(1).
+    fn is_periodic(&self) -> bool;
 
     /// The derivative X⁽ᵖ⁾(t) of order p (p = 0 is X(t)).
     fn eval_deriv(&self, t: f64, order: usize) -> P;
@@ -196,6 +200,9 @@ mod tests {
         }
         fn scale(&self) -> f64 {
             self.r
+        }
+        fn is_periodic(&self) -> bool {
+            false
         }
     }
 

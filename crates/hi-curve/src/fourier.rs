@@ -144,6 +144,31 @@ impl<P: ControlPoint> Fourier<P> {
         Some((self.cos[a] * 0.5, im))
     }
 
+    /// The spectral basis and its derivatives at t: for j = 0, …, `degree`, the pair
+    /// (dᵖ/dtᵖ cos 2πjt, dᵖ/dtᵖ sin 2πjt) = (2πj)ᵖ·(cos(2πjt + pπ/2), sin(2πjt + pπ/2)).
+    ///
+    /// Tensor-product surfaces evaluate their 2-D spectra with one such row per direction.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let row = hi_curve::Fourier::<f64>::trig_basis(2, 0.125, 1);
+    /// // d/dt cos 4πt = −4π sin 4πt = −4π at t = 1/8.
+    /// assert!((row[2].0 + 4.0 * std::f64::consts::PI).abs() < 1e-13);
+    /// assert_eq!(row[0], (0.0, 0.0));
+    /// ```
+    #[must_use]
+    pub fn trig_basis(degree: usize, t: f64, order: usize) -> Vec<(f64, f64)> {
+        let mut row = Vec::with_capacity(degree + 1);
+        row.push(if order == 0 { (1.0, 0.0) } else { (0.0, 0.0) });
+        for_each_harmonic(t, degree, |j, c, s| {
+            let w = pow_order(2.0 * PI * j as f64, order);
+            let (sp, cp) = quarter_turns(s, c, order);
+            row.push((w * cp, w * sp));
+        });
+        row
+    }
+
     /// X(t) by the spectral sum, O(M).
     #[must_use]
     pub fn eval(&self, t: f64) -> P {

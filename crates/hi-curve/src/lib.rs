@@ -43,6 +43,7 @@
 //! None: the crate has no optional features.
 
 mod basis;
+pub mod compare;
 mod curve;
 mod differential;
 mod error;

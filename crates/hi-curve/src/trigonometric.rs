@@ -122,6 +122,10 @@ impl<P: ControlPoint> ParamCurve<P> for TrigonometricCurve<P> {
     fn scale(&self) -> f64 {
         crate::curve::spread(&self.points, self.coeffs[0].0)
     }
+
+    fn is_periodic(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

@@ -5,14 +5,7 @@
 //! σⁿₖ(t) = σⁿ(t − k/n). Both are 1-periodic and even, equal to 1 at the integers, and
 //! σⁿₖ(j/n) = δⱼₖ, so X(t) = Σₖ σⁿₖ(t)·xₖ passes through every point.
 //!
-//! Four ways to evaluate the same function, as the thesis derives them:
-//!
-//! | form | source | cost | accuracy |
-//! |---|---|---|---|
-//! | [`Form::ClosedForm`] | eq. 3.13 / 3.26 | O(1) | a few ulps, any t (argument reduced exactly) |
-//! | [`Form::Recurrence`] | §3.6, division-free | O(n) | a few ulps times √n |
-//! | [`Form::CosineSum`] | eq. 3.28 / 3.29 | O(n) | a few ulps times √n |
-//! | [`Form::Chebyshev`] | §3.9 | O(n) | degrades as n² near nodes, see [`Sigma::chebyshev`] |
+//! Four ways to evaluate the same function, as the thesis derives them: see [`Form`].
 //!
 //! Derivatives of any order come from the cosine sum (eq. 5.4 generalised).
 
@@ -23,7 +16,14 @@ mod recurrence;
 
 use crate::Error;
 
-/// One of the four evaluation forms of σⁿₖ (see the [module documentation](self)).
+/// One of the four evaluation forms of σⁿₖ, which agree to rounding except where noted.
+///
+/// | form | source | cost | accuracy |
+/// |---|---|---|---|
+/// | `ClosedForm` | eq. 3.13 / 3.26 | O(1) | a few ulps, any t (argument reduced exactly) |
+/// | `Recurrence` | §3.6, division-free | O(n) | a few ulps times √n |
+/// | `CosineSum` | eq. 3.28 / 3.29 | O(n) | a few ulps times √n |
+/// | `Chebyshev` | §3.9 | O(n) | degrades as n² near nodes, see [`Sigma::chebyshev`] |
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Form {
     /// sin(nπd)/(n·sin(πd)) (times cos(πd) for even n), eq. 3.13 and 3.26, with d = t − k/n

@@ -262,6 +262,10 @@ impl<P: ControlPoint> ParamCurve<P> for NonUniformCurve<P> {
         let centroid = self.points.iter().fold(P::ZERO, |acc, p| acc + *p) * (1.0 / n);
         spread(&self.points, centroid)
     }
+
+    fn is_periodic(&self) -> bool {
+        self.variant == NonUniformVariant::Nodes
+    }
 }
 
 /// The maximum of `f` over the gaps between sorted parameters (cyclic if `periodic`, else

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+//! Subdivision of Bézier curves (Hardy 2005, Theorem 2.2 and figure 2.7): the two halves of a
+//! curve split at t₀ are Bézier curves of the same degree whose control points are the edges of
+//! de Casteljau's triangle; subsegments [t₀, t₁] come from the blossom.
+
+use crate::curve::lerp;
+use crate::{BezierCurve, ControlPoint};
+
+impl<P: ControlPoint> BezierCurve<P> {
+    /// Splits the curve at t₀ (Theorem 2.2): returns q₁(t) = q(t₀·t) and
+    /// q₂(t) = q(t₀ + (1 − t₀)·t), both of degree n, with control points p⁰₀, p¹₀, …, pⁿ₀ and
+    /// pⁿ₀, pⁿ⁻¹₁, …, p⁰ₙ of eq. 2.6.
+    ///
+    /// Any finite t₀ works; outside [0, 1] one of the pieces extends the curve.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use hi_bezier::BezierCurve;
+    ///
+    /// let c = BezierCurve::new(vec![DVec2::ZERO, DVec2::Y, DVec2::ONE, DVec2::X]);
+    /// let (left, right) = c.split(0.3);
+    /// assert!((left.eval(0.5) - c.eval(0.15)).length() < 1e-15);
+    /// assert!((right.eval(0.5) - c.eval(0.65)).length() < 1e-15);
+    /// ```
+    #[must_use]
+    #[doc(alias = "theorem 2.2")]
+    pub fn split(&self, t0: f64) -> (Self, Self) {
+        let (left, right) = split_points(self.control_points(), t0);
+        (Self::from_vec_unchecked(left), Self::from_vec_unchecked(right))
+    }
+
+    /// The piece of the curve over [t₀, t₁] as a Bézier curve of the same degree,
+    /// reparametrised to [0, 1]: r(s) = q(t₀ + (t₁ − t₀)·s). t₀ > t₁ gives the reversed piece.
+    ///
+    /// The control points are the blossom values Rᵢ = q[t₀, …, t₀ (n − i times), t₁, …, t₁
+    /// (i times)], computed by de Casteljau steps with t₁ then t₀, so no division by t₁ or by
+    /// t₁ − t₀ is needed.
+    #[must_use]
+    pub fn subsegment(&self, t0: f64, t1: f64) -> Self {
+        Self::from_vec_unchecked(subsegment_points(self.control_points(), t0, t1))
+    }
+}
+
+/// The two control polygons of Theorem 2.2 for a split at `t`.
+pub(crate) fn split_points<P: ControlPoint>(control: &[P], t: f64) -> (Vec<P>, Vec<P>) {
+    let n = control.len();
+    let mut work = control.to_vec();
+    let mut left = Vec::with_capacity(n);
+    let mut right = vec![control[n - 1]; n];
+    left.push(work[0]);
+    for level in 1..n {
+        for i in 0..n - level {
+            work[i] = lerp(work[i], work[i + 1], t);
+        }
+        left.push(work[0]);
+        right[n - 1 - level] = work[n - 1 - level];
+    }
+    (left, right)
+}
+
+/// The control polygon of the piece over [t₀, t₁] by blossoming.
+pub(crate) fn subsegment_points<P: ControlPoint>(control: &[P], t0: f64, t1: f64) -> Vec<P> {
+    let n = control.len() - 1;
+    // rows[i] = control polygon after i de Casteljau steps with t₁ (length n + 1 − i).
+    let mut res = Vec::with_capacity(n + 1);
+    let mut after_t1 = control.to_vec();
+    for i in 0..=n {
+        // R_i: i steps with t₁ (already done), then n − i steps with t₀.
+        let mut work = after_t1.clone();
+        let len = work.len();
+        for level in 1..len {
+            for j in 0..len - level {
+                work[j] = lerp(work[j], work[j + 1], t0);
+            }
+        }
+        res.push(work[0]);
+        if i < n {
+            for j in 0..after_t1.len() - 1 {
+                after_t1[j] = lerp(after_t1[j], after_t1[j + 1], t1);
+            }
+            after_t1.pop();
+        }
+    }
+    res
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn split_of_a_line_is_two_lines() {
+        let c = BezierCurve::new(vec![0.0, 4.0]);
+        let (a, b) = c.split(0.25);
+        assert_eq!(a.control_points(), &[0.0, 1.0]);
+        assert_eq!(b.control_points(), &[1.0, 4.0]);
+        let (a, b) = BezierCurve::new(vec![7.0]).split(0.5);
+        assert_eq!((a.degree(), b.degree()), (0, 0));
+    }
+
+    #[test]
+    fn subsegment_ends_and_reversal() {
+        let c = BezierCurve::new(vec![0.0, 3.0, -1.0, 2.0, 5.0]);
+        let s = c.subsegment(0.2, 0.9);
+        assert!((s.control_points()[0] - c.eval(0.2)).abs() < 1e-14);
+        assert!((s.control_points()[4] - c.eval(0.9)).abs() < 1e-14);
+        let r = c.subsegment(0.9, 0.2);
+        assert!((r.eval(0.3) - s.eval(0.7)).abs() < 1e-14);
+        let whole = c.subsegment(0.0, 1.0);
+        for (p, q) in whole.control_points().iter().zip(c.control_points()) {
+            assert!((p - q).abs() < 1e-15);
+        }
+    }
+}
