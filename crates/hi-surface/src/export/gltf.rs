@@ -1,0 +1,341 @@
+// SPDX-License-Identifier: MIT
+//! glTF 2.0, as JSON with a binary buffer beside it or as one `.glb`, built with `gltf-json`
+//! (the surface as polygons for other software, Hardy 2005, §5.5) and read back with
+//! `gltf::import`.
+
+use std::borrow::Cow;
+use std::collections::BTreeMap;
+use std::io::Write;
+use std::path::Path;
+
+use ::gltf::json;
+use glam::{DVec2, DVec3, Vec3};
+use json::validation::Checked::Valid;
+use json::validation::USize64;
+
+use super::{GENERATOR, format_error, io_error};
+use crate::{Error, TriangleMesh};
+
+/// Largest vertex count written with `u16` indices: 65 535 itself is the primitive-restart
+/// value, which glTF forbids in indices.
+const MAX_U16_VERTICES: usize = u16::MAX as usize;
+
+/// The JSON document and its one binary buffer.
+struct Encoded {
+    root: json::Root,
+    bin: Vec<u8>,
+}
+
+fn push_f32s(bin: &mut Vec<u8>, values: impl IntoIterator<Item = f32>) {
+    for x in values {
+        bin.extend_from_slice(&x.to_le_bytes());
+    }
+}
+
+/// Appends a buffer view of `bin[start..]` (padding `bin` to 4 bytes after it).
+fn push_view(
+    root: &mut json::Root,
+    buffer: json::Index<json::Buffer>,
+    bin: &mut Vec<u8>,
+    start: usize,
+    target: json::buffer::Target,
+) -> json::Index<json::buffer::View> {
+    let view = root.push(json::buffer::View {
+        buffer,
+        byte_length: USize64::from(bin.len() - start),
+        byte_offset: Some(USize64::from(start)),
+        byte_stride: None,
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        target: Some(Valid(target)),
+    });
+    bin.resize(bin.len().next_multiple_of(4), 0);
+    view
+}
+
+fn accessor(
+    view: json::Index<json::buffer::View>,
+    count: usize,
+    component: json::accessor::ComponentType,
+    type_: json::accessor::Type,
+    bounds: Option<([f32; 3], [f32; 3])>,
+) -> json::Accessor {
+    json::Accessor {
+        buffer_view: Some(view),
+        byte_offset: Some(USize64(0)),
+        count: USize64::from(count),
+        component_type: Valid(json::accessor::GenericComponentType(component)),
+        extensions: None,
+        extras: Default::default(),
+        type_: Valid(type_),
+        min: bounds.map(|(lo, _)| json::Value::from(lo.to_vec())),
+        max: bounds.map(|(_, hi)| json::Value::from(hi.to_vec())),
+        name: None,
+        normalized: false,
+        sparse: None,
+    }
+}
+
+/// The glTF document and buffer of `mesh`; `uri` is the buffer's URI (`None` for `.glb`).
+fn encode(mesh: &TriangleMesh, uri: Option<String>) -> Encoded {
+    use json::accessor::{ComponentType, Type};
+    use json::buffer::Target;
+
+    let n = mesh.n_vertices();
+    let mut root = json::Root::default();
+    root.asset.generator = Some(GENERATOR.to_string());
+    let buffer = root.push(json::Buffer {
+        byte_length: USize64(0), // set below, once the buffer is complete
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        uri,
+    });
+    let mut bin = Vec::with_capacity(n * 44 + mesh.n_triangles() * 12);
+    let mut attributes = BTreeMap::new();
+
+    // POSITION, with min and max of the f32 values actually written.
+    let positions: Vec<Vec3> = mesh.positions().iter().map(|p| p.as_vec3()).collect();
+    let (lo, hi) = positions
+        .iter()
+        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let start = bin.len();
+    push_f32s(&mut bin, positions.iter().flat_map(|p| p.to_array()));
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    let acc = root.push(accessor(
+        view,
+        n,
+        ComponentType::F32,
+        Type::Vec3,
+        Some((lo.to_array(), hi.to_array())),
+    ));
+    attributes.insert(Valid(json::mesh::Semantic::Positions), acc);
+
+    let start = bin.len();
+    push_f32s(&mut bin, mesh.normals().iter().flat_map(|v| v.as_vec3().to_array()));
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
+    attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
+
+    let start = bin.len();
+    push_f32s(&mut bin, mesh.uvs().iter().flat_map(|t| t.as_vec2().to_array()));
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
+    attributes.insert(Valid(json::mesh::Semantic::TexCoords(0)), acc);
+
+    if let Some(colors) = mesh.colors() {
+        let start = bin.len();
+        push_f32s(&mut bin, colors.iter().flatten().copied());
+        let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+        let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
+        attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
+    }
+
+    let start = bin.len();
+    let component = if n <= MAX_U16_VERTICES {
+        for &k in mesh.triangles().iter().flatten() {
+            // k < n ≤ 65 535.
+            bin.extend_from_slice(&(k as u16).to_le_bytes());
+        }
+        ComponentType::U16
+    } else {
+        for &k in mesh.triangles().iter().flatten() {
+            bin.extend_from_slice(&k.to_le_bytes());
+        }
+        ComponentType::U32
+    };
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
+    let indices = root.push(accessor(view, 3 * mesh.n_triangles(), component, Type::Scalar, None));
+    root.buffers[buffer.value()].byte_length = USize64::from(bin.len());
+
+    let material = root.push(json::Material {
+        name: Some("harmonic surface".to_string()),
+        // A window of a closed surface is open, and seen from both sides.
+        double_sided: true,
+        pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+            metallic_factor: json::material::StrengthFactor(0.0),
+            roughness_factor: json::material::StrengthFactor(0.6),
+            ..Default::default()
+        },
+        ..Default::default()
+    });
+    let mesh_index = root.push(json::Mesh {
+        extensions: None,
+        extras: Default::default(),
+        name: Some("harmonic surface".to_string()),
+        primitives: vec![json::mesh::Primitive {
+            attributes,
+            extensions: None,
+            extras: Default::default(),
+            indices: Some(indices),
+            material: Some(material),
+            mode: Valid(json::mesh::Mode::Triangles),
+            targets: None,
+        }],
+        weights: None,
+    });
+    let node = root.push(json::Node {
+        mesh: Some(mesh_index),
+        name: Some("harmonic surface".to_string()),
+        ..Default::default()
+    });
+    let scene = root.push(json::Scene {
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        nodes: vec![node],
+    });
+    root.scene = Some(scene);
+    Encoded { root, bin }
+}
+
+/// Writes `mesh` as glTF 2.0 JSON to `gltf` and its binary buffer to `bin`; `bin_uri` is the
+/// buffer's URI as it goes into the JSON, relative to the JSON file and already
+/// percent-encoded (e.g. `surface.bin`). [`super::save`] picks the name and encodes it.
+///
+/// # Errors
+///
+/// [`super::FileError::Io`] when writing fails.
+///
+/// # Examples
+///
+/// ```
+/// use hi_surface::{MeshOptions, TriangleMesh, export, sphere};
+///
+/// let opts = MeshOptions { n_u: 8, n_v: 16, u_range: [0.0, 0.5], ..Default::default() };
+/// let mesh = TriangleMesh::try_from_surface(&sphere(1.0), &opts).unwrap();
+/// let (mut json, mut bin) = (Vec::new(), Vec::new());
+/// export::write_gltf(&mesh, &mut json, &mut bin, "sphere.bin").unwrap();
+/// let text = String::from_utf8(json).unwrap();
+/// assert!(text.contains("\"uri\": \"sphere.bin\"") && text.contains("\"generator\": \"harmonic"));
+/// assert_eq!(bin.len() % 4, 0);
+/// ```
+pub fn write_gltf<W: Write, B: Write>(
+    mesh: &TriangleMesh,
+    mut gltf: W,
+    mut bin: B,
+    bin_uri: &str,
+) -> Result<(), Error> {
+    let Encoded { root, bin: data } = encode(mesh, Some(bin_uri.to_string()));
+    let text = json::serialize::to_vec_pretty(&root)
+        .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
+    gltf.write_all(&text).and_then(|()| gltf.flush()).map_err(|e| io_error(&e, None))?;
+    bin.write_all(&data).and_then(|()| bin.flush()).map_err(|e| io_error(&e, None))
+}
+
+/// Writes `mesh` as binary glTF 2.0 (`.glb`: a JSON chunk and a BIN chunk).
+///
+/// # Errors
+///
+/// [`Error::InvalidCount`] if the file would exceed the 4 GiB limit of the format;
+/// [`super::FileError::Io`] when writing fails.
+///
+/// # Examples
+///
+/// ```
+/// use hi_surface::{MeshOptions, TriangleMesh, export, torus};
+///
+/// let mesh = TriangleMesh::try_from_surface(&torus(2.0, 0.5), &MeshOptions::default()).unwrap();
+/// let mut glb = Vec::new();
+/// export::write_glb(&mesh, &mut glb).unwrap();
+/// assert_eq!(&glb[..4], b"glTF");
+/// assert_eq!(u32::from_le_bytes(glb[8..12].try_into().unwrap()) as usize, glb.len());
+/// ```
+pub fn write_glb<W: Write>(mesh: &TriangleMesh, mut writer: W) -> Result<(), Error> {
+    let Encoded { root, bin } = encode(mesh, None);
+    let text = json::serialize::to_vec(&root)
+        .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
+    // Header, JSON chunk and BIN chunk, each chunk padded to 4 bytes.
+    let length = 12 + 8 + text.len().next_multiple_of(4) + 8 + bin.len();
+    let length = u32::try_from(length).map_err(|_| Error::InvalidCount {
+        what: "size of the GLB file in bytes",
+        value: length,
+        expected: "less than 2^32",
+    })?;
+    let glb = ::gltf::binary::Glb {
+        header: ::gltf::binary::Header { magic: *b"glTF", version: 2, length },
+        json: Cow::Owned(text),
+        bin: Some(Cow::Borrowed(&bin)),
+    };
+    glb.to_writer(&mut writer).map_err(|e| gltf_error(e, None))?;
+    writer.flush().map_err(|e| io_error(&e, None))
+}
+
+fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
+    match e {
+        ::gltf::Error::Io(e) => io_error(&e, path),
+        other => format_error(format!("glTF: {other}"), path),
+    }
+}
+
+/// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives of all its
+/// meshes, concatenated, ignoring node transforms.
+pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
+    let (document, buffers, _images) =
+        ::gltf::import(path).map_err(|e| gltf_error(e, Some(path)))?;
+    let (mut positions, mut normals, mut uvs, mut colors, mut triangles) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut all_colored = true;
+    for mesh in document.meshes() {
+        for primitive in mesh.primitives() {
+            if primitive.mode() != ::gltf::mesh::Mode::Triangles {
+                return Err(format_error(
+                    format!("primitive mode {:?} is not TRIANGLES", primitive.mode()),
+                    None,
+                ));
+            }
+            let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+            let base = u32::try_from(positions.len())
+                .map_err(|_| format_error("too many vertices", None))?;
+            let p: Vec<DVec3> = reader
+                .read_positions()
+                .ok_or_else(|| format_error("a primitive has no POSITION", None))?
+                .map(|p| Vec3::from(p).as_dvec3())
+                .collect();
+            let n = p.len();
+            let nrm: Vec<DVec3> = reader
+                .read_normals()
+                .ok_or_else(|| format_error("a primitive has no NORMAL", None))?
+                .map(|v| Vec3::from(v).as_dvec3())
+                .collect();
+            let uv: Vec<DVec2> = reader
+                .read_tex_coords(0)
+                .ok_or_else(|| format_error("a primitive has no TEXCOORD_0", None))?
+                .into_f32()
+                .map(|t| glam::Vec2::from(t).as_dvec2())
+                .collect();
+            if nrm.len() != n || uv.len() != n {
+                return Err(format_error("attribute counts differ within a primitive", None));
+            }
+            match reader.read_colors(0) {
+                Some(c) => colors.extend(c.into_rgb_f32()),
+                None => all_colored = false,
+            }
+            let idx: Vec<u32> = match reader.read_indices() {
+                Some(i) => i.into_u32().collect(),
+                None => (0..u32::try_from(n)
+                    .map_err(|_| format_error("too many vertices", None))?)
+                    .collect(),
+            };
+            if !idx.len().is_multiple_of(3) {
+                return Err(format_error("index count is not a multiple of 3", None));
+            }
+            triangles.extend(
+                idx.chunks_exact(3).map(|t| [t[0], t[1], t[2]].map(|k| k.saturating_add(base))),
+            );
+            positions.extend(p);
+            normals.extend(nrm);
+            uvs.extend(uv);
+        }
+    }
+    if triangles.is_empty() {
+        return Err(format_error("glTF file has no triangles", None));
+    }
+    let mesh = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
+    if all_colored && colors.len() == mesh.n_vertices() {
+        mesh.try_with_colors(colors)
+    } else {
+        Ok(mesh)
+    }
+}

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+//! The 2-D spectrum of a harmonic surface: the tensor product of the curve spectra.
+//!
+//! p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv
+//!                  + Cₐᵦ·sin 2πau·cos 2πβv + Dₐᵦ·sin 2πau·sin 2πβv],
+//! a ≤ ⌊m/2⌋, β ≤ ⌊n/2⌋, computed by 1-D FFTs along v (each row) and then along u (each
+//! coefficient sequence), with the even-size Nyquist terms halved as for curves (MATH.md §7).
+//! Any partial derivative is the same sum with each factor differentiated.
+
+use hi_curve::{ControlPoint, Fourier};
+
+/// The real 2-D spectrum of a harmonic surface (see the module documentation).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Spectrum2<P> {
+    /// Degree ⌊m/2⌋ in u.
+    deg_u: usize,
+    /// Degree ⌊n/2⌋ in v.
+    deg_v: usize,
+    /// Coefficients (A, B, C, D) at index `a·(deg_v + 1) + b`.
+    coeffs: Vec<[P; 4]>,
+}
+
+impl<P: ControlPoint> Spectrum2<P> {
+    /// The spectrum of the m×n grid `grid` (row-major, row j ↔ u, column k ↔ v).
+    pub(crate) fn from_grid(grid: &[P], m: usize, n: usize) -> Self {
+        // Along v: each row's cosine and sine coefficients.
+        let rows: Vec<Fourier<P>> = grid.chunks(n).map(Fourier::from_points).collect();
+        let (deg_u, deg_v) = (m / 2, n / 2);
+        let mut coeffs = vec![[P::ZERO; 4]; (deg_u + 1) * (deg_v + 1)];
+        for b in 0..=deg_v {
+            let cos_v: Vec<P> = rows.iter().map(|r| r.cos_coeffs()[b]).collect();
+            let sin_v: Vec<P> = rows.iter().map(|r| r.sin_coeffs()[b]).collect();
+            // Along u: the spectrum of each coefficient sequence.
+            let fc = Fourier::from_points(&cos_v);
+            let fs = Fourier::from_points(&sin_v);
+            for a in 0..=deg_u {
+                coeffs[a * (deg_v + 1) + b] = [
+                    fc.cos_coeffs()[a],
+                    fs.cos_coeffs()[a],
+                    fc.sin_coeffs()[a],
+                    fs.sin_coeffs()[a],
+                ];
+            }
+        }
+        Self { deg_u, deg_v, coeffs }
+    }
+
+    /// ∂^{p+q}/∂uᵖ∂v^q of the surface at (u, v), O(mn/4).
+    pub(crate) fn eval_deriv(&self, u: f64, v: f64, p: usize, q: usize) -> P {
+        let row_u = Fourier::<P>::trig_basis(self.deg_u, u, p);
+        let row_v = Fourier::<P>::trig_basis(self.deg_v, v, q);
+        let mut res = P::ZERO;
+        for (a, &(cu, su)) in row_u.iter().enumerate() {
+            if cu == 0.0 && su == 0.0 {
+                continue;
+            }
+            let coeffs = &self.coeffs[a * (self.deg_v + 1)..(a + 1) * (self.deg_v + 1)];
+            let mut with_cos = P::ZERO;
+            let mut with_sin = P::ZERO;
+            for (c, &(cv, sv)) in coeffs.iter().zip(&row_v) {
+                with_cos += c[0] * cv + c[1] * sv;
+                with_sin += c[2] * cv + c[3] * sv;
+            }
+            res += with_cos * cu + with_sin * su;
+        }
+        res
+    }
+
+    /// The degrees (⌊m/2⌋, ⌊n/2⌋).
+    pub(crate) fn degrees(&self) -> (usize, usize) {
+        (self.deg_u, self.deg_v)
+    }
+}

@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: MIT
+//! The harmonic tensor-product surface p(u, v) = Σⱼ Σₖ σᵐⱼ(u)·σⁿₖ(v)·xⱼₖ (Hardy 2005, §5.1).
+
+use hi_curve::{ControlPoint, Sigma};
+
+use crate::Error;
+use crate::spectrum::Spectrum2;
+
+/// A harmonic tensor-product surface over an m×n grid of points: smooth, 1-periodic in u and
+/// in v, and p(j/m, k/n) = xⱼₖ (Hardy 2005, §5.1; MATH.md §3).
+///
+/// Row j of the grid runs along v at u = j/m; column k runs along u at v = k/n. Points may be
+/// any [`ControlPoint`]; the differential geometry (normals, curvature) needs [`glam::DVec3`].
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_surface::HarmonicSurface;
+///
+/// let grid = vec![
+///     vec![DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.0, 1.0, 0.0), DVec3::new(0.0, 2.0, 1.0)],
+///     vec![DVec3::new(1.0, 0.0, 0.5), DVec3::new(1.0, 1.0, 0.0), DVec3::new(1.0, 2.0, 0.0)],
+/// ];
+/// let s = HarmonicSurface::try_new(grid.clone()).unwrap();
+/// assert_eq!((s.m(), s.n()), (2, 3));
+/// assert!((s.eval(0.5, 1.0 / 3.0) - grid[1][1]).length() < 1e-15); // interpolates
+/// assert!(HarmonicSurface::try_new(vec![vec![DVec3::ZERO], vec![]]).is_err()); // ragged
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct HarmonicSurface<P> {
+    // Invariant: m, n >= 1; grid.len() == m·n, row-major, all finite; spectrum is its spectrum.
+    m: usize,
+    n: usize,
+    grid: Vec<P>,
+    spectrum: Spectrum2<P>,
+}
+
+impl<P: ControlPoint> HarmonicSurface<P> {
+    /// The surface through the rows of `grid` (row j at u = j/m, point k of a row at v = k/n).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::EmptyGrid`], [`Error::RaggedGrid`] naming the first short or long row, and
+    /// [`Error::NonFinitePoint`] naming the first NaN or infinite point.
+    pub fn try_new(grid: Vec<Vec<P>>) -> Result<Self, Error> {
+        let m = grid.len();
+        let n = grid.first().map_or(0, Vec::len);
+        if m == 0 || n == 0 {
+            return Err(Error::EmptyGrid);
+        }
+        if let Some((row, r)) = grid.iter().enumerate().find(|(_, r)| r.len() != n) {
+            return Err(Error::RaggedGrid { row, len: r.len(), expected: n });
+        }
+        Self::try_from_flat(m, n, grid.into_iter().flatten().collect())
+    }
+
+    /// The surface through an m×n grid given row-major in one vector.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::EmptyGrid`] if m or n is 0, [`Error::InvalidCount`] if `points.len() != m·n`,
+    /// [`Error::NonFinitePoint`].
+    pub fn try_from_flat(m: usize, n: usize, points: Vec<P>) -> Result<Self, Error> {
+        if m == 0 || n == 0 {
+            return Err(Error::EmptyGrid);
+        }
+        if Some(points.len()) != m.checked_mul(n) {
+            return Err(Error::InvalidCount {
+                what: "number of grid points",
+                value: points.len(),
+                expected: "m·n",
+            });
+        }
+        if let Some(i) = points.iter().position(|p| !p.is_finite()) {
+            return Err(Error::NonFinitePoint { row: i / n, col: i % n });
+        }
+        let spectrum = Spectrum2::from_grid(&points, m, n);
+        Ok(Self { m, n, grid: points, spectrum })
+    }
+
+    /// The surface through `grid`.
+    ///
+    /// # Panics
+    ///
+    /// Panics on an empty, ragged or non-finite grid; see [`HarmonicSurface::try_new`].
+    #[must_use]
+    pub fn new(grid: Vec<Vec<P>>) -> Self {
+        Self::try_new(grid).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// Number of rows m (the u direction).
+    #[must_use]
+    pub fn m(&self) -> usize {
+        self.m
+    }
+
+    /// Number of columns n (the v direction).
+    #[must_use]
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// Grid point xⱼₖ (row j, column k).
+    ///
+    /// # Panics
+    ///
+    /// Panics if j ≥ m or k ≥ n.
+    #[must_use]
+    pub fn point(&self, j: usize, k: usize) -> P {
+        assert!(
+            j < self.m && k < self.n,
+            "grid index ({j}, {k}) out of range {}×{}",
+            self.m,
+            self.n
+        );
+        self.grid[j * self.n + k]
+    }
+
+    /// The grid, row-major (m rows of n points).
+    #[must_use]
+    pub fn points(&self) -> &[P] {
+        &self.grid
+    }
+
+    /// The grid as rows.
+    #[must_use]
+    pub fn rows(&self) -> Vec<Vec<P>> {
+        self.grid.chunks(self.n).map(<[P]>::to_vec).collect()
+    }
+
+    /// p(u, v) = Σⱼ σᵐⱼ(u)·(Σₖ σⁿₖ(v)·xⱼₖ), the thesis's direct sum: O(mn), exact at the
+    /// grid points up to rounding.
+    #[must_use]
+    pub fn eval(&self, u: f64, v: f64) -> P {
+        let su = Sigma::new(self.m).values(u);
+        let sv = Sigma::new(self.n).values(v);
+        let mut res = P::ZERO;
+        for (row, wu) in self.grid.chunks(self.n).zip(&su) {
+            let mut along_v = P::ZERO;
+            for (x, wv) in row.iter().zip(&sv) {
+                along_v += *x * *wv;
+            }
+            res += along_v * *wu;
+        }
+        res
+    }
+
+    /// The partial derivative ∂^{p+q}p/∂uᵖ∂v^q at (u, v), of any orders, from the 2-D spectrum
+    /// (O(mn/4)). `eval_deriv(u, v, 0, 0)` is p(u, v) by the spectral sum.
+    #[must_use]
+    pub fn eval_deriv(&self, u: f64, v: f64, p: usize, q: usize) -> P {
+        self.spectrum.eval_deriv(u, v, p, q)
+    }
+
+    /// The degrees (⌊m/2⌋, ⌊n/2⌋) of the surface as a trigonometric polynomial in u and v.
+    #[must_use]
+    pub fn degrees(&self) -> (usize, usize) {
+        self.spectrum.degrees()
+    }
+
+    /// The largest distance of a grid point from the centroid of the grid.
+    #[must_use]
+    pub fn radius(&self) -> f64 {
+        let centroid =
+            self.grid.iter().fold(P::ZERO, |a, p| a + *p) * (1.0 / self.grid.len() as f64);
+        self.grid.iter().map(|p| (*p - centroid).norm()).fold(0.0, f64::max)
+    }
+}
