@@ -17,7 +17,8 @@ use hi_surface::{
     TriangleMesh, export, sphere, torus,
 };
 
-const VALIDATOR_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../xtask/peers/gltf-validator");
+const VALIDATOR_DIR: &str =
+    concat!(env!("CARGO_MANIFEST_DIR"), "/../../xtask/peers/gltf-validator");
 
 /// A small deterministic generator (xorshift64*), uniform in [−1, 1).
 struct Rng(u64);
@@ -102,7 +103,8 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
 fn node_and_validator() -> Result<(), String> {
     if !Path::new(VALIDATOR_DIR).join("node_modules/gltf-validator").is_dir() {
         return Err(
-            "gltf-validator is not installed (run `npm install` in xtask/peers/gltf-validator)".into()
+            "gltf-validator is not installed (run `npm install` in xtask/peers/gltf-validator)"
+                .into(),
         );
     }
     match Command::new("node").arg("--version").output() {

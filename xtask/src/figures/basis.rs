@@ -9,7 +9,7 @@ use glam::DVec2;
 use hi_curve::Sigma;
 
 use super::plot::{INK, Marker, PALETTE, Pen, Plot, sample, sub};
-use super::{Figure, Panel};
+use super::{Figure, Format, Panel};
 
 /// Samples per curve over [0, 1]: several per pixel even for n = 16.
 const SAMPLES: usize = 800;
@@ -23,6 +23,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "The σ(t) function for n = 3",
         drawn: "σ³(t) = sin 3πt / (3 sin πt) over t ∈ [0, 1]; dots at the nodes t = j/3 where it is 1 or 0.",
         data: EXACT,
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 3) }],
     },
     Figure {
@@ -30,6 +31,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "The σₖ(t) basis functions for n = 3",
         drawn: "σ₀, σ₁, σ₂ for n = 3 over t ∈ [0, 1], each labelled at its peak; σₖ(j/3) = δⱼₖ.",
         data: EXACT,
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: |t| family(t, 3) }],
     },
     Figure {
@@ -37,6 +39,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "The σ(t) function for n = 4",
         drawn: "σ⁴(t) = cos πt · sin 4πt / (4 sin πt) over t ∈ [0, 1] (the even kernel).",
         data: EXACT,
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 4) }],
     },
     Figure {
@@ -44,6 +47,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "The σₖ(t) basis functions for n = 4",
         drawn: "σ₀, …, σ₃ for n = 4 over t ∈ [0, 1], each labelled at its peak.",
         data: EXACT,
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: |t| family(t, 4) }],
     },
     Figure {
@@ -51,6 +55,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "The σ(t) function for n = 7",
         drawn: "σ⁷(t) over t ∈ [0, 1].",
         data: EXACT,
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 7) }],
     },
     Figure {
@@ -58,6 +63,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "The σ(t) function for n = 16",
         drawn: "σ¹⁶(t) over t ∈ [0, 1].",
         data: EXACT,
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 16) }],
     },
 ];

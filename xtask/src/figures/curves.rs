@@ -8,7 +8,7 @@ use hi_curve::{HarmonicCurve, TrigonometricCurve};
 
 use super::data;
 use super::plot::{BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, sample};
-use super::{Figure, Panel};
+use super::{Figure, Format, Panel};
 
 /// Samples per closed curve.
 pub(crate) const SAMPLES: usize = 600;
@@ -24,6 +24,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "(a) Re of the §2.13 trigonometric interpolant (frequencies 0…3, `TrigonometricCurve`); \
                 (b) the harmonic curve, which for this square is exactly its circumcircle.",
         data: "stand-in: the square (the thesis's labels match it).",
+        format: Format::Svg,
         panels: &[
             Panel {
                 suffix: "a",
@@ -39,6 +40,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "Space curves through the 8 cube vertices p₀…p₇, (a) trigonometric (§2.13), (b) harmonic, \
                 in a fixed oblique projection (turned 30° about z, seen from 20° above) with the cube's edges faint.",
         data: "stand-in: the cube tour in Gray-code order 000, 100, 110, 010, 011, 111, 101, 001 (xyz).",
+        format: Format::Svg,
         panels: &[
             Panel {
                 suffix: "a",
@@ -54,6 +56,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "(a) the harmonic curve through four points; (b) x₃ moved 0.25 to the right: the new curve, \
                 with the curve of (a) dashed for comparison.",
         data: "stand-in: the irregular quadrilateral.",
+        format: Format::Svg,
         panels: &[
             Panel { suffix: "a", title: "(a) four points", draw: |t| stability(t, false) },
             Panel {

@@ -55,8 +55,44 @@ pub(crate) struct Figure {
     pub(crate) drawn: &'static str,
     /// The data: exact, or which stand-in and why.
     pub(crate) data: &'static str,
+    /// The kind of file every panel is.
+    pub(crate) format: Format,
     /// The files of the figure: one, or one per panel.
     pub(crate) panels: &'static [Panel],
+}
+
+/// The kind of file a figure is drawn into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Format {
+    /// A plot: SVG, shown inline on the index page.
+    Svg,
+    /// A 3-D model: binary glTF (`.glb`), linked from the index page (images of the models come
+    /// from the renderer).
+    #[expect(dead_code, reason = "the surface figures of chapter 5 are being added")]
+    Glb,
+}
+
+impl Format {
+    /// The file extension, without the dot.
+    pub(crate) const fn extension(self) -> &'static str {
+        match self {
+            Self::Svg => "svg",
+            Self::Glb => "glb",
+        }
+    }
+}
+
+/// A table of numbers written into the index page, after the figures.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Table {
+    /// The anchor of its section ("fairness"), unique.
+    pub(crate) anchor: &'static str,
+    /// Its heading ("Fairness of the polygon curves").
+    pub(crate) title: &'static str,
+    /// A paragraph on what is measured and how.
+    pub(crate) about: &'static str,
+    /// Computes it as a markdown table (one line per row).
+    pub(crate) make: fn() -> Result<String>,
 }
 
 /// One file of a figure.
@@ -78,7 +114,8 @@ impl Figure {
 
     /// The file name of `panel`: `fig-3-13a.svg`, numbers padded so that names sort.
     fn file(&self, panel: &Panel) -> String {
-        format!("fig-{}-{:02}{}.svg", self.number.0, self.number.1, panel.suffix)
+        let (chapter, number) = self.number;
+        format!("fig-{chapter}-{number:02}{}.{}", panel.suffix, self.format.extension())
     }
 
     /// The title drawn above `panel`.
@@ -97,6 +134,12 @@ fn registry() -> Vec<Figure> {
         [basis::FIGURES, curves::FIGURES, nonuniform::FIGURES, theorems::FIGURES].concat();
     all.sort_by_key(|f| f.number);
     all
+}
+
+/// Every table, in the order of the index page.
+fn tables() -> Vec<Table> {
+    let all: [&[Table]; 0] = [];
+    all.concat()
 }
 
 /// A generated file: its name inside [`OUT_DIR`] and its bytes.
@@ -125,13 +168,20 @@ fn generate(progress: bool) -> Result<Vec<Output>> {
             bar.inc(1);
         }
     }
+    let mut computed = Vec::new();
+    for table in tables() {
+        bar.set_message(format!("table {}", table.anchor));
+        let body = (table.make)().with_context(|| format!("computing table {}", table.anchor))?;
+        computed.push((table, body));
+    }
     bar.finish_and_clear();
-    outputs.push((INDEX.to_owned(), index(&figures).into_bytes()));
+    outputs.push((INDEX.to_owned(), index(&figures, &computed).into_bytes()));
     Ok(outputs)
 }
 
-/// The index page: every figure with its files, caption and notes, then the stand-in data.
-fn index(figures: &[Figure]) -> String {
+/// The index page: every figure with its files, caption and notes, the tables, then the
+/// stand-in data.
+fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# Figures of the thesis\n");
     let _ = writeln!(
@@ -174,7 +224,24 @@ fn index(figures: &[Figure]) -> String {
             if !p.title.is_empty() {
                 let _ = writeln!(s, "{}: `{file}`\n", p.title);
             }
-            let _ = writeln!(s, "![{}]({file})\n", f.title(p));
+            match f.format {
+                Format::Svg => {
+                    let _ = writeln!(s, "![{}]({file})\n", f.title(p));
+                }
+                Format::Glb => {
+                    let _ = writeln!(s, "{}: 3-D model [{file}]({file})\n", f.title(p));
+                }
+            }
+        }
+    }
+    if !tables.is_empty() {
+        let _ = writeln!(s, "## Tables\n");
+        for (t, body) in tables {
+            let _ = writeln!(
+                s,
+                "### {}\n\n<a id=\"{}\"></a>{}\n\n{}",
+                t.title, t.anchor, t.about, body
+            );
         }
     }
     let _ = writeln!(s, "## Stand-in data\n");
@@ -202,7 +269,7 @@ fn index(figures: &[Figure]) -> String {
 }
 
 /// The names of the files in `dir` that differ from `outputs`, are missing, or are figures
-/// (`fig-*.svg`) that nothing generates any more.
+/// (`fig-*`) that nothing generates any more.
 fn stale_files(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
     let mut stale = Vec::new();
     for (name, bytes) in outputs {
@@ -218,7 +285,7 @@ fn stale_files(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
     Ok(stale)
 }
 
-/// The `fig-*.svg` files in `dir` that are not among `outputs`, sorted.
+/// The `fig-*` files in `dir` that are not among `outputs`, sorted.
 fn orphans(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
     if !dir.exists() {
         return Ok(Vec::new());
@@ -226,10 +293,7 @@ fn orphans(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
     let mut found = Vec::new();
     for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
         let name = entry?.file_name().to_string_lossy().into_owned();
-        if name.starts_with("fig-")
-            && name.ends_with(".svg")
-            && !outputs.iter().any(|(n, _)| *n == name)
-        {
+        if name.starts_with("fig-") && !outputs.iter().any(|(n, _)| *n == name) {
             found.push(name);
         }
     }
@@ -304,6 +368,11 @@ mod tests {
         files.sort();
         files.dedup();
         assert_eq!(files.len(), count, "two panels share a file name");
+        let mut anchors: Vec<&str> = tables().iter().map(|t| t.anchor).collect();
+        let count = anchors.len();
+        anchors.sort_unstable();
+        anchors.dedup();
+        assert_eq!(anchors.len(), count, "two tables share an anchor");
         for f in &figures {
             assert!(!f.panels.is_empty(), "figure {} has no file", f.label());
             if f.panels.len() > 1 {

@@ -15,7 +15,7 @@ use hi_curve::{HarmonicCurve, NonUniformCurve, NonUniformVariant};
 use super::curves::{SAMPLES, closed, data_plot};
 use super::data;
 use super::plot::{BLUE, GREEN, GREY, Legend, Pen, VERMILION, sample};
-use super::{Figure, Panel};
+use super::{Figure, Format, Panel};
 
 /// Which curve through the points.
 #[derive(Clone, Copy, Debug)]
@@ -60,6 +60,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (vermilion, open, through xₖ at t = k/6), interpolation at the nodes tₖ (green, closed), and the \
                 uniform harmonic curve (grey, dashed) for comparison.",
         data: "stand-in: the heptagon.",
+        format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: overlay }],
     },
     Figure {
@@ -67,6 +68,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "A 7 sided polygon drawn by non-uniform and uniform harmonic interpolation",
         drawn: DRAWN,
         data: "stand-in: the heptagon.",
+        format: Format::Svg,
         panels: &[
             Panel {
                 suffix: "a-thesis",
@@ -90,6 +92,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "A 5 sided polygon drawn by non-uniform and uniform harmonic interpolation",
         drawn: DRAWN,
         data: "stand-in: the pentagon.",
+        format: Format::Svg,
         panels: &[
             Panel {
                 suffix: "a-thesis",
@@ -113,6 +116,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "An 8 sided polygon drawn by non-uniform and uniform harmonic interpolation",
         drawn: DRAWN,
         data: "stand-in: the octagon.",
+        format: Format::Svg,
         panels: &[
             Panel {
                 suffix: "a-thesis",

@@ -10,7 +10,7 @@ use hi_curve::HarmonicCurve;
 use super::curves::closed;
 use super::data;
 use super::plot::{BLUE, GREEN, GREY, INK, Legend, Marker, Pen, Plot, VERMILION, names, sub};
-use super::{Figure, Panel};
+use super::{Figure, Format, Panel};
 
 /// The parametric offset of figure 5.6(a): 0.4 of the node spacing 1/7.
 const OFFSET_7: f64 = 0.4 / 7.0;
@@ -23,6 +23,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The point sets P₀ (7 points), P₁ (14), P₂ (28), P₃ (56) of harmonic subdivision (`subdivision_stages`), \
                 each with its polygon, over the limit curve, which is the harmonic curve of P₀; the original points are labelled.",
         data: "stand-in: the heptagon.",
+        format: Format::Svg,
         panels: &[
             Panel { suffix: "a", title: "(a) P₀", draw: |t| subdivision(t, 0) },
             Panel { suffix: "b", title: "(b) P₁", draw: |t| subdivision(t, 1) },
@@ -38,6 +39,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (c) not in the thesis: for even n = 6 and o = 1/12, the curve through the Theorem 5.1 points is NOT the \
                 rotated curve (defect c·sin(πno)·sin(πnt)), while the exact `rotate` (7 points) is.",
         data: "stand-ins: the heptagon for (a), (b); the hexagon for (c).",
+        format: Format::Svg,
         panels: &[
             Panel { suffix: "a", title: "(a) Application of theorem 5.1", draw: rotation },
             Panel { suffix: "b", title: "(b) Application of theorem 5.3", draw: insertion },
