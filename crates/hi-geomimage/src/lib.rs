@@ -6,4 +6,8 @@
 //! into cubic Bézier patches, with smoothing and reduction that report their error. It builds on
 //! `hi-surface`.
 //!
-//! Nothing is implemented yet.
+//! | what | thesis | where |
+//! |---|---|---|
+//! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS | §5.8 | [`scan`] |
+
+pub mod scan;
