@@ -9,5 +9,13 @@
 //! | what | thesis | where |
 //! |---|---|---|
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS | §5.8 | [`scan`] |
+//! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
+//! | the spherical geometry image of algorithm 2, with star-shape and hole diagnostics | §5.3 | [`spherical`] |
 
+mod error;
+mod image;
 pub mod scan;
+pub mod spherical;
+
+pub use error::Error;
+pub use image::{GeometryImage, MAX_TEXELS};

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+//! The error type of `hi-geomimage`.
+
+use std::fmt;
+
+use crate::scan::ScanError;
+
+/// Everything that can be wrong with the input of a `hi-geomimage` function; `Display` gives
+/// one line naming the problem.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A scan could not be read.
+    Scan(ScanError),
+    /// Too few points to build anything.
+    TooFewPoints {
+        /// Points given (finite ones).
+        found: usize,
+        /// Points needed.
+        needed: usize,
+    },
+    /// A point, centre or other input has a NaN or infinite coordinate.
+    NonFinite {
+        /// What it is ("point 17", "centre").
+        what: String,
+    },
+    /// An image size is out of range.
+    InvalidResolution {
+        /// Rows (the u direction) asked for.
+        rows: usize,
+        /// Columns (the v direction) asked for.
+        cols: usize,
+        /// The accepted range, in words.
+        expected: &'static str,
+    },
+    /// An option is out of its range.
+    InvalidOption {
+        /// Which option.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The accepted range, in words.
+        expected: &'static str,
+    },
+    /// All points coincide with the centre, so they have no direction from it.
+    Degenerate {
+        /// What is degenerate, in words.
+        what: &'static str,
+    },
+    /// An error from the surface layer.
+    Surface(hi_surface::Error),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Scan(e) => write!(f, "{e}"),
+            Self::TooFewPoints { found, needed } => {
+                write!(f, "too few points: {found} given, at least {needed} needed")
+            }
+            Self::NonFinite { what } => write!(f, "{what} has a NaN or infinite coordinate"),
+            Self::InvalidResolution { rows, cols, expected } => {
+                write!(f, "image resolution {rows}x{cols} is out of range: {expected}")
+            }
+            Self::InvalidOption { name, value, expected } => {
+                write!(f, "option {name} = {value} is out of range: {expected}")
+            }
+            Self::Degenerate { what } => write!(f, "degenerate input: {what}"),
+            Self::Surface(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Scan(e) => Some(e),
+            Self::Surface(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<ScanError> for Error {
+    fn from(e: ScanError) -> Self {
+        Self::Scan(e)
+    }
+}
+
+impl From<hi_surface::Error> for Error {
+    fn from(e: hi_surface::Error) -> Self {
+        Self::Surface(e)
+    }
+}
