@@ -11,7 +11,9 @@
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS | §5.8 | [`scan`] |
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
 //! | the spherical geometry image of algorithm 2, with star-shape and hole diagnostics | §5.3 | [`spherical`] |
+//! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
 
+pub mod distance;
 mod error;
 mod image;
 pub mod scan;
