@@ -11,13 +11,21 @@
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS | §5.8 | [`scan`] |
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
 //! | the spherical geometry image of algorithm 2, with star-shape and hole diagnostics | §5.3 | [`spherical`] |
+//! | periodic smoothing (box, Gaussian), Theorem 5.3 resampling with the reduction error | §5.4 | [`Smoothing`], [`GeometryImage::smoothed`], [`GeometryImage::resampled`] |
+//! | the fitting pipeline, timed stage by stage, with diagnostics and errors | §5.3, §5.8, Table 5.1 | [`fit()`] |
+//! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
 //! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
 
 pub mod distance;
 mod error;
+mod filter;
+pub mod fit;
 mod image;
+pub mod sampling;
 pub mod scan;
 pub mod spherical;
 
 pub use error::Error;
+pub use filter::Smoothing;
+pub use fit::{Fit, FitOptions, FitReport, Parameterisation, Stage, fit};
 pub use image::{GeometryImage, MAX_TEXELS};

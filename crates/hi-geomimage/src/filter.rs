@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+//! Smoothing and resampling of geometry images (§5.4): periodic box and Gaussian filters, and
+//! Theorem 5.3 along both axes — exact insertion upwards, reduction downwards with its error.
+//!
+//! The filters wrap around both edges, as the image is periodic. Their kernels are symmetric,
+//! so they commute with the half-turn symmetry of a spherical image (texel (i, j) equals
+//! texel (rows − i, j + cols/2)) and keep it.
+
+use glam::DVec3;
+use hi_curve::ReductionError;
+use hi_surface::Axis;
+
+use crate::{Error, GeometryImage};
+
+/// A periodic smoothing filter for geometry images (§5.4: "a simple smoothing filter").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Smoothing {
+    /// The mean over a (2r + 1) × (2r + 1) box of texels.
+    Box {
+        /// The half-width r, in texels.
+        radius: usize,
+    },
+    /// A Gaussian of standard deviation σ texels, truncated at 3σ and normalised.
+    Gaussian {
+        /// σ, in texels.
+        sigma: f64,
+    },
+}
+
+impl Smoothing {
+    /// The 1-D kernel (weights summing to 1), centred.
+    fn kernel(self) -> Result<Vec<f64>, Error> {
+        match self {
+            Self::Box { radius } => {
+                if radius > 1 << 12 {
+                    return Err(Error::InvalidOption {
+                        name: "box radius",
+                        value: radius as f64,
+                        expected: "at most 4096 texels",
+                    });
+                }
+                Ok(vec![1.0 / (2 * radius + 1) as f64; 2 * radius + 1])
+            }
+            Self::Gaussian { sigma } => {
+                if !(sigma > 0.0 && sigma <= 1024.0) {
+                    return Err(Error::InvalidOption {
+                        name: "Gaussian sigma",
+                        value: sigma,
+                        expected: "0 < σ ≤ 1024 texels",
+                    });
+                }
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    reason = "0 < 3σ ≤ 3072"
+                )]
+                let r = (3.0 * sigma).ceil() as usize;
+                let w: Vec<f64> = (0..=2 * r)
+                    .map(|k| {
+                        let x = k as f64 - r as f64;
+                        (-0.5 * (x / sigma).powi(2)).exp()
+                    })
+                    .collect();
+                let total: f64 = w.iter().sum();
+                Ok(w.into_iter().map(|x| x / total).collect())
+            }
+        }
+    }
+}
+
+impl GeometryImage {
+    /// The image smoothed by `filter`, applied along rows and then columns, wrapping around.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidOption`] for a box radius over 4096 or σ outside (0, 1024].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_geomimage::{GeometryImage, Smoothing};
+    ///
+    /// // A flat image stays flat; the filters preserve constants.
+    /// let image = GeometryImage::try_new(4, 6, vec![DVec3::ONE; 24]).unwrap();
+    /// let smooth = image.smoothed(Smoothing::Gaussian { sigma: 1.5 }).unwrap();
+    /// assert!(smooth.texels().iter().all(|p| (*p - DVec3::ONE).length() < 1e-15));
+    /// ```
+    pub fn smoothed(&self, filter: Smoothing) -> Result<Self, Error> {
+        let kernel = filter.kernel()?;
+        let r = kernel.len() / 2;
+        let (rows, cols) = (self.rows(), self.cols());
+        let pass = |src: &[DVec3], along_rows: bool| -> Vec<DVec3> {
+            (0..rows * cols)
+                .map(|t| {
+                    let (i, j) = (t / cols, t % cols);
+                    kernel
+                        .iter()
+                        .enumerate()
+                        .map(|(k, w)| {
+                            let (a, b) = if along_rows {
+                                (i, (j + cols * (r / cols + 1) + k - r) % cols)
+                            } else {
+                                ((i + rows * (r / rows + 1) + k - r) % rows, j)
+                            };
+                            src[a * cols + b] * *w
+                        })
+                        .sum()
+                })
+                .collect()
+        };
+        let first = pass(self.texels(), true);
+        Self::try_new(rows, cols, pass(&first, false))
+    }
+
+    /// The image with `rows × cols` texels by Theorem 5.3 along both axes: texel (i, j) of the
+    /// result is the harmonic surface of this image at (i/rows, j/cols). Growing an axis is
+    /// exact (the surface does not change); shrinking one is a reduction (§5.4), whose error
+    /// is returned: the measured maximum deviation of the new surface from the old, and a
+    /// guaranteed bound (the sum of the two axes' bounds).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidResolution`] for a side under 2 or too many texels.
+    pub fn resampled(&self, rows: usize, cols: usize) -> Result<(Self, ReductionError), Error> {
+        crate::image::check_resolution(rows, cols)?;
+        let surface = self.surface()?;
+        let (after_u, eu) = surface.resample(Axis::U, rows)?;
+        let (after_v, ev) = after_u.resample(Axis::V, cols)?;
+        let image = Self::from_surface(&after_v)?;
+        let error = if rows >= self.rows() && cols >= self.cols() {
+            ReductionError { max_deviation: 0.0, upper_bound: 0.0 }
+        } else {
+            // Measure the deviation of the final surface from the original directly, on a grid
+            // four times finer than the larger of the two in each direction.
+            let (su, sv) = (4 * rows.max(self.rows()), 4 * cols.max(self.cols()));
+            let old = surface.sample_uniform(su, sv, 0, 0)?.values;
+            let new = after_v.sample_uniform(su, sv, 0, 0)?.values;
+            let measured = old.iter().zip(&new).map(|(a, b)| a.distance(*b)).fold(0.0, f64::max);
+            ReductionError {
+                max_deviation: measured,
+                upper_bound: (eu.upper_bound + ev.upper_bound).max(measured),
+            }
+        };
+        Ok((image, error))
+    }
+}
