@@ -11,24 +11,15 @@ use hi_surface::HarmonicSurface;
 
 use crate::distance::{Distances, Hausdorff, distances_to_surface, hausdorff};
 use crate::scan::Scan;
-use crate::spherical::{SphericalImage, SphericalOptions, spherical_image};
+use crate::spherical::{Layout, SphericalImage, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
-
-/// How the scan is mapped to the rectangle of the geometry image.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum Parameterisation {
-    /// Rays from a centre over a latitude–longitude grid that covers the sphere twice
-    /// (algorithm 2, [`crate::spherical`]).
-    #[default]
-    Sphere,
-}
 
 /// The settings of [`fit`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FitOptions {
-    /// The parameterisation of the geometry image.
-    pub parameterisation: Parameterisation,
+    /// The parameterisation of the geometry image: spherical (algorithm 2), octahedral or
+    /// flattened octahedral (§5.3).
+    pub layout: Layout,
     /// Geometry image rows (even). Default 128.
     pub rows: usize,
     /// Geometry image columns. Default 128.
@@ -52,7 +43,7 @@ pub struct FitOptions {
 impl Default for FitOptions {
     fn default() -> Self {
         Self {
-            parameterisation: Parameterisation::Sphere,
+            layout: Layout::Sphere,
             rows: 128,
             cols: 128,
             centre: None,
@@ -104,9 +95,9 @@ pub struct FitReport {
 /// A fitted surface with its geometry images and report.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Fit {
-    /// The harmonic surface; u ∈ [0, ½] covers the object once for the spherical image.
+    /// The harmonic surface; [`Layout::covering_window`] says which u cover the object once.
     pub surface: HarmonicSurface<DVec3>,
-    /// The raw spherical image with its diagnostic maps (before smoothing and reduction).
+    /// The raw ray-cast image with its diagnostic maps (before smoothing and reduction).
     pub spherical: SphericalImage,
     /// The geometry image the surface interpolates (after smoothing and reduction).
     pub image: GeometryImage,
@@ -144,17 +135,16 @@ pub fn fit(
     on_stage("geometry image");
     let start = Instant::now();
     let points = crate::sampling::densify(scan, options.densify);
-    let spherical = match options.parameterisation {
-        Parameterisation::Sphere => spherical_image(
-            &points,
-            &SphericalOptions {
-                rows: options.rows,
-                cols: options.cols,
-                centre: options.centre,
-                ..SphericalOptions::default()
-            },
-        )?,
-    };
+    let spherical = spherical_image(
+        &points,
+        &SphericalOptions {
+            layout: options.layout,
+            rows: options.rows,
+            cols: options.cols,
+            centre: options.centre,
+            ..SphericalOptions::default()
+        },
+    )?;
     timed("geometry image", &mut stages, start);
     let mut image = spherical.image.clone();
     if let Some(filter) = options.smoothing {

@@ -10,7 +10,7 @@
 //! |---|---|---|
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS | §5.8 | [`scan`] |
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
-//! | the spherical geometry image of algorithm 2, with star-shape and hole diagnostics | §5.3 | [`spherical`] |
+//! | ray-cast geometry images (algorithm 2): spherical, octahedral and flattened octahedral layouts, with star-shape and hole diagnostics | §5.3 | [`spherical`], [`Layout`] |
 //! | periodic smoothing (box, Gaussian), Theorem 5.3 resampling with the reduction error | §5.4 | [`Smoothing`], [`GeometryImage::smoothed`], [`GeometryImage::resampled`] |
 //! | the fitting pipeline, timed stage by stage, with diagnostics and errors | §5.3, §5.8, Table 5.1 | [`fit()`] |
 //! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
@@ -27,5 +27,6 @@ pub mod spherical;
 
 pub use error::Error;
 pub use filter::Smoothing;
-pub use fit::{Fit, FitOptions, FitReport, Parameterisation, Stage, fit};
+pub use fit::{Fit, FitOptions, FitReport, Stage, fit};
 pub use image::{GeometryImage, MAX_TEXELS};
+pub use spherical::Layout;

@@ -36,6 +36,8 @@ use crate::image::{GeometryImage, check_resolution};
 /// The settings of [`spherical_image`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SphericalOptions {
+    /// How texels map to ray directions. Default [`Layout::Sphere`].
+    pub layout: Layout,
     /// Rows of the image (samples of u over a full meridian circle); even, so that both poles
     /// are texels. Default 128.
     pub rows: usize,
@@ -58,6 +60,7 @@ pub struct SphericalOptions {
 impl Default for SphericalOptions {
     fn default() -> Self {
         Self {
+            layout: Layout::Sphere,
             rows: 128,
             cols: 128,
             centre: None,
@@ -104,6 +107,99 @@ pub fn ray_direction(i: usize, j: usize, rows: usize, cols: usize) -> DVec3 {
     DVec3::new(su * cv, su * sv, cu)
 }
 
+/// How the texels of a ray-cast geometry image map to directions from the centre.
+///
+/// All three make the image periodic in both directions, as harmonic interpolation needs:
+///
+/// | layout | texel (i, j) looks along | covers the sphere | seams |
+/// |---|---|---|---|
+/// | [`Layout::Sphere`] | d(i/rows, j/cols), latitude–longitude doubled over the poles | twice; u ∈ [0, ½] once | none; poles crowded |
+/// | [`Layout::Octahedron`] | the octahedral square of Praun and Hoppe (2003) at texel centres, wrapped around as it is | once | at the square's edges |
+/// | [`Layout::FlatOctahedron`] | the same square, extended across its edges by its own symmetry and sampled along its diagonals | twice; u ∈ [0, ½] once | none |
+///
+/// The plain octahedral image is what §5.3 (figures 5.18, 5.19) calls the octahedron
+/// geometry image: wrapping the square around joins texels that are far apart on the object,
+/// and smoothing or interpolation across that join leaves seams. The flattened octahedron
+/// (figure 5.20) avoids them: the square's map to the sphere is invariant under half-turns
+/// about the midpoints of its edges, so it extends to the whole plane with the periods
+/// (2, 2) and (2, −2); the image samples one such period along the diagonals,
+/// (s, t) = (a + b + ½, a − b + ½) for a = 2i/rows, b = 2j/cols, and neighbouring texels are
+/// neighbours on the object everywhere.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Layout {
+    /// Latitude–longitude rays over a doubled meridian (algorithm 2 as in the thesis).
+    #[default]
+    Sphere,
+    /// The octahedral square, wrapped as it is (seams at its edges).
+    Octahedron,
+    /// The octahedral square extended by its symmetry (seamless).
+    FlatOctahedron,
+}
+
+impl Layout {
+    /// The direction of texel (i, j) of a `rows × cols` image (a unit vector).
+    #[must_use]
+    pub fn direction(self, i: usize, j: usize, rows: usize, cols: usize) -> DVec3 {
+        let (i, j) = (i % rows, j % cols);
+        match self {
+            Self::Sphere => ray_direction(i, j, rows, cols),
+            Self::Octahedron => octahedral_direction(
+                -1.0 + (2 * i + 1) as f64 / rows as f64,
+                -1.0 + (2 * j + 1) as f64 / cols as f64,
+            ),
+            Self::FlatOctahedron => {
+                let (a, b) = (2.0 * i as f64 / rows as f64, 2.0 * j as f64 / cols as f64);
+                octahedral_direction(a + b + 0.5, a - b + 0.5)
+            }
+        }
+    }
+
+    /// The parameter window (u₀, u₁) over which the harmonic surface covers the object once
+    /// (v runs over [0, 1]).
+    #[must_use]
+    pub const fn covering_window(self) -> (f64, f64) {
+        match self {
+            Self::Sphere | Self::FlatOctahedron => (0.0, 0.5),
+            Self::Octahedron => (0.0, 1.0),
+        }
+    }
+
+    /// For the doubled layouts with an even number of rows and columns: the texel of the
+    /// first half of the rows (i ≤ rows/2) that looks along the same direction as texel
+    /// (i, j) — (rows − i, j + cols/2) on the sphere, (rows − i, cols/2 − j) on the flattened
+    /// octahedron. `None` for the plain octahedron or odd sizes.
+    fn mirror(self, rows: usize, cols: usize) -> Option<impl Fn(usize, usize) -> (usize, usize)> {
+        let doubled = matches!(self, Self::Sphere | Self::FlatOctahedron);
+        (doubled && rows.is_multiple_of(2) && cols.is_multiple_of(2)).then_some(
+            move |i: usize, j: usize| match self {
+                Self::FlatOctahedron => ((rows - i) % rows, (cols + cols / 2 - j % cols) % cols),
+                _ => ((rows - i) % rows, (j + cols / 2) % cols),
+            },
+        )
+    }
+}
+
+/// The unit direction of point (s, t) of the octahedral square [−1, 1]² (Praun and Hoppe
+/// 2003), extended to the whole plane by half-turns about the midpoints of the square's
+/// edges: the upper half of the octahedron |x| + |y| + |z| = 1 is the diamond |s| + |t| ≤ 1,
+/// the lower half the four corner triangles folded over its edges.
+#[must_use]
+pub fn octahedral_direction(s: f64, t: f64) -> DVec3 {
+    let wrap = |x: f64| (x + 1.0).rem_euclid(4.0) - 1.0;
+    let (mut s, mut t) = (wrap(s), wrap(t));
+    if s > 1.0 {
+        (s, t) = (2.0 - s, -t); // the half-turn about (1, 0)
+    }
+    t = wrap(t);
+    if t > 1.0 {
+        (s, t) = (-s, 2.0 - t); // the half-turn about (0, 1)
+    }
+    let z = 1.0 - s.abs() - t.abs();
+    let (x, y) =
+        if z >= 0.0 { (s, t) } else { ((1.0 - t.abs()).copysign(s), (1.0 - s.abs()).copysign(t)) };
+    DVec3::new(x, y, z).normalize()
+}
+
 /// What one ray found.
 #[derive(Clone, Copy, Debug)]
 enum Hit {
@@ -147,10 +243,18 @@ pub fn spherical_image(
     points: &[DVec3],
     options: &SphericalOptions,
 ) -> Result<SphericalImage, Error> {
-    let &SphericalOptions { rows, cols, centre, neighbours, min_neighbours, max_angle, shell_gap } =
-        options;
+    let &SphericalOptions {
+        layout,
+        rows,
+        cols,
+        centre,
+        neighbours,
+        min_neighbours,
+        max_angle,
+        shell_gap,
+    } = options;
     check_resolution(rows, cols)?;
-    if rows % 2 != 0 {
+    if rows % 2 != 0 && layout != Layout::Octahedron {
         return Err(Error::InvalidResolution {
             rows,
             cols,
@@ -237,24 +341,29 @@ pub fn spherical_image(
             angle = (angle * 1.5).min(max_angle);
         }
     };
-    // Rows 0..=rows/2 by casting; with an even number of columns the rest are copies.
-    let cast_rows = if cols % 2 == 0 { rows / 2 + 1 } else { rows };
+    // Half the rows by casting; with an even number of columns the rest are copies (the
+    // layout's half-turn symmetry). The plain octahedron has no such symmetry.
+    let mirror = layout.mirror(rows, cols);
+    let cast_rows = if mirror.is_some() { rows / 2 + 1 } else { rows };
     let mut hits: Vec<Hit> = (0..cast_rows * cols)
         .into_par_iter()
-        .map(|t| cast(ray_direction(t / cols, t % cols, rows, cols)))
+        .map(|t| cast(layout.direction(t / cols, t % cols, rows, cols)))
         .collect();
-    for i in cast_rows..rows {
-        for j in 0..cols {
-            hits.push(hits[(rows - i) * cols + (j + cols / 2) % cols]);
-        }
+    if let Some(mirror) = &mirror {
+        complete_by_symmetry(&mut hits, rows, cols, mirror);
     }
-    // Each direction once: rows 1..rows/2 (both poles count once, as one texel each).
-    let distinct: Vec<usize> = (0..cast_rows.min(rows / 2 + 1))
-        .flat_map(|i| {
-            let n = if i == 0 || i == rows / 2 { 1 } else { cols };
-            (0..n).map(move |j| i * cols + j)
-        })
-        .collect();
+    // Each direction once: the first half of the rows for the doubled layouts (the poles of
+    // the spherical layout once each), every texel for the plain octahedron.
+    let distinct: Vec<usize> = match layout {
+        Layout::Sphere => (0..=rows / 2)
+            .flat_map(|i| {
+                let n = if i == 0 || i == rows / 2 { 1 } else { cols };
+                (0..n).map(move |j| i * cols + j)
+            })
+            .collect(),
+        Layout::FlatOctahedron => (0..rows / 2 * cols).collect(),
+        Layout::Octahedron => (0..rows * cols).collect(),
+    };
     let count = |f: &dyn Fn(&Hit) -> bool| {
         distinct.iter().filter(|&&t| f(&hits[t])).count() as f64 / distinct.len() as f64
     };
@@ -272,12 +381,10 @@ pub fn spherical_image(
     fill_holes(&mut radii, rows, cols);
     let radii: Vec<f64> = radii.into_iter().map(|r| r.unwrap_or(radius_max)).collect();
     let mut texels: Vec<DVec3> = (0..cast_rows * cols)
-        .map(|t| centre + radii[t] * ray_direction(t / cols, t % cols, rows, cols))
+        .map(|t| centre + radii[t] * layout.direction(t / cols, t % cols, rows, cols))
         .collect();
-    for i in cast_rows..rows {
-        for j in 0..cols {
-            texels.push(texels[(rows - i) * cols + (j + cols / 2) % cols]);
-        }
+    if let Some(mirror) = &mirror {
+        complete_by_symmetry(&mut texels, rows, cols, mirror);
     }
     Ok(SphericalImage {
         image: GeometryImage::try_new(rows, cols, texels)?,
@@ -288,6 +395,31 @@ pub fn spherical_image(
         non_star_fraction,
         hole_fraction,
     })
+}
+
+/// Completes a doubled image from its first rows/2 + 1 rows: the rest are copies of their
+/// mirror texels, and within the two rows that map to themselves (0 and rows/2) the second
+/// texel of each mirrored pair is made a copy of the first, so the symmetry holds exactly.
+fn complete_by_symmetry<T: Copy>(
+    values: &mut Vec<T>,
+    rows: usize,
+    cols: usize,
+    mirror: &impl Fn(usize, usize) -> (usize, usize),
+) {
+    for i in [0, rows / 2] {
+        for j in 0..cols {
+            let (a, b) = mirror(i, j);
+            if a == i && b < j {
+                values[i * cols + j] = values[a * cols + b];
+            }
+        }
+    }
+    for i in rows / 2 + 1..rows {
+        for j in 0..cols {
+            let (a, b) = mirror(i, j);
+            values.push(values[a * cols + b]);
+        }
+    }
 }
 
 impl Hit {

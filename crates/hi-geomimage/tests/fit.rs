@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 use hi_geomimage::scan::{Scan, read_scan};
-use hi_geomimage::{FitOptions, GeometryImage, Smoothing, fit};
+use hi_geomimage::{FitOptions, GeometryImage, Layout, Smoothing, fit};
 
 fn fibonacci(n: usize) -> Vec<DVec3> {
     let golden = PI * (3.0 - 5f64.sqrt());

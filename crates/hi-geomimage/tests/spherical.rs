@@ -162,3 +162,91 @@ fn bad_input_is_named() {
         Err(Error::InvalidOption { name: "min_neighbours", .. })
     ));
 }
+
+mod octahedral {
+    use super::*;
+    use hi_geomimage::Smoothing;
+    use hi_geomimage::spherical::{Layout, octahedral_direction};
+
+    #[test]
+    fn the_square_maps_onto_the_octahedron() {
+        for k in 0..400 {
+            let (s, t) = ((k % 20) as f64 / 10.0 - 0.95, (k / 20) as f64 / 10.0 - 0.95);
+            let d = octahedral_direction(s, t);
+            let z = 1.0 - s.abs() - t.abs();
+            // The point of the octahedron |x| + |y| + |z| = 1 along d.
+            let o = d / (d.x.abs() + d.y.abs() + d.z.abs());
+            if z >= 0.0 {
+                assert!((o - DVec3::new(s, t, z)).length() < 1e-15, "({s}, {t})");
+            } else {
+                // Folded: the corner triangles are the lower half, mirrored over the edges.
+                assert!((o.z - z).abs() < 1e-15 && (o.x.abs() - (1.0 - t.abs())).abs() < 1e-15);
+                assert!((o.y.abs() - (1.0 - s.abs())).abs() < 1e-15, "({s}, {t})");
+            }
+            // The symmetries that make the flattened image periodic.
+            for other in
+                [(2.0 - s, -t), (-s, 2.0 - t), (s + 2.0, t + 2.0), (s + 2.0, t - 2.0), (s - 4.0, t)]
+            {
+                let e = octahedral_direction(other.0, other.1);
+                assert!((e - d).length() < 1e-14, "({s}, {t}) against {other:?}");
+            }
+        }
+    }
+
+    /// The largest angle between neighbouring texel directions, wrapping around.
+    fn largest_step(layout: Layout, rows: usize, cols: usize) -> f64 {
+        let mut worst = 0.0f64;
+        for i in 0..rows {
+            for j in 0..cols {
+                let d = layout.direction(i, j, rows, cols);
+                for (a, b) in [(i + 1, j), (i, j + 1)] {
+                    worst = worst.max(d.angle_between(layout.direction(a, b, rows, cols)));
+                }
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn the_flattened_octahedron_has_no_seams() {
+        // Neighbouring texels look along neighbouring directions everywhere for the flattened
+        // octahedron and the sphere; the plain octahedron jumps across the wrapped edges.
+        let (rows, cols) = (32, 32);
+        let flat = largest_step(Layout::FlatOctahedron, rows, cols);
+        let sphere = largest_step(Layout::Sphere, rows, cols);
+        let plain = largest_step(Layout::Octahedron, rows, cols);
+        assert!(flat < 0.3 && sphere < 0.3, "flat {flat}, sphere {sphere}");
+        assert!(plain > 2.0, "the plain octahedron's wrapped edges join far-apart texels: {plain}");
+    }
+
+    #[test]
+    fn octahedral_images_of_a_sphere() {
+        let points = fibonacci(20_000);
+        let mut shrink = Vec::new();
+        for layout in [Layout::Sphere, Layout::FlatOctahedron, Layout::Octahedron] {
+            let options = SphericalOptions { layout, centre: Some(DVec3::ZERO), ..options(32, 32) };
+            let result = spherical_image(&points, &options).unwrap();
+            assert!(result.radii.iter().all(|r| (r - 1.0).abs() < 1e-12), "{layout:?}");
+            assert_eq!((result.non_star_fraction, result.hole_fraction), (0.0, 0.0));
+            // Gaussian smoothing pulls a curved surface inwards a little (by about σ²h²κ/2
+            // for texel spacing h); across the seams of the plain octahedron it averages
+            // texels from opposite sides of the sphere.
+            let smooth = result.image.smoothed(Smoothing::Gaussian { sigma: 1.0 }).unwrap();
+            shrink
+                .push(smooth.texels().iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max));
+        }
+        let [sphere, flat, plain] = shrink[..] else { unreachable!() };
+        assert!(flat < 0.06 && sphere < 0.06, "sphere {sphere}, flat {flat}");
+        assert!(plain > 5.0 * flat, "plain {plain} against flat {flat}");
+        // The flattened octahedron's second half repeats the first, turned.
+        let flat = SphericalOptions { layout: Layout::FlatOctahedron, ..options(16, 12) };
+        let image = spherical_image(&points, &flat).unwrap().image;
+        for i in 1..16 {
+            for j in 0..12 {
+                let twin = image.get(16 - i, (12 + 6 - j) % 12);
+                assert_eq!(image.get(i, j), twin, "({i}, {j})");
+            }
+        }
+        assert_eq!(Layout::FlatOctahedron.covering_window(), (0.0, 0.5));
+    }
+}
