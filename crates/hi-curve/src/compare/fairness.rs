@@ -28,8 +28,9 @@ const GAUSS_8: [(f64, f64); 4] = [
 /// Relative accuracy the bending energy and the length aim for.
 const QUADRATURE_ACCURACY: f64 = 1e-12;
 
-/// Deepest bisection of one sample interval in the adaptive quadrature.
-const MAX_DEPTH: u32 = 40;
+/// Splits the adaptive quadrature may make, per sample interval: the budget that keeps it
+/// finite where κ² ds is not integrable (a cusp) or the error sits at rounding level.
+const SPLITS_PER_INTERVAL: usize = 16;
 
 /// Relative size of a change of κ, against max |κ|, below which [`fairness`] does not count a
 /// turning point of κ (see [`monotone_pieces`]).
@@ -68,6 +69,10 @@ pub struct Fairness {
     pub monotone_pieces: usize,
     /// The bending energy ∫ κ² ds over the curve (one period of a closed curve).
     pub bending_energy: f64,
+    /// The estimated absolute error of `bending_energy`. It is tiny for a smooth curve; a large
+    /// value (against the energy) means the quadrature ran out of its budget, as it does
+    /// near a cusp, where ∫ κ² ds diverges.
+    pub bending_energy_error: f64,
     /// The length ∫ ds.
     pub length: f64,
     /// The area of the convex hull of the curve over the area of the convex hull of the
@@ -154,10 +159,12 @@ pub fn space_curvature_plot<C: SpaceCurve + ?Sized>(
 ///   trapezoidal rule on the samples and on the samples with the midpoints added; if the two
 ///   agree to 10⁻¹² relative (a smooth periodic curve, where the rule converges
 ///   geometrically) that is the result. Otherwise (open curves, and curves whose curvature
-///   jumps at knots, such as piecewise cubic ones) adaptive 8-point Gauss–Legendre
-///   quadrature on every sample interval, to about 10⁻¹² relative. Singular points (X′ = 0)
-///   contribute nothing; near a cusp the true energy diverges (logarithmically) and the value
-///   is large and depends on the resolution.
+///   jumps at knots, such as piecewise cubic ones) globally adaptive 8-point Gauss–Legendre
+///   quadrature starting from the sample intervals: the interval with the largest error is
+///   halved until the errors sum to 10⁻¹² relative or 16 splits per sample interval are
+///   spent, so it always ends. Singular points (X′ = 0) contribute nothing; near a cusp the
+///   true energy diverges (logarithmically): the value is then large, depends on the
+///   resolution, and [`Fairness::bending_energy_error`] says so.
 /// - **Confinement**: area of the convex hull of the curve's samples over the area of the
 ///   convex hull of `points`. The sampled hull lies inside the true one, which makes the
 ///   ratio low by O(N⁻²) relative for a smooth curve ((2π/N)²/6 for a circle: 7·10⁻⁸ at
@@ -205,7 +212,7 @@ pub fn fairness<C: PlaneCurve + ?Sized>(
     let (max_curvature, max_curvature_at) = max_abs_curvature(curve, &plot);
     let kappas: Vec<f64> = plot.iter().filter_map(|s| s.curvature).collect();
     let monotone_pieces = monotone_pieces(&kappas, periodic, MONOTONE_TOLERANCE * max_curvature);
-    let (bending_energy, length) = energy_and_length(curve, &plot);
+    let ((bending_energy, length), bending_energy_error) = energy_and_length(curve, &plot);
 
     let curve_points: Vec<DVec2> = plot.iter().map(|s| curve.eval(s.t)).collect();
     let hull_of_points = convex_hull_area(points);
@@ -218,6 +225,7 @@ pub fn fairness<C: PlaneCurve + ?Sized>(
         max_curvature_at,
         monotone_pieces,
         bending_energy,
+        bending_energy_error,
         length,
         confinement,
     })
@@ -247,7 +255,7 @@ pub fn bending_energy<C: PlaneCurve + ?Sized>(
     samples: usize,
 ) -> Result<(f64, f64), Error> {
     let plot = curvature_plot(curve, samples)?;
-    Ok(energy_and_length(curve, &plot))
+    Ok(energy_and_length(curve, &plot).0)
 }
 
 /// The number of maximal monotone pieces of a sequence of values (samples of κ), robust to
@@ -398,8 +406,12 @@ fn integrands<C: PlaneCurve + ?Sized>(curve: &C, t: f64) -> (f64, f64) {
     }
 }
 
-/// ∫ κ² ds and ∫ ds over the sampled parameter range (see [`fairness`]).
-fn energy_and_length<C: PlaneCurve + ?Sized>(curve: &C, plot: &[CurvatureSample]) -> (f64, f64) {
+/// ∫ κ² ds and ∫ ds over the sampled parameter range (see [`fairness`]), and the estimated
+/// absolute error of the first.
+fn energy_and_length<C: PlaneCurve + ?Sized>(
+    curve: &C,
+    plot: &[CurvatureSample],
+) -> ((f64, f64), f64) {
     let n = plot.len();
     let periodic = curve.is_periodic();
     let mut samples = PairSum::default();
@@ -417,7 +429,7 @@ fn energy_and_length<C: PlaneCurve + ?Sized>(curve: &C, plot: &[CurvatureSample]
         let close =
             |x: f64, y: f64| (x - y).abs() <= QUADRATURE_ACCURACY * y.abs().max(f64::MIN_POSITIVE);
         if close(e1, e2) && close(l1, l2) {
-            return (e2, l2);
+            return ((e2, l2), (e1 - e2).abs());
         }
         (e2, l2)
     } else {
@@ -427,17 +439,14 @@ fn energy_and_length<C: PlaneCurve + ?Sized>(curve: &C, plot: &[CurvatureSample]
         samples.scaled(h)
     };
     let n_intervals = if periodic { n } else { n - 1 };
-    // Absolute tolerances per interval, from the coarse estimates.
-    let tol_e = QUADRATURE_ACCURACY * coarse.0.abs() / n_intervals as f64;
-    let tol_l = QUADRATURE_ACCURACY * coarse.1.abs() / n_intervals as f64;
     let f = |t: f64| integrands(curve, t);
-    let mut total = PairSum::default();
-    for j in 0..n_intervals {
-        let a = plot[j].t;
-        let b = if j + 1 < n { plot[j + 1].t } else { 1.0 };
-        total.add(adaptive_gauss(&f, a, b, tol_e, tol_l, MAX_DEPTH));
-    }
-    total.scaled(1.0)
+    let pieces = (0..n_intervals).map(|j| (plot[j].t, if j + 1 < n { plot[j + 1].t } else { 1.0 }));
+    // Relative tolerances, with a floor for a straight curve (zero energy), where only
+    // rounding noise is left: 10⁻¹² of the energy of a circle as long as the curve.
+    let floor = if coarse.1 > 0.0 { 1.0 / coarse.1 } else { 0.0 };
+    let tolerance =
+        (QUADRATURE_ACCURACY * coarse.0.abs().max(floor), QUADRATURE_ACCURACY * coarse.1.abs());
+    adaptive_gauss(&f, pieces, tolerance, SPLITS_PER_INTERVAL * n_intervals)
 }
 
 /// Compensated (Neumaier) sums of pairs, so that long sums keep full accuracy.
@@ -478,27 +487,105 @@ fn gauss(f: &impl Fn(f64) -> (f64, f64), a: f64, b: f64) -> (f64, f64) {
     (half * e, half * l)
 }
 
-fn adaptive_gauss(
-    f: &impl Fn(f64) -> (f64, f64),
+/// One interval of the globally adaptive quadrature: its bounds, its Gauss estimate from two
+/// halves, and the error estimate (difference from the whole-interval estimate).
+struct Piece {
     a: f64,
     b: f64,
-    tol_e: f64,
-    tol_l: f64,
-    depth: u32,
-) -> (f64, f64) {
-    let whole = gauss(f, a, b);
-    let mid = 0.5 * (a + b);
-    let (left, right) = (gauss(f, a, mid), gauss(f, mid, b));
-    let halves = (left.0 + right.0, left.1 + right.1);
-    if depth == 0 || ((whole.0 - halves.0).abs() <= tol_e && (whole.1 - halves.1).abs() <= tol_l) {
-        return halves;
-    }
-    let l = adaptive_gauss(f, a, mid, 0.5 * tol_e, 0.5 * tol_l, depth - 1);
-    let r = adaptive_gauss(f, mid, b, 0.5 * tol_e, 0.5 * tol_l, depth - 1);
-    (l.0 + r.0, l.1 + r.1)
+    value: (f64, f64),
+    error: (f64, f64),
 }
 
-/// The area of the convex hull of `points`; 0 for fewer than three points or collinear ones.
+impl Piece {
+    fn new(f: &impl Fn(f64) -> (f64, f64), a: f64, b: f64) -> Self {
+        let whole = gauss(f, a, b);
+        let mid = 0.5 * (a + b);
+        let (left, right) = (gauss(f, a, mid), gauss(f, mid, b));
+        let value = (left.0 + right.0, left.1 + right.1);
+        Self { a, b, value, error: ((whole.0 - value.0).abs(), (whole.1 - value.1).abs()) }
+    }
+
+    /// The error measured against the tolerances (the larger of the two ratios).
+    fn badness(&self, tolerance: (f64, f64)) -> f64 {
+        let ratio = |e: f64, t: f64| {
+            if t > 0.0 {
+                e / t
+            } else if e > 0.0 {
+                f64::MAX
+            } else {
+                0.0
+            }
+        };
+        ratio(self.error.0, tolerance.0).max(ratio(self.error.1, tolerance.1))
+    }
+}
+
+/// Globally adaptive Gauss–Kronrod-style quadrature of both integrands over `pieces`: the
+/// piece with the largest error is halved until the summed errors are within `tolerance` or
+/// `budget` splits are spent (always finite). Returns the two integrals and the estimated
+/// absolute error of the first.
+fn adaptive_gauss(
+    f: &impl Fn(f64) -> (f64, f64),
+    pieces: impl Iterator<Item = (f64, f64)>,
+    tolerance: (f64, f64),
+    budget: usize,
+) -> ((f64, f64), f64) {
+    let mut all: Vec<Piece> = pieces.map(|(a, b)| Piece::new(f, a, b)).collect();
+    let total_error = |all: &[Piece]| {
+        all.iter().fold((0.0, 0.0), |acc, p| (acc.0 + p.error.0, acc.1 + p.error.1))
+    };
+    // A max-heap of (badness, index); stale entries are skipped by comparing the stored value.
+    let mut heap: std::collections::BinaryHeap<(OrderedBadness, usize)> =
+        all.iter().enumerate().map(|(i, p)| (OrderedBadness(p.badness(tolerance)), i)).collect();
+    let (mut error_e, mut error_l) = total_error(&all);
+    for _ in 0..budget {
+        if error_e <= tolerance.0 && error_l <= tolerance.1 {
+            break;
+        }
+        let Some((OrderedBadness(bad), i)) = heap.pop() else { break };
+        if bad == 0.0 {
+            break;
+        }
+        let (a, b) = (all[i].a, all[i].b);
+        let mid = 0.5 * (a + b);
+        if !(a < mid && mid < b) {
+            continue; // cannot be split further in floating point
+        }
+        error_e -= all[i].error.0;
+        error_l -= all[i].error.1;
+        all[i] = Piece::new(f, a, mid);
+        all.push(Piece::new(f, mid, b));
+        for k in [i, all.len() - 1] {
+            error_e += all[k].error.0;
+            error_l += all[k].error.1;
+            heap.push((OrderedBadness(all[k].badness(tolerance)), k));
+        }
+    }
+    let mut total = PairSum::default();
+    for p in &all {
+        total.add(p.value);
+    }
+    (total.scaled(1.0), total_error(&all).0)
+}
+
+/// A badness that orders by `total_cmp`, for the heap.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct OrderedBadness(f64);
+
+impl Eq for OrderedBadness {}
+
+impl PartialOrd for OrderedBadness {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for OrderedBadness {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.total_cmp(&other.0)
+    }
+}
+
 fn convex_hull_area(points: &[DVec2]) -> f64 {
     polygon_area(&convex_hull_2d(points)).abs()
 }

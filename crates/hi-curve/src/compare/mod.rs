@@ -13,5 +13,8 @@ pub mod cardinal;
 pub mod corner_cutting;
 pub mod fairness;
 pub mod hobby;
+pub mod kind;
 pub mod lagrange;
 pub mod nurbs;
+
+pub use kind::{AnyCurve, CurveKind, KindError};
