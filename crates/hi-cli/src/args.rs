@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! Parsers for the values of command-line options: finite numbers, comma-separated lists,
-//! counts and derivative orders.
+//! counts, derivative orders, curve kinds, grid sizes and parameter windows.
+
+use hi_curve::compare::CurveKind;
 
 /// Highest derivative order `--derivatives` accepts. Above it every derivative of a
 /// non-constant basis function or curve has overflowed: its size grows like (2π)ᵖ ≥ 10⁸¹⁷.
@@ -87,6 +89,56 @@ pub(crate) fn parse_derivatives(s: &str) -> Result<usize, String> {
     }
 }
 
+/// Parses a curve kind (`--kind`), such as `bspline-periodic`.
+///
+/// # Errors
+///
+/// A message listing the valid names.
+pub(crate) fn parse_kind(s: &str) -> Result<CurveKind, String> {
+    s.trim().parse::<CurveKind>().map_err(|e| e.to_string())
+}
+
+/// A grid size or resolution `AxB`, such as `128x128`: two whole numbers ≥ 1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Size(pub(crate) usize, pub(crate) usize);
+
+/// Parses a size `AxB` (`--resolution`, `--samples`); `×` and `X` may stand for `x`.
+///
+/// # Errors
+///
+/// A message if `s` is not two whole numbers ≥ 1 joined by `x`.
+pub(crate) fn parse_size(s: &str) -> Result<Size, String> {
+    let trimmed = s.trim();
+    let parts: Vec<&str> = trimmed.split(['x', 'X', '×']).collect();
+    let [a, b] = parts[..] else {
+        return Err(format!("'{trimmed}' is not a size like 128x128"));
+    };
+    let count = |part: &str| {
+        parse_count(part).map_err(|e| format!("'{trimmed}' is not a size like 128x128: {e}"))
+    };
+    Ok(Size(count(a)?, count(b)?))
+}
+
+/// A parameter window u0 < u1, v0 < v1 (`--window`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Window(pub(crate) [f64; 4]);
+
+/// Parses a window `u0,u1,v0,v1` of finite numbers with u0 < u1 and v0 < v1.
+///
+/// # Errors
+///
+/// A message naming the problem.
+pub(crate) fn parse_window(s: &str) -> Result<Window, String> {
+    let FloatList(values) = parse_float_list(s)?;
+    let [u0, u1, v0, v1] = values[..] else {
+        return Err(format!("expected 4 numbers u0,u1,v0,v1, got {}", values.len()));
+    };
+    if u0 >= u1 || v0 >= v1 {
+        return Err(format!("need u0 < u1 and v0 < v1, got u in [{u0}, {u1}], v in [{v0}, {v1}]"));
+    }
+    Ok(Window([u0, u1, v0, v1]))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -111,5 +163,19 @@ mod tests {
         assert!(parse_count("-1").is_err(), "negative");
         assert_eq!(parse_derivatives("0"), Ok(0));
         assert!(parse_derivatives("1025").is_err(), "too many");
+    }
+
+    #[test]
+    fn kinds_sizes_and_windows() {
+        assert_eq!(parse_kind("tcb"), Ok(CurveKind::Tcb));
+        assert!(parse_kind("spline").unwrap_err().contains("bspline-open"), "lists the names");
+        assert_eq!(parse_size("128x64"), Ok(Size(128, 64)));
+        assert_eq!(parse_size("24×4"), Ok(Size(24, 4)));
+        assert!(parse_size("0x4").is_err(), "zero");
+        assert!(parse_size("12").is_err(), "one number");
+        assert!(parse_size("1x2x3").is_err(), "three numbers");
+        assert_eq!(parse_window("0,0.5,-1,1"), Ok(Window([0.0, 0.5, -1.0, 1.0])));
+        assert!(parse_window("0,1,0").is_err(), "three numbers");
+        assert!(parse_window("1,0,0,1").is_err(), "empty u window");
     }
 }

@@ -4,31 +4,39 @@
 use std::path::PathBuf;
 
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
+use hi_curve::compare::CurveKind;
 
 use crate::args::{
-    FloatList, parse_count, parse_derivatives, parse_finite, parse_float_list, parse_levels,
-    parse_whole,
+    FloatList, Size, Window, parse_count, parse_derivatives, parse_finite, parse_float_list,
+    parse_kind, parse_levels, parse_size, parse_whole, parse_window,
 };
 
 /// The input and output conventions, shown by `hi --help`.
 const MAIN_HELP: &str = "\
-Curve commands: hi curve eval|sample|rotate|resample|subdivide|nonuniform --input FILE ...
-  (see 'hi curve --help' and 'hi curve eval --help', for instance).
+Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivide|nonuniform
+  --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
+Surface commands: hi surface eval|mesh|example (see 'hi surface --help').
 
 Input (--input FILE, or --input - for stdin):
   {\"points\": [[x, y], ...]}   or the bare array   [[x, y], ...]
   Points are arrays of 1, 2 or 3 numbers, all of one dimension; a 1-D point may also be a
   bare number, so [0, 1, 0.5] is three 1-D points. With n points, the harmonic curve X(t)
-  passes through point k at t = k/n and is smooth and 1-periodic.
+  passes through point k at t = k/n and is smooth and 1-periodic. 'hi curve sample',
+  'fairness' and 'to-bezier' take --kind KIND to draw another curve through the points:
+  harmonic (the default), trig, lagrange, catmull-rom, bessel-overhauser, tcb,
+  bspline-periodic, bspline-open, hobby-closed, hobby-open, chaikin, four-point.
+  Surfaces: {\"grid\": [[[x, y, z], ...], ...]} or the bare array of rows: an m×n grid of
+  3-D points, row j at u = j/m, point k of a row at v = k/n.
 
 Output (stdout): one JSON object on one line, e.g. {\"X\": [[x, y], ...]}
   Points are arrays of coordinates ([x] for 1-D). Numbers are the shortest decimals that read
   back to the same double. A non-finite result (an overflowing high derivative) is printed as
   the string \"Infinity\", \"-Infinity\" or \"NaN\"; null means undefined (the curvature or
-  torsion at a singular point). --pretty indents the output.
+  torsion at a singular point, the normal at a pole). --pretty indents the output.
 
-Exit status: 0 on success; 2 on bad input or a bad command line, with one line \"hi: ...\" on
-stderr; 1 if the output could not be written (silently if the reader closed the pipe).";
+Exit status: 0 on success; 2 on bad input, a bad command line or an output file that cannot
+be written (-o), with one line \"hi: ...\" on stderr; 1 if stdout could not be written
+(silently if the reader closed the pipe).";
 
 /// The output of `hi basis`.
 const BASIS_HELP: &str = "\
@@ -61,8 +69,50 @@ Example: echo '[[1,0],[0,1],[-1,0],[0,-1]]' | hi curve eval --input - --t 0.125"
 /// The output of `hi curve sample`.
 const SAMPLE_HELP: &str = curve_help!(
     "\
-Output: {\"X\": [[x, y], ...]} with the N points X(0), X(1/N), ..., X((N-1)/N).
-Example: hi curve sample --input square.json --count 8"
+Output: {\"X\": [[x, y], ...]} with the N points X(0), X(1/N), ..., X((N-1)/N) of a closed
+  curve (the harmonic one by FFT), or X(0), X(1/(N-1)), ..., X(1) of an open one (lagrange,
+  bspline-open, hobby-open).
+Kinds (--kind): every kind takes nothing but the points. Closed, point k at t = k/n: harmonic,
+  trig, catmull-rom, tcb (tension = continuity = bias = 0, so the Catmull-Rom spline),
+  bspline-periodic (uniform), hobby-closed (tension 1), four-point (w = 1/16); closed with
+  chord-length parameters: bessel-overhauser; closed, approximating: chaikin (the exact limit,
+  a quadratic B-spline; (x0 + x1)/2 at t = 0). Open, point k at t = k/(n-1): lagrange,
+  bspline-open (natural ends, X'' = 0, rather than the thesis's coincident end control points,
+  with which the curve stops at its ends and its bending energy is infinite), hobby-open
+  (curl 1 at both ends). Hobby curves need 2-D points. four-point is the polygon after
+  four steps of the scheme (16 points per point, all on the limit), joined by the periodic
+  cubic spline through them.
+Example: hi curve sample --input square.json --count 8 --kind hobby-closed"
+);
+
+/// The output of `hi curve fairness`.
+const FAIRNESS_HELP: &str = curve_help!(
+    "\
+  Fairness needs 2-D points (the curvature is signed).
+Output: {\"max_curvature\": k, \"max_curvature_at\": t, \"monotone_pieces\": p,
+  \"bending_energy\": e, \"bending_energy_error\": d, \"length\": l, \"confinement\": c}
+  max_curvature: the largest |κ| and a parameter t where it is reached. monotone_pieces: the
+  number of pieces on which κ is monotone (1 for a circle; for a closed curve, the number of
+  extrema of κ). bending_energy: ∫ κ² ds over the curve; bending_energy_error: the
+  quadrature's estimated error (large near a cusp). length: ∫ ds. confinement: the area
+  of the convex hull of the curve over that of the points (null for collinear points): above 1
+  where the curve bulges out of its polygon (§2.4, §3.8).
+  The measures come from --samples parameters (closed: t = j/N; open: t = j/(N-1)).
+Kinds: see 'hi curve sample --help'.
+Example: hi curve fairness --input pentagon.json --kind bspline-periodic"
+);
+
+/// The output of `hi curve to-bezier`.
+const TO_BEZIER_HELP: &str = curve_help!(
+    "\
+Output: {\"segments\": [[p0, p1, p2, p3], ...]}: the curve as Bézier segments, segment i for
+  t in [i/s, (i+1)/s] of s segments. Cubic for catmull-rom, tcb, bessel-overhauser,
+  bspline-periodic, bspline-open, hobby-closed and hobby-open (for Hobby: knot, postcontrol,
+  precontrol, next knot, the numbers METAPOST reports); quadratic ([p0, p1, p2]) for chaikin;
+  one segment of degree n-1 (n control points) for lagrange. bessel-overhauser's segments are
+  its chord-length pieces, each on its own parameter. harmonic, trig and four-point are not
+  piecewise polynomial and have no Bézier form.
+Example: hi curve to-bezier --input pentagon.json --kind hobby-closed"
 );
 
 /// The output of `hi curve rotate`.
@@ -128,6 +178,9 @@ pub(crate) enum Command {
     /// The harmonic curve through points read from a JSON file.
     #[command(subcommand, after_help = MAIN_HELP, arg_required_else_help = false)]
     Curve(CurveCommand),
+    /// The harmonic surface through a grid of points: evaluation, meshes, examples.
+    #[command(subcommand, after_help = SURFACE_HELP, arg_required_else_help = false)]
+    Surface(SurfaceCommand),
 }
 
 /// The subcommands of `hi curve`.
@@ -136,9 +189,15 @@ pub(crate) enum CurveCommand {
     /// The curve, its derivatives, curvature and torsion at parameters t.
     #[command(after_help = EVAL_HELP)]
     Eval(EvalArgs),
-    /// N uniform samples X(l/N), by FFT.
+    /// N uniform samples of the curve of a kind (harmonic by default, X(l/N) by FFT).
     #[command(after_help = SAMPLE_HELP)]
     Sample(SampleArgs),
+    /// Fairness of a plane curve: max |κ|, monotone pieces of κ, ∫κ² ds, confinement.
+    #[command(after_help = FAIRNESS_HELP)]
+    Fairness(FairnessArgs),
+    /// The piecewise Bézier form of a piecewise polynomial curve.
+    #[command(name = "to-bezier", after_help = TO_BEZIER_HELP)]
+    ToBezier(ToBezierArgs),
     /// Points of the curve rotated by an offset in t (Theorem 5.1, or exact).
     #[command(after_help = ROTATE_HELP)]
     Rotate(RotateArgs),
@@ -201,6 +260,34 @@ pub(crate) struct SampleArgs {
     /// Number of samples N (1 ≤ N ≤ 2^28).
     #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_count)]
     pub(crate) count: usize,
+    /// Which curve through the points (see below).
+    #[arg(long, value_name = "KIND", default_value = "harmonic", value_parser = parse_kind)]
+    pub(crate) kind: CurveKind,
+}
+
+/// Options of `hi curve fairness`.
+#[derive(Debug, Args)]
+pub(crate) struct FairnessArgs {
+    /// Where the points come from.
+    #[command(flatten)]
+    pub(crate) input: InputArg,
+    /// Which curve through the points (see 'hi curve sample --help').
+    #[arg(long, value_name = "KIND", default_value = "harmonic", value_parser = parse_kind)]
+    pub(crate) kind: CurveKind,
+    /// Number of parameters the measures are computed from (3 ≤ N ≤ 2^28).
+    #[arg(long, value_name = "N", default_value = "4096", allow_negative_numbers = true, value_parser = parse_count)]
+    pub(crate) samples: usize,
+}
+
+/// Options of `hi curve to-bezier`.
+#[derive(Debug, Args)]
+pub(crate) struct ToBezierArgs {
+    /// Where the points come from.
+    #[command(flatten)]
+    pub(crate) input: InputArg,
+    /// Which curve through the points (see 'hi curve sample --help').
+    #[arg(long, value_name = "KIND", value_parser = parse_kind)]
+    pub(crate) kind: CurveKind,
 }
 
 /// Options of `hi curve rotate`.
@@ -254,6 +341,144 @@ pub(crate) struct NonUniformArgs {
     /// The parameter of each point, distinct, in [0, 1), comma-separated [default: closed chord length].
     #[arg(long, value_name = "P0,P1,...", allow_hyphen_values = true, value_parser = parse_float_list)]
     pub(crate) params: Option<FloatList>,
+}
+
+/// The input shape of the surface commands, shown by `hi surface --help`.
+const SURFACE_HELP: &str = "\
+Input (--input FILE, or --input - for stdin): {\"grid\": [[[x, y, z], ...], ...]} or the bare
+  array of rows: an m×n grid of 3-D points (m, n ≥ 1, every row of the same length), row j at
+  u = j/m, point k of a row at v = k/n. The harmonic surface p(u, v) through it is smooth and
+  1-periodic in u and v (§5.1). 'hi surface example' writes such files.";
+
+/// Prefixes a surface subcommand's help text with the input shape.
+macro_rules! surface_help {
+    ($text:literal) => {
+        concat!(
+            "Input: {\"grid\": [[[x, y, z], ...], ...]} or the bare array of rows: an m×n grid of\n",
+            "  3-D points, row j at u = j/m; --input - reads stdin. See 'hi surface --help'.\n",
+            $text
+        )
+    };
+}
+
+/// The output of `hi surface eval`.
+const SURFACE_EVAL_HELP: &str = surface_help!(
+    "\
+Output: {\"p\": [[x, y, z], ...], \"pu\": [...], \"pv\": [...], \"puu\": [...], \"puv\": [...],
+  \"pvv\": [...], \"normal\": [...], \"gaussian\": [...], \"mean\": [...]}, one entry per (u, v)
+  pair: the point, its first and second partial derivatives, the unit normal pu × pv/|pu × pv|,
+  the Gaussian curvature K and the mean curvature H = (κ1 + κ2)/2 (the thesis calls κ1 + κ2 = 2H
+  the mean curvature). Signs follow that normal: on the sphere of 'hi surface example sphere'
+  it points outward and H = -1/r. normal, gaussian and mean are null where pu × pv = 0 (a pole).
+Example: hi surface example sphere | hi surface eval --input - --u 0.1,0.2 --v 0,0.5"
+);
+
+/// The output of `hi surface mesh`.
+const SURFACE_MESH_HELP: &str = surface_help!(
+    "\
+Writes a triangle mesh of the surface over the window to OUT, in the format its extension
+  names: .obj (Wavefront OBJ), .gltf (glTF 2.0 JSON, with its buffer in OUT.bin beside it) or
+  .glb (binary glTF 2.0); with positions, normals, UVs and, with --color, vertex colours of K
+  or H (blue: none, purple: high |K| or |H|). The grid of samples is (U+1)×(V+1) for
+  --resolution UxV; a direction whose window is a whole period is closed (its last row is its
+  first, not repeated), and the points of a pole are welded into one vertex.
+Output: {\"files\": [...], \"vertices\": V, \"triangles\": T} and, with --color,
+  \"legend\": {\"quantity\": \"K\" or \"H\", \"min\": a, \"max\": b}, the values at the two ends of
+  the colour ramp.
+Example: hi surface mesh --input torus.json --resolution 64x32 --color gaussian -o torus.glb"
+);
+
+/// The output of `hi surface example`.
+const SURFACE_EXAMPLE_HELP: &str = "\
+Output: the grid file {\"grid\": [[[x, y, z], ...], ...]} of a surface, on stdout or in FILE.
+  sphere: the exact unit sphere from a 4×4 grid (MATH.md §3); u ∈ [0, 1/2] covers it once, the
+    poles are at u = 0 and 1/2, and pu × pv points outward.
+  torus: the exact torus with radii R = 2 and r = 1 from a 4×4 grid.
+  With --samples MxN they are sampled at (j/M, k/N) instead: the same surface when M, N ≥ 4.
+  The surfaces of §5.9, sampled f(j/M, k/N) at the thesis's 24×4 (48×4 for solomon-fine)
+  unless --samples is given: plane, partial-sphere, mobius, revolution, shell, shell2, klein,
+  overhand, solomon, solomon-fine, revolution-periodic, and by their figure numbers 5.31 to
+  5.43 (5.33 and 5.34 are §5.9's own torus and sphere definitions).
+  With -o FILE, stdout gets {\"files\": [FILE], \"m\": M, \"n\": N}.
+Example: hi surface example torus --samples 8x8 -o torus.json";
+
+/// The subcommands of `hi surface`.
+#[derive(Debug, Subcommand)]
+pub(crate) enum SurfaceCommand {
+    /// The surface, its partial derivatives, normal, K and H at (u, v) pairs.
+    #[command(after_help = SURFACE_EVAL_HELP)]
+    Eval(SurfaceEvalArgs),
+    /// A triangle mesh of the surface in an OBJ, glTF or GLB file.
+    #[command(after_help = SURFACE_MESH_HELP)]
+    Mesh(SurfaceMeshArgs),
+    /// The grid file of an example surface: sphere, torus or a surface of §5.9.
+    #[command(after_help = SURFACE_EXAMPLE_HELP)]
+    Example(SurfaceExampleArgs),
+}
+
+/// The grid file option shared by the surface subcommands.
+#[derive(Debug, Args)]
+pub(crate) struct GridArg {
+    /// JSON file with the grid ("-" reads stdin); see 'hi surface --help' for its shape.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) input: PathBuf,
+}
+
+/// Options of `hi surface eval`.
+#[derive(Debug, Args)]
+pub(crate) struct SurfaceEvalArgs {
+    /// Where the grid comes from.
+    #[command(flatten)]
+    pub(crate) input: GridArg,
+    /// Parameters u, comma-separated, one per v.
+    #[arg(long, value_name = "U1,U2,...", allow_hyphen_values = true, value_parser = parse_float_list)]
+    pub(crate) u: FloatList,
+    /// Parameters v, comma-separated, one per u.
+    #[arg(long, value_name = "V1,V2,...", allow_hyphen_values = true, value_parser = parse_float_list)]
+    pub(crate) v: FloatList,
+}
+
+/// Options of `hi surface mesh`.
+#[derive(Debug, Args)]
+pub(crate) struct SurfaceMeshArgs {
+    /// Where the grid comes from.
+    #[command(flatten)]
+    pub(crate) input: GridArg,
+    /// Quads along u and v, as U×V such as 128x128 (at least 3 along a direction whose window is a period).
+    #[arg(long, value_name = "UxV", default_value = "64x64", value_parser = parse_size)]
+    pub(crate) resolution: Size,
+    /// The parameter window u0,u1,v0,v1 (u0 < u1, v0 < v1).
+    #[arg(long, value_name = "U0,U1,V0,V1", default_value = "0,1,0,1", allow_hyphen_values = true, value_parser = parse_window)]
+    pub(crate) window: Window,
+    /// Colour the vertices by this curvature.
+    #[arg(long, value_enum, value_name = "CURVATURE")]
+    pub(crate) color: Option<ColorBy>,
+    /// The mesh file to write: .obj, .gltf (+ .bin) or .glb.
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub(crate) output: PathBuf,
+}
+
+/// Options of `hi surface example`.
+#[derive(Debug, Args)]
+pub(crate) struct SurfaceExampleArgs {
+    /// sphere, torus, or a surface of §5.9 by name or figure number (see below).
+    #[arg(value_name = "NAME")]
+    pub(crate) name: String,
+    /// Sample the surface at M×N points instead, such as 24x4 (see below).
+    #[arg(long, value_name = "MxN", value_parser = parse_size)]
+    pub(crate) samples: Option<Size>,
+    /// Write the grid to FILE instead of stdout.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub(crate) output: Option<PathBuf>,
+}
+
+/// The curvature that colours a mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum ColorBy {
+    /// Gaussian curvature K.
+    Gaussian,
+    /// Mean curvature H.
+    Mean,
 }
 
 /// The subcommand path that a command line names, such as `hi curve eval`: where to point

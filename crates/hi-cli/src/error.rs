@@ -50,6 +50,12 @@ impl From<hi_curve::Error> for Failure {
     }
 }
 
+impl From<hi_surface::Error> for Failure {
+    fn from(e: hi_surface::Error) -> Self {
+        Failure::Input(e.to_string())
+    }
+}
+
 /// Prefixes a library error with the argument or file it came from: `"--count: …"`.
 pub(crate) fn context(what: &str) -> impl FnOnce(hi_curve::Error) -> Failure + '_ {
     move |e| Failure::Input(format!("{what}: {e}"))

@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: MIT
-//! Reading the points of a curve from a JSON file or stdin.
+//! Reading the points of a curve, or the grid of a surface, from a JSON file or stdin.
 //!
-//! Accepted shapes: `{"points": [...]}` or the bare array `[...]`, whose items are all
-//! points of one dimension: arrays of 1, 2 or 3 numbers. A 1-D point may also be a bare
-//! number, so `[1, 2, 3]` and `[[1], [2], [3]]` are the same three points.
+//! Curves: `{"points": [...]}` or the bare array `[...]`, whose items are all points of one
+//! dimension: arrays of 1, 2 or 3 numbers. A 1-D point may also be a bare number, so
+//! `[1, 2, 3]` and `[[1], [2], [3]]` are the same three points.
+//!
+//! Surfaces: `{"grid": [[[x, y, z], ...], ...]}` or the bare array of rows, each row an array
+//! of 3-D points, all rows of one length.
 
 use std::io::Read;
 use std::path::Path;
 
 use glam::{DVec2, DVec3};
+use hi_surface::HarmonicSurface;
 use serde_json::Value;
 
 use crate::error::Failure;
@@ -34,20 +38,96 @@ pub(crate) enum Points {
 /// [`Failure::Input`] naming the file and the problem: unreadable file, malformed JSON, wrong
 /// shape, mixed dimensions, no points.
 pub(crate) fn read_points(path: &Path) -> Result<Points, Failure> {
-    let (name, text) = if path.as_os_str() == "-" {
+    let (name, text) = read_text(path)?;
+    parse_points(&text).map_err(|message| Failure::input(format!("{name}: {message}")))
+}
+
+/// Reads the grid of the file at `path` (or stdin for `-`) and builds its harmonic surface.
+///
+/// # Errors
+///
+/// [`Failure::Input`] naming the file and the problem: unreadable file, malformed JSON, wrong
+/// shape, points that are not 3-D, a ragged or empty grid, a non-finite coordinate.
+pub(crate) fn read_surface(path: &Path) -> Result<HarmonicSurface<DVec3>, Failure> {
+    let (name, text) = read_text(path)?;
+    let grid = parse_grid(&text).map_err(|message| Failure::input(format!("{name}: {message}")))?;
+    HarmonicSurface::try_new(grid).map_err(|e| Failure::input(format!("{name}: {e}")))
+}
+
+/// The name of the input for messages and its text.
+fn read_text(path: &Path) -> Result<(String, String), Failure> {
+    if path.as_os_str() == "-" {
         let mut text = String::new();
         std::io::stdin()
             .read_to_string(&mut text)
             .map_err(|e| Failure::input(format!("{STDIN_NAME}: cannot read: {e}")))?;
-        (STDIN_NAME.to_owned(), text)
+        Ok((STDIN_NAME.to_owned(), text))
     } else {
         let name = path.display().to_string();
         match std::fs::read_to_string(path) {
-            Ok(text) => (name, text),
-            Err(e) => return Err(Failure::input(format!("{name}: cannot read: {e}"))),
+            Ok(text) => Ok((name, text)),
+            Err(e) => Err(Failure::input(format!("{name}: cannot read: {e}"))),
+        }
+    }
+}
+
+/// Parses the JSON text of a surface grid into rows of 3-D points (their lengths unchecked:
+/// [`HarmonicSurface::try_new`] names a ragged row).
+///
+/// # Errors
+///
+/// A message naming the problem (without the file name).
+pub(crate) fn parse_grid(text: &str) -> Result<Vec<Vec<DVec3>>, String> {
+    let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e))?;
+    let rows = match value {
+        Value::Array(rows) => rows,
+        Value::Object(mut map) => {
+            if let Some(key) = map.keys().find(|k| *k != "grid") {
+                return Err(format!(
+                    "unknown key \"{key}\": the object must have the key \"grid\" only"
+                ));
+            }
+            match map.remove("grid") {
+                Some(Value::Array(rows)) => rows,
+                Some(other) => {
+                    return Err(format!(
+                        "\"grid\" must be an array of rows, found {}",
+                        kind(&other)
+                    ));
+                }
+                None => return Err("the object has no key \"grid\"".to_owned()),
+            }
+        }
+        other => {
+            return Err(format!(
+                "expected an array of rows of points or an object {{\"grid\": [...]}}, found {}",
+                kind(&other)
+            ));
         }
     };
-    parse_points(&text).map_err(|message| Failure::input(format!("{name}: {message}")))
+    rows.iter()
+        .enumerate()
+        .map(|(j, row)| {
+            let Value::Array(points) = row else {
+                return Err(format!("row {j} must be an array of points, found {}", kind(row)));
+            };
+            points
+                .iter()
+                .enumerate()
+                .map(|(k, point)| {
+                    let c = coordinates(k, point).map_err(|e| format!("row {j}: {e}"))?;
+                    if c.len() == 3 {
+                        Ok(DVec3::new(c[0], c[1], c[2]))
+                    } else {
+                        Err(format!(
+                            "row {j}, point {k} has {} coordinates: surface points must have 3",
+                            c.len()
+                        ))
+                    }
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// Parses the JSON text of a point list.
@@ -185,5 +265,21 @@ mod tests {
         assert!(err(r#"{"pts": []}"#).contains("unknown key \"pts\""), "unknown key");
         assert!(err(r#"[["a"]]"#).contains("a string"), "string coordinate");
         assert!(err("7").contains("found a number"), "scalar");
+    }
+
+    #[test]
+    fn grids() {
+        let grid = parse_grid(r#"{"grid": [[[1, 2, 3], [4, 5, 6]]]}"#).unwrap();
+        assert_eq!(grid, vec![vec![DVec3::new(1.0, 2.0, 3.0), DVec3::new(4.0, 5.0, 6.0)]]);
+        assert_eq!(parse_grid("[[[0,0,0]]]").unwrap().len(), 1);
+        let err = |text: &str| parse_grid(text).unwrap_err();
+        assert_eq!(
+            err("[[[0,0,0],[1,2]]]"),
+            "row 0, point 1 has 2 coordinates: surface points must have 3"
+        );
+        assert!(err("[[1,2,3]]").contains("row 0, point 0"), "rows of points");
+        assert!(err("[[[0,0,0]], 1]").contains("row 1 must be an array"), "a number as a row");
+        assert!(err(r#"{"points": []}"#).contains("unknown key"), "wrong key");
+        assert!(err("[[[0, 0, 1e999]]]").contains("number out of range"), "overflow");
     }
 }

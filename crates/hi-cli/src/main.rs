@@ -1,18 +1,25 @@
 // SPDX-License-Identifier: MIT
-//! `hi`: the harmonic curves of A. Hardy's 2005 thesis (crate `hi-curve`) on the command line,
-//! with JSON in and out.
+//! `hi`: the harmonic curves and surfaces of A. Hardy's 2005 thesis (crates `hi-curve` and
+//! `hi-surface`) on the command line, with JSON in and out.
 //!
 //! ```text
 //! hi basis --n N --k K --t T1,T2,... [--derivatives D]
 //! hi curve eval       --input FILE --t T1,T2,... [--derivatives D]
-//! hi curve sample     --input FILE --count N
+//! hi curve sample     --input FILE --count N [--kind KIND]
+//! hi curve fairness   --input FILE [--kind KIND] [--samples N]
+//! hi curve to-bezier  --input FILE --kind KIND
 //! hi curve rotate     --input FILE --offset O [--exact]
 //! hi curve resample   --input FILE --count N
 //! hi curve subdivide  --input FILE --levels L
 //! hi curve nonuniform --input FILE --t T1,... --variant thesis|nodes [--params P0,...]
+//! hi surface eval     --input GRID --u U1,... --v V1,...
+//! hi surface mesh     --input GRID [--resolution UxV] [--window u0,u1,v0,v1]
+//!                     [--color gaussian|mean] -o OUT.obj|OUT.gltf|OUT.glb
+//! hi surface example  sphere|torus|<a §5.9 surface> [--samples MxN] [-o FILE]
 //! ```
 //!
-//! The input is `{"points": [...]}` or a bare array of points (see [`input`]), the output one
+//! The input is `{"points": [...]}` or a bare array of points, or for surfaces
+//! `{"grid": [...]}` or a bare array of rows (see [`input`]), the output one
 //! JSON object on stdout (see [`output`]). Bad input exits with status 2 and one line on
 //! stderr; `hi --help` has the details.
 
@@ -38,7 +45,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_failure(&e),
     };
-    let result = commands::run(&cli.command).and_then(|json| {
+    let result = commands::run(&cli.command, cli.pretty).and_then(|json| {
         output::write_json(&mut BufWriter::new(io::stdout().lock()), &json, cli.pretty)
             .map_err(Failure::Output)
     });
@@ -72,8 +79,8 @@ fn clap_failure(e: &clap::Error) -> ExitCode {
     }
 }
 
-/// Replaces Rust's panic message and backtrace by one line: a panic is a bug in `hi` or
-/// `hi-curve`, never a way to report bad input.
+/// Replaces Rust's panic message and backtrace by one line: a panic is a bug in `hi`,
+/// `hi-curve` or `hi-surface`, never a way to report bad input.
 fn install_panic_hook() {
     std::panic::set_hook(Box::new(|info| {
         let payload = info.payload();

@@ -21,6 +21,10 @@ pub(crate) enum Json {
     Null,
     /// A number; non-finite ones are printed as strings (see the module documentation).
     Number(f64),
+    /// A whole number (a count), printed without a decimal point.
+    Count(usize),
+    /// A string.
+    String(String),
     /// An array.
     Array(Vec<Json>),
     /// An object, with its keys in the order given.
@@ -85,6 +89,8 @@ impl Serialize for Json {
             Json::Number(x) if x.is_nan() => serializer.serialize_str("NaN"),
             Json::Number(x) if *x > 0.0 => serializer.serialize_str("Infinity"),
             Json::Number(_) => serializer.serialize_str("-Infinity"),
+            Json::Count(n) => serializer.serialize_u64(*n as u64),
+            Json::String(text) => serializer.serialize_str(text),
             Json::Array(items) => {
                 let mut seq = serializer.serialize_seq(Some(items.len()))?;
                 for item in items {
