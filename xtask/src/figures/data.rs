@@ -28,7 +28,7 @@ pub(crate) struct StandIn {
 pub(crate) const STAND_INS: &[StandIn] = &[
     StandIn {
         name: "square",
-        about: "the vertices of the unit square as a diamond, xₖ = (cos kπ/2, sin kπ/2) (the thesis's labels in figures 3.7 and 3.13 have this layout)",
+        about: "the vertices of the unit square as a diamond, xₖ = (cos kπ/2, sin kπ/2) (the thesis's labels in figures 3.7 and 3.13 have this layout; figures 3.7, 3.8, 3.13, 3.15)",
         letter: "x",
         space: false,
         points: || lift(&SQUARE),
@@ -42,7 +42,7 @@ pub(crate) const STAND_INS: &[StandIn] = &[
     },
     StandIn {
         name: "pentagon",
-        about: "an irregular pentagon, x₄ placed so that the harmonic curve has a cusp near x₃, as the thesis's does (figures 3.11, 3.22)",
+        about: "an irregular pentagon, x₄ placed so that the harmonic curve has a cusp near x₃, as the thesis's does (figures 3.11, 3.12, 3.17, 3.22)",
         letter: "x",
         space: false,
         points: || lift(&PENTAGON),
@@ -56,7 +56,7 @@ pub(crate) const STAND_INS: &[StandIn] = &[
     },
     StandIn {
         name: "heptagon",
-        about: "an irregular heptagon with a dent at x₄ (figures 3.9, 3.20, 3.21, 5.2, 5.6)",
+        about: "an irregular heptagon with a dent at x₄ (figures 3.9, 3.10, 3.16, 3.20, 3.21, 5.2, 5.6)",
         letter: "x",
         space: false,
         points: || lift(&HEPTAGON),
@@ -67,6 +67,34 @@ pub(crate) const STAND_INS: &[StandIn] = &[
         letter: "x",
         space: false,
         points: || lift(&OCTAGON),
+    },
+    StandIn {
+        name: "Lagrange quadrilateral",
+        about: "example 2.1 (figure 2.2): x₀, x₁, x₂ as the extracted thesis text prints them, (1, 1), (2, 3), (4, 1) (its minus signs are lost, so they are read as positive); x₃ is illegible there and chosen here",
+        letter: "x",
+        space: false,
+        points: || lift(&LAGRANGE),
+    },
+    StandIn {
+        name: "Bézier quadrilateral",
+        about: "the four control points of figures 2.4, 2.6 and 2.7, a crossing polygon with the thesis's label layout (x₁ highest, x₂ lowest)",
+        letter: "x",
+        space: false,
+        points: || lift(&BEZIER),
+    },
+    StandIn {
+        name: "zigzag",
+        about: "nine points in a wave, the control points of figures 2.11 and 2.12 and the data of figures 2.13 and 2.15, with the thesis's label layout (x₁, x₂, x₅, x₇ high)",
+        letter: "x",
+        space: false,
+        points: || lift(&ZIGZAG),
+    },
+    StandIn {
+        name: "peer pentagon",
+        about: "the irregular pentagon of the METAPOST and scipy cross-checks (shared/PEERS.md), for figures 2.14 and 2.16",
+        letter: "x",
+        space: false,
+        points: || lift(&PEER_PENTAGON),
     },
     StandIn {
         name: "cube tour",
@@ -109,6 +137,29 @@ pub(crate) const OCTAGON: [[f64; 2]; 8] = [
     [3.8, 2.6],
     [2.4, 3.4],
 ];
+
+/// Example 2.1's points, x₃ a stand-in.
+pub(crate) const LAGRANGE: [[f64; 2]; 4] = [[1.0, 1.0], [2.0, 3.0], [4.0, 1.0], [5.0, 3.0]];
+
+/// The control points of the cubic Bézier curve of figures 2.4, 2.6 and 2.7.
+pub(crate) const BEZIER: [[f64; 2]; 4] = [[0.0, 0.5], [1.0, 2.0], [3.0, -0.5], [4.0, 1.0]];
+
+/// Nine points in a wave (figures 2.11–2.13, 2.15).
+pub(crate) const ZIGZAG: [[f64; 2]; 9] = [
+    [0.0, 0.0],
+    [1.0, 2.0],
+    [2.5, 2.2],
+    [3.0, 0.3],
+    [4.5, 0.0],
+    [5.5, 2.0],
+    [6.8, 0.4],
+    [8.0, 2.1],
+    [9.5, 1.2],
+];
+
+/// The pentagon of the peer cross-checks (figures 2.14, 2.16).
+pub(crate) const PEER_PENTAGON: [[f64; 2]; 5] =
+    [[0.0, 0.0], [3.0, 1.0], [4.0, 4.0], [1.0, 5.0], [-1.0, 2.0]];
 
 /// The points of a plane set.
 pub(crate) fn plane(points: &[[f64; 2]]) -> Vec<DVec2> {

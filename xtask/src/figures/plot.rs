@@ -276,6 +276,17 @@ impl Plot {
         self
     }
 
+    /// A construction's control polygon: a thin faint line through `polygon` with small grey
+    /// markers on its vertices, except those among `data` (marked as data points already).
+    pub(crate) fn control_polygon(self, polygon: &[DVec2], data: &[DVec2]) -> Self {
+        let extra: Vec<DVec2> = polygon
+            .iter()
+            .copied()
+            .filter(|p| !data.iter().any(|d| d.distance(*p) <= 1e-12 * (1.0 + d.length())))
+            .collect();
+        self.faint(polygon.to_vec()).points(&extra, Marker::small(GREY), None)
+    }
+
     /// The polygon through the data points, drawn faintly and dashed (closed if `closed`).
     pub(crate) fn polygon(mut self, points: &[DVec2], closed: bool) -> Self {
         let mut points = points.to_vec();
@@ -334,10 +345,7 @@ impl Plot {
     ///
     /// If plotters fails to draw or the plot has nothing to fit its ranges to.
     pub(crate) fn render(&self) -> Result<Vec<u8>> {
-        let size = match self.kind {
-            Kind::Function { .. } => FUNCTION_SIZE,
-            Kind::Plane | Kind::Projection => PLANE_SIZE,
-        };
+        let size = self.size();
         let mut svg = String::new();
         {
             let root = SVGBackend::with_string(&mut svg, (size.0 * SCALE, size.1 * SCALE))
@@ -347,13 +355,15 @@ impl Plot {
             self.draw_chart(&area)?;
             root.present()?;
         }
-        let header = format!("<svg width=\"{}\" height=\"{}\"", size.0 * SCALE, size.1 * SCALE);
-        if !svg.starts_with(&header) {
-            bail!("unexpected SVG header from plotters: {:?}", svg.get(..60));
+        unscale(svg, size)
+    }
+
+    /// The size in pixels of the plot on its own.
+    const fn size(&self) -> (u32, u32) {
+        match self.kind {
+            Kind::Function { .. } => FUNCTION_SIZE,
+            Kind::Plane | Kind::Projection => PLANE_SIZE,
         }
-        let svg =
-            svg.replacen(&header, &format!("<svg width=\"{}\" height=\"{}\"", size.0, size.1), 1);
-        Ok(svg.into_bytes())
     }
 
     fn draw_chart(&self, area: &DrawingArea<SVGBackend<'_>, Shift>) -> Result<()> {
@@ -679,6 +689,48 @@ impl Plot {
             Mark::Guide { .. } => true,
         })
     }
+}
+
+/// Several plots side by side in one SVG document under `title`, each with its own title as a
+/// sub-caption (a curve beside its curvature plot).
+///
+/// # Errors
+///
+/// As [`Plot::render`].
+pub(crate) fn render_row(title: &str, plots: &[&Plot]) -> Result<Vec<u8>> {
+    let sizes: Vec<(u32, u32)> = plots.iter().map(|p| p.size()).collect();
+    let size = (
+        sizes.iter().map(|s| s.0).sum::<u32>(),
+        sizes.iter().map(|s| s.1).max().unwrap_or(0) + TITLE_SPACE,
+    );
+    let mut svg = String::new();
+    {
+        let root =
+            SVGBackend::with_string(&mut svg, (size.0 * SCALE, size.1 * SCALE)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut rest = draw_title(&root, title)?;
+        for (plot, own) in plots.iter().zip(&sizes) {
+            let (cell, right) = rest.split_horizontally(own.0 * SCALE);
+            let chart = draw_title(&cell, &plot.title)?;
+            plot.draw_chart(&chart)?;
+            rest = right;
+        }
+        root.present()?;
+    }
+    unscale(svg, size)
+}
+
+/// Extra height in pixels of a row of plots, for the second title line.
+const TITLE_SPACE: u32 = 24;
+
+/// Sets the header of an SVG document drawn at [`SCALE`] times `size` to `size`.
+fn unscale(svg: String, size: (u32, u32)) -> Result<Vec<u8>> {
+    let header = format!("<svg width=\"{}\" height=\"{}\"", size.0 * SCALE, size.1 * SCALE);
+    if !svg.starts_with(&header) {
+        bail!("unexpected SVG header from plotters: {:?}", svg.get(..60));
+    }
+    let svg = svg.replacen(&header, &format!("<svg width=\"{}\" height=\"{}\"", size.0, size.1), 1);
+    Ok(svg.into_bytes())
 }
 
 /// Writes `title` centred at the top of `root`, wrapped onto more lines if it is too wide,

@@ -1,0 +1,573 @@
+// SPDX-License-Identifier: MIT
+//! Figures 3.7–3.12 and 3.15–3.18: harmonic interpolation of closed polygons beside METAPOST
+//! (Hobby's closed curve, §2.14) and periodic cubic B-spline interpolation (§2.11), their
+//! curvature plots (§3.5), and the fairness table of those curves.
+//!
+//! All three curves pass through xₖ at t = k/n here (METAPOST's time and the uniform spline
+//! parameters scaled to [0, 1]), so the curvature plots share their parameter axis; the thesis
+//! leaves that axis unmarked because its curves used different parameters.
+
+use anyhow::Result;
+use glam::DVec2;
+use hi_curve::compare::bspline_interp::{InterpolatingSpline, Parameters};
+use hi_curve::compare::fairness::{curvature_plot, fairness};
+use hi_curve::compare::hobby::{HobbyConfig, HobbyCurve};
+use hi_curve::{HarmonicCurve, ParamCurve};
+
+use super::curves::{closed, data_plot};
+use super::data;
+use super::plot::{BLUE, GREEN, INK, Marker, Pen, Plot, VERMILION, render_row};
+use super::{Figure, Format, Panel, Table};
+
+/// Samples of a curvature plot over one period.
+const CURVATURE_SAMPLES: usize = 1200;
+
+/// Samples behind the fairness numbers of the table.
+const FAIRNESS_SAMPLES: usize = 8192;
+
+/// The polygons of the figures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Polygon {
+    /// Four points on a circle (figures 3.7, 3.8, 3.15).
+    Circle,
+    /// Seven points (3.9, 3.10, 3.16).
+    Seven,
+    /// Five points (3.11, 3.12, 3.17).
+    Five,
+    /// Eight points (3.18).
+    Eight,
+}
+
+impl Polygon {
+    const ALL: [Polygon; 4] = [Polygon::Circle, Polygon::Seven, Polygon::Five, Polygon::Eight];
+
+    fn points(self) -> Vec<DVec2> {
+        match self {
+            Polygon::Circle => data::plane(&data::SQUARE),
+            Polygon::Seven => data::plane(&data::HEPTAGON),
+            Polygon::Five => data::plane(&data::PENTAGON),
+            Polygon::Eight => data::plane(&data::OCTAGON),
+        }
+    }
+
+    const fn name(self) -> &'static str {
+        match self {
+            Polygon::Circle => "circle (square, 4 points)",
+            Polygon::Seven => "heptagon (7 points)",
+            Polygon::Five => "pentagon (5 points)",
+            Polygon::Eight => "octagon (8 points)",
+        }
+    }
+}
+
+/// The curves through a polygon.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Method {
+    /// The uniform harmonic curve.
+    Harmonic,
+    /// Periodic cubic B-spline interpolation with uniform parameters.
+    BSpline,
+    /// METAPOST's closed curve `z₀..z₁..…..cycle`.
+    Metapost,
+}
+
+impl Method {
+    const ALL: [Method; 3] = [Method::Harmonic, Method::BSpline, Method::Metapost];
+
+    const fn name(self) -> &'static str {
+        match self {
+            Method::Harmonic => "harmonic",
+            Method::BSpline => "periodic B-spline",
+            Method::Metapost => "METAPOST (Hobby, closed)",
+        }
+    }
+
+    /// The curve through `points`.
+    fn curve(self, points: &[DVec2]) -> Result<Box<dyn ParamCurve<DVec2>>> {
+        Ok(match self {
+            Method::Harmonic => Box::new(HarmonicCurve::try_new(points.to_vec())?),
+            Method::BSpline => {
+                Box::new(InterpolatingSpline::try_periodic(points.to_vec(), Parameters::Uniform)?)
+            }
+            Method::Metapost => {
+                Box::new(HobbyCurve::try_new(points.to_vec(), &HobbyConfig::closed())?)
+            }
+        })
+    }
+}
+
+const STAND_IN_SQUARE: &str =
+    "stand-in: the square (four points on the unit circle; the thesis's labels match it).";
+const STAND_IN_HEPTAGON: &str = "stand-in: the heptagon.";
+const STAND_IN_PENTAGON: &str =
+    "stand-in: the pentagon (its harmonic curve has a cusp near x₃, as the thesis's does).";
+const STAND_IN_OCTAGON: &str = "stand-in: the octagon.";
+
+const METAPOST_DRAWN: &str = "(a) METAPOST's closed curve through the points (`HobbyCurve`, tension 1, \
+                              matching `mpost` to 1e-9), its Bézier control polygon faint as in the thesis; \
+                              (b) the harmonic curve. The data polygon is dashed.";
+const BSPLINE_DRAWN: &str = "(a) periodic cubic B-spline interpolation with uniform parameters (`InterpolatingSpline::try_periodic`, \
+                             the cyclic system of §2.11, matching scipy to 1e-9), its B-spline control polygon faint; \
+                             (b) the harmonic curve. The data polygon is dashed.";
+const CURVATURE_DRAWN: &str = "Each panel: the curve, and its signed curvature κ(t) over one period (positive where it turns left), \
+                               with the minimum and maximum written on the plot; (a) harmonic, (b) periodic cubic B-spline \
+                               interpolation (uniform parameters). Unlike the thesis the t axis is marked: both curves pass \
+                               through xₖ at t = k/n (faint guides). A ring marks where |κ| is largest.";
+
+/// The figures of this module.
+pub(crate) const FIGURES: &[Figure] = &[
+    Figure {
+        number: (3, 7),
+        caption: "A circle drawn by METAPOST and harmonic interpolation",
+        drawn: "(a) METAPOST's closed curve through the four points (`HobbyCurve`), its Bézier control polygon faint: \
+                four cubic pieces, close to the circle but not a circle; (b) the harmonic curve, exactly the circumcircle.",
+        data: STAND_IN_SQUARE,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) METAPOST",
+                draw: |t| side(t, Polygon::Circle, Method::Metapost),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) Harmonic interpolation",
+                draw: |t| side(t, Polygon::Circle, Method::Harmonic),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 8),
+        caption: "A circle drawn by B-spline and harmonic interpolation",
+        drawn: BSPLINE_DRAWN,
+        data: STAND_IN_SQUARE,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) B-spline",
+                draw: |t| side(t, Polygon::Circle, Method::BSpline),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) Harmonic interpolation",
+                draw: |t| side(t, Polygon::Circle, Method::Harmonic),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 9),
+        caption: "A 7 sided polygon drawn by METAPOST and harmonic interpolation",
+        drawn: METAPOST_DRAWN,
+        data: STAND_IN_HEPTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) METAPOST",
+                draw: |t| side(t, Polygon::Seven, Method::Metapost),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) Harmonic interpolation",
+                draw: |t| side(t, Polygon::Seven, Method::Harmonic),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 10),
+        caption: "A 7 sided polygon drawn by B-spline and harmonic interpolation",
+        drawn: BSPLINE_DRAWN,
+        data: STAND_IN_HEPTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) B-spline",
+                draw: |t| side(t, Polygon::Seven, Method::BSpline),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) Harmonic interpolation",
+                draw: |t| side(t, Polygon::Seven, Method::Harmonic),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 11),
+        caption: "A 5 sided polygon drawn by METAPOST and harmonic interpolation",
+        drawn: METAPOST_DRAWN,
+        data: STAND_IN_PENTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) METAPOST",
+                draw: |t| side(t, Polygon::Five, Method::Metapost),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) Harmonic interpolation",
+                draw: |t| side(t, Polygon::Five, Method::Harmonic),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 12),
+        caption: "A 5 sided polygon drawn by B-spline and harmonic interpolation",
+        drawn: BSPLINE_DRAWN,
+        data: STAND_IN_PENTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) B-spline",
+                draw: |t| side(t, Polygon::Five, Method::BSpline),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) Harmonic interpolation",
+                draw: |t| side(t, Polygon::Five, Method::Harmonic),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 15),
+        caption: "Curvature plot of figure 3.8",
+        drawn: CURVATURE_DRAWN,
+        data: STAND_IN_SQUARE,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Harmonic interpolation",
+                draw: |t| curvature(t, Polygon::Circle, Method::Harmonic),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) B-spline",
+                draw: |t| curvature(t, Polygon::Circle, Method::BSpline),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 16),
+        caption: "Curvature plot of figure 3.10",
+        drawn: CURVATURE_DRAWN,
+        data: STAND_IN_HEPTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Harmonic interpolation",
+                draw: |t| curvature(t, Polygon::Seven, Method::Harmonic),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) B-spline",
+                draw: |t| curvature(t, Polygon::Seven, Method::BSpline),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 17),
+        caption: "Curvature plot of figure 3.12",
+        drawn: CURVATURE_DRAWN,
+        data: STAND_IN_PENTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Harmonic interpolation",
+                draw: |t| curvature(t, Polygon::Five, Method::Harmonic),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) B-spline",
+                draw: |t| curvature(t, Polygon::Five, Method::BSpline),
+            },
+        ],
+    },
+    Figure {
+        number: (3, 18),
+        caption: "Curvature plot of an eight sided figure",
+        drawn: CURVATURE_DRAWN,
+        data: STAND_IN_OCTAGON,
+        format: Format::Svg,
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Harmonic interpolation",
+                draw: |t| curvature(t, Polygon::Eight, Method::Harmonic),
+            },
+            Panel {
+                suffix: "b",
+                title: "(b) B-spline",
+                draw: |t| curvature(t, Polygon::Eight, Method::BSpline),
+            },
+        ],
+    },
+];
+
+/// The tables of this module.
+pub(crate) const TABLES: &[Table] = &[Table {
+    anchor: "fairness",
+    title: "Fairness of the polygon curves",
+    about: "The fairness measures of §2.15 and §3.5 (`hi_curve::compare::fairness`) for the closed polygons of \
+            figures 3.7–3.18, each through the harmonic curve, periodic cubic B-spline interpolation (uniform \
+            parameters) and METAPOST's closed curve: the largest |κ|, the number of monotone pieces of κ around \
+            the cycle (fewer is fairer; constant κ is 1), the bending energy ∫κ² ds over one period, and the \
+            confinement, the area of the curve's convex hull over that of the points (1 would be the polygon's \
+            hull; interpolating curves bulge out). From 8192 samples per curve. The curves differ in length, so \
+            energies compare shapes of similar size only. The harmonic curve through the pentagon has a near-cusp at x₃ \
+            (|X′| almost 0, marked): its largest |κ| and bending energy are huge but finite, and the globally \
+            adaptive quadrature resolves them (an energy whose estimated error exceeds 10⁻⁶ of it would be shown \
+            with ± that error).",
+    make: fairness_table,
+}];
+
+/// The faint control polygon of `method`'s curve through `points`, if it has one: METAPOST's
+/// Bézier control points (knot, post-control, pre-control, next knot, …) or the periodic
+/// spline's B-spline control points, closed.
+fn control_polygon(method: Method, points: &[DVec2]) -> Result<Option<Vec<DVec2>>> {
+    Ok(match method {
+        Method::Harmonic => None,
+        Method::Metapost => {
+            let curve = HobbyCurve::try_new(points.to_vec(), &HobbyConfig::closed())?;
+            let knots = curve.knots();
+            let mut polygon = Vec::with_capacity(3 * knots.len() + 1);
+            for (k, knot) in knots.iter().enumerate() {
+                let next = &knots[(k + 1) % knots.len()];
+                polygon.extend([knot.point, knot.postcontrol, next.precontrol]);
+            }
+            polygon.push(knots[0].point);
+            Some(polygon)
+        }
+        Method::BSpline => {
+            let curve = InterpolatingSpline::try_periodic(points.to_vec(), Parameters::Uniform)?;
+            let mut polygon = curve.spline().control_points().to_vec();
+            polygon.push(polygon[0]);
+            Some(polygon)
+        }
+    })
+}
+
+/// The pen a method's curve is drawn with.
+const fn pen(method: Method) -> Pen {
+    match method {
+        Method::Harmonic => Pen::solid(BLUE),
+        Method::BSpline => Pen::solid(GREEN),
+        Method::Metapost => Pen::solid(VERMILION),
+    }
+}
+
+/// The plane plot of `method`'s curve through `polygon`, with its control polygon faint.
+fn curve_plot(title: &str, polygon: Polygon, method: Method) -> Result<Plot> {
+    let points = polygon.points();
+    let curve = method.curve(&points)?;
+    let mut plot = data_plot(title, &points);
+    if let Some(control) = control_polygon(method, &points)? {
+        plot = plot.control_polygon(&control, &points);
+    }
+    Ok(plot.curve(closed(|t| curve.eval(t)), pen(method), None))
+}
+
+/// Figures 3.7–3.12: one panel, `method`'s curve through `polygon`.
+fn side(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
+    curve_plot(title, polygon, method)?.render()
+}
+
+/// Figures 3.15–3.18: `method`'s curve through `polygon` beside its curvature plot, the
+/// minimum and maximum of κ written on the plot.
+fn curvature(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
+    let points = polygon.points();
+    let curve = method.curve(&points)?;
+    let samples = curvature_plot(curve.as_ref(), CURVATURE_SAMPLES)?;
+    // The plot is closed: the first sample again at t = 1.
+    let mut graph: Vec<(f64, Option<f64>)> = samples.iter().map(|s| (s.t, s.curvature)).collect();
+    graph.push((1.0, samples[0].curvature));
+    let kappas: Vec<f64> = graph.iter().filter_map(|&(_, k)| k).collect();
+    let lo = kappas.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = kappas.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if !(lo.is_finite() && hi.is_finite()) {
+        anyhow::bail!("{} through the {}: no curvature", method.name(), polygon.name());
+    }
+    // The largest |κ|, marked on both plots.
+    let peak = graph.iter().filter_map(|&(t, k)| k.map(|k| (t, k))).fold(
+        (0.0, 0.0),
+        |best: (f64, f64), (t, k)| if k.abs() > best.1.abs() { (t, k) } else { best },
+    );
+
+    let constant = hi - lo <= 1e-9 * hi.abs().max(1.0);
+    let mut shape = curve_plot("curve", polygon, method)?;
+    if !constant {
+        shape = shape.points(&[curve.eval(peak.0)], Marker::ring(INK), None);
+    }
+
+    let (y0, y1) = (lo.min(0.0), hi.max(0.0));
+    let pad = 0.1 * (y1 - y0).max(1e-3 * hi.abs().max(1.0));
+    let mut plot = Plot::function("signed curvature κ(t)", "t", "κ")
+        .x_range(0.0, 1.0)
+        .y_range(y0 - pad, y1 + pad)
+        .hguide(0.0);
+    let n = points.len();
+    for k in 1..n {
+        plot = plot.vguide(k as f64 / n as f64);
+    }
+    // One line per run of regular samples (a cusp breaks the line).
+    let mut run = Vec::new();
+    for &(t, k) in &graph {
+        if let Some(k) = k {
+            run.push(DVec2::new(t, k));
+        } else if !run.is_empty() {
+            plot = plot.curve(std::mem::take(&mut run), pen(method), None);
+        }
+    }
+    if !run.is_empty() {
+        plot = plot.curve(run, pen(method), None);
+    }
+    if !constant {
+        plot = plot.points(&[DVec2::new(peak.0, peak.1)], Marker::ring(INK), None);
+    }
+    // The extremes, written at the right end of their guide lines (the left end if the
+    // curve is there).
+    let at_x = |value: f64| {
+        let near_right = graph
+            .iter()
+            .rev()
+            .take(CURVATURE_SAMPLES / 8)
+            .any(|&(_, k)| k.is_some_and(|k| (k - value).abs() < 0.08 * (y1 - y0 + 2.0 * pad)));
+        if near_right { 0.1 } else { 0.9 }
+    };
+    if constant {
+        plot = plot.hguide(hi).note(
+            DVec2::new(0.5, hi),
+            &format!("κ = {} (constant)", fixed(hi)),
+            (0.0, 12.0),
+            INK,
+        );
+    } else {
+        plot = plot
+            .hguide(hi)
+            .hguide(lo)
+            .note(DVec2::new(at_x(hi), hi), &format!("max {}", fixed(hi)), (0.0, 11.0), INK)
+            .note(DVec2::new(at_x(lo), lo), &format!("min {}", fixed(lo)), (0.0, -11.0), INK);
+    }
+    render_row(title, &[&shape, &plot])
+}
+
+/// A curvature value for a label: three significant digits, at most two decimals for large
+/// values.
+fn fixed(v: f64) -> String {
+    let digits = if v.abs() >= 100.0 {
+        0
+    } else if v.abs() >= 10.0 {
+        1
+    } else {
+        2
+    };
+    let s = format!("{v:.digits$}");
+    if s.starts_with('-') { s.replacen('-', "−", 1) } else { s }
+}
+
+/// |κ| times the size of the curve above which a curve counts as having a cusp.
+const CUSP: f64 = 1e3;
+
+/// The largest sampled |κ| of `curve` if it has a (near) cusp: |κ| above [`CUSP`] over its
+/// size, or a singular sample.
+fn near_cusp(curve: &dyn ParamCurve<DVec2>) -> Result<Option<f64>> {
+    let plot = curvature_plot(curve, FAIRNESS_SAMPLES)?;
+    let mut peak: f64 = 0.0;
+    let mut singular = false;
+    for s in &plot {
+        match s.curvature {
+            Some(k) => peak = peak.max(k.abs()),
+            None => singular = true,
+        }
+    }
+    Ok((singular || peak * curve.scale() > CUSP).then_some(peak))
+}
+
+/// `v` with 4 decimals, or as "2.5·10⁶" from 10⁴ on.
+fn number(v: f64) -> String {
+    if v.abs() >= 1e4 { scientific(v) } else { format!("{v:.4}") }
+}
+
+/// `v` as "2.5·10⁶".
+fn scientific(v: f64) -> String {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let exponent = v.abs().log10().floor() as i32;
+    let mantissa = v / 10f64.powi(exponent);
+    let power: String = exponent
+        .to_string()
+        .bytes()
+        .map(|d| if d == b'-' { '⁻' } else { DIGITS[usize::from(d - b'0')] })
+        .collect();
+    format!("{mantissa:.1}·10{power}")
+}
+
+/// The fairness table: one row per polygon and curve.
+fn fairness_table() -> Result<String> {
+    let mut s = String::from(
+        "| polygon | curve | max \\|κ\\| | monotone pieces of κ | bending energy ∫κ² ds | length | confinement |\n\
+         |---|---|---:|---:|---:|---:|---:|\n",
+    );
+    for polygon in Polygon::ALL {
+        let points = polygon.points();
+        for method in Method::ALL {
+            let curve = method.curve(&points)?;
+            let f = fairness(curve.as_ref(), &points, FAIRNESS_SAMPLES)?;
+            let cusp = if near_cusp(curve.as_ref())?.is_some() { " (near-cusp)" } else { "" };
+            let confinement = f.confinement.map_or_else(|| "–".to_owned(), |c| format!("{c:.4}"));
+            let energy = if f.bending_energy_error > 1e-6 * f.bending_energy {
+                format!("{} ± {}", number(f.bending_energy), number(f.bending_energy_error))
+            } else {
+                number(f.bending_energy)
+            };
+            let row = format!(
+                "| {}{cusp} | {} | {energy} | {:.4} | {} |",
+                number(f.max_curvature),
+                f.monotone_pieces,
+                f.length,
+                confinement
+            );
+            s.push_str(&format!("| {} | {} {row}\n", polygon.name(), method.name()));
+        }
+    }
+    Ok(s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_harmonic_circle_has_constant_curvature_in_the_table() {
+        // Four points on the unit circle: the harmonic curve is the circle itself, κ ≡ 1,
+        // one monotone piece, energy 2π, hull area π over the square's 2.
+        let points = Polygon::Circle.points();
+        let curve = Method::Harmonic.curve(&points).expect("a curve");
+        let f = fairness(curve.as_ref(), &points, FAIRNESS_SAMPLES).expect("fairness");
+        assert!((f.max_curvature - 1.0).abs() < 1e-12, "{f:?}");
+        assert_eq!(f.monotone_pieces, 1, "{f:?}");
+        assert!((f.bending_energy - std::f64::consts::TAU).abs() < 1e-10, "{f:?}");
+        let confinement = f.confinement.expect("the square has area");
+        assert!((confinement - std::f64::consts::FRAC_PI_2).abs() < 1e-6, "{f:?}");
+        // The piecewise cubic curves only approximate the circle: their curvature varies.
+        for method in [Method::BSpline, Method::Metapost] {
+            let other = method.curve(&points).expect("a curve");
+            let g = fairness(other.as_ref(), &points, FAIRNESS_SAMPLES).expect("fairness");
+            assert!(g.max_curvature > 1.0 && g.monotone_pieces > 1, "{method:?}: {g:?}");
+        }
+    }
+
+    #[test]
+    fn the_table_has_a_row_per_polygon_and_curve() {
+        let table = fairness_table().expect("the table");
+        assert_eq!(table.lines().count(), 2 + Polygon::ALL.len() * Method::ALL.len(), "{table}");
+        assert!(
+            table.contains("| circle (square, 4 points) | harmonic | 1.0000 | 1 | 6.2832 |"),
+            "{table}"
+        );
+    }
+}
