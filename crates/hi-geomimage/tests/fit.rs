@@ -122,6 +122,14 @@ fn fitting_an_ellipsoid() {
         fit(&scan, &FitOptions { reduce: Some(0.0), ..FitOptions::default() }, &mut |_| {})
             .is_err()
     );
+
+    // The octahedral layouts fit as well.
+    for layout in [Layout::FlatOctahedron, Layout::Octahedron] {
+        let result =
+            fit(&scan, &FitOptions { layout, ..FitOptions::default() }, &mut |_| {}).unwrap();
+        let [mean, _, max] = result.report.errors.as_ref().unwrap().relative();
+        assert!(mean < 1e-3 && max < 1e-2, "{layout:?}: {mean:e} {max:e}");
+    }
 }
 
 fn model(file: &str) -> Option<PathBuf> {
