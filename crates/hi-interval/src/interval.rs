@@ -434,14 +434,29 @@ impl Interval {
             return Self::ONE;
         }
         let k = n.unsigned_abs();
-        let pos = if k.is_multiple_of(2) {
+        if n > 0 {
+            self.pow_unsigned(k)
+        } else if self.contains(0.0) {
+            // 1/Xᵏ: the zero of Xᵏ is dropped by the division (see `div_extended`).
+            Self::ONE / self.pow_unsigned(k)
+        } else {
+            // (1/X)ᵏ keeps a tiny result where Xᵏ would overflow.
+            self.recip().pow_unsigned(k)
+        }
+    }
+
+    /// Xᵏ for k ≥ 1 by binary powering of the endpoint magnitudes.
+    fn pow_unsigned(self, k: u32) -> Self {
+        if self.is_empty() {
+            return self;
+        }
+        if k.is_multiple_of(2) {
             Self::new(pow_down(self.mig(), k), pow_up(self.mag(), k))
         } else {
             let lo = if self.lo >= 0.0 { pow_down(self.lo, k) } else { -pow_up(-self.lo, k) };
             let hi = if self.hi >= 0.0 { pow_up(self.hi, k) } else { -pow_down(-self.hi, k) };
             Self::new(lo, hi)
-        };
-        if n > 0 { pos } else { Self::ONE / pos }
+        }
     }
 
     /// Square root {√x : x ∈ X, x ≥ 0}: the part of X below 0 is outside the domain and ignored;

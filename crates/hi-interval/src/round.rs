@@ -110,7 +110,8 @@ pub(crate) fn sqrt_down(a: f64) -> f64 {
         return a.abs();
     }
     let s = a.sqrt();
-    if s < TINY {
+    if a < TINY {
+        // The residual a − s² may underflow: not exact.
         return s.next_down().max(0.0);
     }
     let r = (-s).mul_add(s, a);
@@ -124,7 +125,7 @@ pub(crate) fn sqrt_up(a: f64) -> f64 {
         return a.abs();
     }
     let s = a.sqrt();
-    if s < TINY {
+    if a < TINY {
         return s.next_up();
     }
     let r = (-s).mul_add(s, a);
