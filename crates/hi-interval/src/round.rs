@@ -4,18 +4,45 @@
 //!
 //! Rust computes in round-to-nearest only. Each function here computes the nearest result `r`
 //! and then decides, exactly, on which side of `r` the true result lies, using the classical
-//! error-free transformations: `TwoSum` (Knuth) for sums, and one fused multiply-add for the
-//! error of a product, the remainder of a quotient and the residual of a square root. The
-//! result is stepped one ulp (`f64::next_down`/`f64::next_up`) only when the true value is on
-//! the far side, so the bounds are the correctly rounded ones. Where an error term could
-//! underflow (results below about 2⁻⁹⁶⁰) the error is not exact, and the functions step one ulp
-//! unconditionally, which is still a valid bound.
+//! error-free transformations: `TwoSum` (Knuth) for sums, and the exact error of a product
+//! (`TwoProduct`: one fused multiply-add where the CPU target has FMA, else Dekker's product with
+//! Veltkamp's split) for products, for the remainder of a quotient and for the residual of a
+//! square root. The result is stepped one ulp (`f64::next_down`/`f64::next_up`) only when the
+//! true value is on the far side, so the bounds are the correctly rounded ones. Where an error
+//! term could underflow (results or operands below about 2⁻⁹⁵⁶) the error is not exact, and the
+//! functions step one ulp unconditionally, which is still a valid bound.
 //!
 //! Infinite arguments follow the interval conventions of IEEE 1788: `0 · ∞ = 0` in products of
 //! endpoints, and an overflowed finite result rounds down to `f64::MAX` (up to `+∞`).
 
 /// Below this magnitude the fma error terms may underflow, so exactness is not decided.
 const TINY: f64 = 1.0e-288; // about 2^-956
+
+/// Below 2⁹⁹⁵ in magnitude Veltkamp's split (a multiplication by 2²⁷ + 1) cannot overflow.
+const SPLIT_MAX: f64 = 6.69e299; // about 2^995
+
+/// The rounding error `a·b − fl(a·b)` of a product `p = fl(a·b)`, exact when `|p| ≥ TINY` and
+/// `p` is finite: one fused multiply-add where the target has FMA, else Dekker's
+/// `TwoProduct` with Veltkamp's split (a libm `fma` call is far slower than 17 flops).
+#[inline]
+fn product_error(a: f64, b: f64, p: f64) -> f64 {
+    // Dekker's partial products must not overflow either: keep |p| well below MAX.
+    if cfg!(target_feature = "fma")
+        || a.abs() > SPLIT_MAX
+        || b.abs() > SPLIT_MAX
+        || p.abs() > 1.0e306
+    {
+        return a.mul_add(b, -p);
+    }
+    let split = |x: f64| {
+        let c = 134_217_729.0 * x; // 2^27 + 1
+        let hi = c - (c - x);
+        (hi, x - hi)
+    };
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
+}
 
 /// `a + b` rounded toward −∞.
 #[inline]
@@ -61,7 +88,7 @@ pub(crate) fn mul_down(a: f64, b: f64) -> f64 {
     if p.abs() < TINY {
         return p.next_down();
     }
-    let err = a.mul_add(b, -p);
+    let err = product_error(a, b, p);
     if err < 0.0 { p.next_down() } else { p }
 }
 
@@ -92,8 +119,12 @@ pub(crate) fn div_down(a: f64, b: f64) -> f64 {
     if q.abs() < TINY || a.abs() < TINY {
         return q.next_down();
     }
-    // a = q·b + r exactly, so a/b = q + r/b.
-    let r = (-q).mul_add(b, a);
+    // a = q·b + r exactly, so a/b = q + r/b; q·b = p + e exactly and a − p is exact (Sterbenz).
+    let p = q * b;
+    if !p.is_finite() {
+        return q.next_down(); // q·b overflowed next to MAX: the error is unknown.
+    }
+    let r = (a - p) - product_error(q, b, p);
     if (r < 0.0) != (b < 0.0) && r != 0.0 { q.next_down() } else { q }
 }
 
@@ -114,7 +145,11 @@ pub(crate) fn sqrt_down(a: f64) -> f64 {
         // The residual a − s² may underflow: not exact.
         return s.next_down().max(0.0);
     }
-    let r = (-s).mul_add(s, a);
+    let p = s * s;
+    if !p.is_finite() {
+        return s.next_down();
+    }
+    let r = (a - p) - product_error(s, s, p);
     if r < 0.0 { s.next_down() } else { s }
 }
 
@@ -128,7 +163,11 @@ pub(crate) fn sqrt_up(a: f64) -> f64 {
     if a < TINY {
         return s.next_up();
     }
-    let r = (-s).mul_add(s, a);
+    let p = s * s;
+    if !p.is_finite() {
+        return s.next_up();
+    }
+    let r = (a - p) - product_error(s, s, p);
     if r > 0.0 { s.next_up() } else { s }
 }
 

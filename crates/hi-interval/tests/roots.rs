@@ -185,7 +185,12 @@ fn two_dimensional_system_with_exact_roots() {
 fn nan_and_empty_inputs_never_panic() {
     let res = find_roots_1d(|x| x, |_| Interval::ONE, Interval::EMPTY, &RootConfig::default());
     assert!(res.roots.is_empty() && res.complete);
-    let config = RootConfig { tolerance: f64::NAN, max_iterations: 3, max_boxes: 50 };
+    let config = RootConfig {
+        tolerance: f64::NAN,
+        newton_width: f64::NAN,
+        max_iterations: 3,
+        max_boxes: 50,
+    };
     let res = bisect_1d(|x: Interval| x.sin(), Interval::new(-1.0, 1.0), &config);
     assert!(res.roots.iter().any(|r| r.enclosure.contains(0.0)), "{res:?}");
 }
