@@ -438,7 +438,7 @@ fn merge_overlapping(mut roots: Vec<Root>) -> Vec<Root> {
 }
 
 fn search(f: BoxFn<'_>, jac: Option<JacFn<'_>>, domain: &[Interval], config: &RootConfig) -> Roots {
-    if domain.iter().any(|v| v.is_empty()) {
+    if domain.is_empty() || domain.iter().any(|v| v.is_empty()) {
         return Roots { roots: Vec::new(), complete: true };
     }
     let leaf_width = match jac {
@@ -630,6 +630,7 @@ mod tests {
         let config =
             RootConfig { tolerance: 0.0, newton_width: 0.0, max_iterations: 5, max_boxes: 1000 };
         let res = bisect_1d(|x: Interval| x * 0.0, Interval::new(0.0, 1.0), &config);
+        assert!(bisect(|v: &[Interval]| v.to_vec(), &[], &config).roots.is_empty(), "no dims");
         assert!(!res.complete, "capped");
         // f vanishes exactly at the cluster ends, so zeros exist there, but nothing is unique.
         assert!(res.roots.iter().all(|r| r.verdict != Verdict::Unique), "not unique");
