@@ -12,6 +12,7 @@
 mod chebyshev;
 pub(crate) mod closed_form;
 mod cosine_sum;
+mod interval;
 mod recurrence;
 
 use crate::Error;
