@@ -20,6 +20,7 @@
 //! | triangle meshes over a parameter window: welded or split seams, poles, normals (§5.5) | [`TriangleMesh`], [`MeshOptions`] |
 //! | curvature colours, blue → purple as in §5.9, with a legend | [`ColorMap`], [`ColorLegend`] |
 //! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files, read-back checks | [`export`] |
+//! | subdivision surfaces of §4.5 on polygon meshes (Loop, butterfly, √3, Catmull-Clark, Doo-Sabin) | [`subdivision`] |
 //!
 //! # Examples
 //!
@@ -45,6 +46,7 @@ mod mesh;
 mod parametric;
 mod resample;
 mod spectrum;
+pub mod subdivision;
 mod surface;
 
 pub use colormap::{
@@ -61,4 +63,5 @@ pub use parametric::{
     CurvatureComparison, ParametricSurface, compare_curvature, test_surface, test_surfaces,
 };
 pub use resample::Axis;
+pub use subdivision::{MeshError, PolyMesh};
 pub use surface::HarmonicSurface;
