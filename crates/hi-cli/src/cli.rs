@@ -13,6 +13,7 @@ use crate::args::{
 
 /// The input and output conventions, shown by `hi --help`.
 const MAIN_HELP: &str = "\
+Basis: hi basis --n N --k K --t T1,... (values, derivatives); hi basis roots --n N --derivative D.
 Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivide|nonuniform
   --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
 Surface commands: hi surface eval|mesh|example (see 'hi surface --help').
@@ -43,6 +44,17 @@ const BASIS_HELP: &str = "\
 Output: {\"sigma\": [σ(t1), σ(t2), ...], \"d1\": [...], ..., \"dD\": [...]}
   dp holds the p-th derivative of σⁿₖ at each t (from its cosine sum).
 Example: hi basis --n 3 --k 0 --t 0,0.5   prints   {\"sigma\":[1.0,-0.3333333333333333]}";
+
+/// The output of `hi basis roots`.
+const ROOTS_HELP: &str = "\
+Output: {\"roots\": [[lo, hi], ...], \"unique\": [true, ...], \"verdicts\": [\"unique\", ...],
+         \"complete\": true}
+  Every zero of dᴰσⁿ/dtᴰ (σⁿ = σⁿ₀; the zeros of σⁿₖ are these shifted by k/n) in [0, 1] lies in
+  one of the intervals [lo, hi], found by interval bisection and Krawczyk's method on the
+  cosine-sum extension (eq. 5.4) with outward rounding. unique: the interval holds exactly one
+  zero (proven). verdicts: unique, exists (at least one), at-most-one (a zero at an end of
+  [0, 1] may lie just outside), unknown. complete: false if a cap stopped the search.
+Example: hi basis roots --n 3 --derivative 1   (zeros at 0, 1/2 and 1)";
 
 /// Prefixes a curve subcommand's help text with the input shape.
 macro_rules! curve_help {
@@ -214,19 +226,42 @@ pub(crate) enum CurveCommand {
 
 /// Options of `hi basis`.
 #[derive(Debug, Args)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub(crate) struct BasisArgs {
+    /// Other questions about the basis.
+    #[command(subcommand)]
+    pub(crate) command: Option<BasisCommand>,
     /// Number of basis functions n (at least 1).
-    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_whole)]
-    pub(crate) n: usize,
+    #[arg(long, value_name = "N", required = true, allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) n: Option<usize>,
     /// Index k of the basis function (0 ≤ k < n).
-    #[arg(long, value_name = "K", allow_negative_numbers = true, value_parser = parse_whole)]
-    pub(crate) k: usize,
+    #[arg(long, value_name = "K", required = true, allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) k: Option<usize>,
     /// Parameters t, comma-separated (e.g. 0,0.25,-1.5).
-    #[arg(long, value_name = "T1,T2,...", allow_hyphen_values = true, value_parser = parse_float_list)]
-    pub(crate) t: FloatList,
+    #[arg(long, value_name = "T1,T2,...", required = true, allow_hyphen_values = true, value_parser = parse_float_list)]
+    pub(crate) t: Option<FloatList>,
     /// Also print the derivatives of orders 1 to D (D ≤ 1024).
     #[arg(long, value_name = "D", default_value = "0", allow_negative_numbers = true, value_parser = parse_derivatives)]
     pub(crate) derivatives: usize,
+}
+
+/// The subcommands of `hi basis`.
+#[derive(Debug, Subcommand)]
+pub(crate) enum BasisCommand {
+    /// Every zero of a derivative of σⁿ on [0, 1], enclosed by interval arithmetic (§5.6).
+    #[command(after_help = ROOTS_HELP)]
+    Roots(RootsArgs),
+}
+
+/// Options of `hi basis roots`.
+#[derive(Debug, Args)]
+pub(crate) struct RootsArgs {
+    /// Number of basis functions n (1 to 4096).
+    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) n: usize,
+    /// The order D of the derivative whose zeros are wanted (0 for σ itself, up to 16).
+    #[arg(long, value_name = "D", default_value = "1", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) derivative: usize,
 }
 
 /// The input file option shared by the curve subcommands.

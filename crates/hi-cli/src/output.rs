@@ -23,6 +23,8 @@ pub(crate) enum Json {
     Number(f64),
     /// A whole number (a count), printed without a decimal point.
     Count(usize),
+    /// `true` or `false`.
+    Bool(bool),
     /// A string.
     String(String),
     /// An array.
@@ -91,6 +93,7 @@ impl Serialize for Json {
             Json::Number(_) => serializer.serialize_str("-Infinity"),
             Json::Count(n) => serializer.serialize_u64(*n as u64),
             Json::String(text) => serializer.serialize_str(text),
+            Json::Bool(b) => serializer.serialize_bool(*b),
             Json::Array(items) => {
                 let mut seq = serializer.serialize_seq(Some(items.len()))?;
                 for item in items {

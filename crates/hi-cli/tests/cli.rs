@@ -904,3 +904,63 @@ fn unwritable_output_exits_1_with_one_line() {
         "{stderr:?}"
     );
 }
+
+/// The enclosures and verdicts of `hi basis roots`.
+fn roots(n: &str, derivative: &str) -> (Vec<(f64, f64)>, Vec<String>) {
+    let out = ok(&["basis", "roots", "--n", n, "--derivative", derivative]);
+    assert_eq!(out["complete"], Value::Bool(true));
+    let roots = out["roots"]
+        .as_array()
+        .expect("an array")
+        .iter()
+        .map(|r| (num(&r[0]), num(&r[1])))
+        .collect::<Vec<_>>();
+    let verdicts: Vec<String> = out["verdicts"]
+        .as_array()
+        .expect("an array")
+        .iter()
+        .map(|v| v.as_str().expect("a string").to_owned())
+        .collect();
+    let unique: Vec<bool> = out["unique"]
+        .as_array()
+        .expect("an array")
+        .iter()
+        .map(|u| u == &Value::Bool(true))
+        .collect();
+    assert_eq!(unique, verdicts.iter().map(|v| v == "unique").collect::<Vec<_>>());
+    (roots, verdicts)
+}
+
+#[test]
+fn basis_roots_enclose_the_known_zeros() {
+    // σ³′(t) = −(4π/3)·sin 2πt: zeros at 0, 1/2 and 1, all simple.
+    let (r, v) = roots("3", "1");
+    assert_eq!(r.len(), 3, "{r:?}");
+    for ((lo, hi), zero) in r.iter().zip([0.0, 0.5, 1.0]) {
+        assert!(*lo <= zero && zero <= *hi && hi - lo < 1e-8, "[{lo}, {hi}] and {zero}");
+    }
+    assert_eq!(v[1], "unique");
+    // σ⁴(t) = cos(πt)·sin(4πt)/(4 sin πt): simple zeros at 1/4 and 3/4, and a double zero at
+    // 1/2 (both factors vanish), where uniqueness cannot be shown.
+    let (r, v) = roots("4", "0");
+    assert_eq!(r.len(), 3, "{r:?}");
+    for ((lo, hi), zero) in r.iter().zip([0.25, 0.5, 0.75]) {
+        assert!(*lo <= zero && zero <= *hi && hi - lo < 1e-7, "[{lo}, {hi}] and {zero}");
+    }
+    assert_eq!(v, ["unique", "unknown", "unique"]);
+    bad(
+        &["basis", "roots", "--n", "0"],
+        None,
+        "hi: --n: the basis size n must be at least 1, got 0",
+    );
+    bad(
+        &["basis", "roots", "--n", "5000"],
+        None,
+        "hi: --n: 5000 is too large for the root search (at most 4096)",
+    );
+    bad(
+        &["basis", "roots", "--n", "5", "--derivative", "17"],
+        None,
+        "hi: --derivative: 17 is too large (at most 16)",
+    );
+}

@@ -3,7 +3,9 @@
 
 use hi_curve::{Error, Sigma};
 
-use crate::cli::BasisArgs;
+use hi_interval::{Interval, RootConfig, Verdict};
+
+use crate::cli::{BasisArgs, BasisCommand, RootsArgs};
 use crate::error::{Failure, context};
 use crate::output::{Json, Object};
 
@@ -13,15 +15,76 @@ use crate::output::{Json, Object};
 ///
 /// [`Failure::Input`] if n = 0 or k ≥ n.
 pub(crate) fn run(args: &BasisArgs) -> Result<Json, Failure> {
-    let sigma = Sigma::try_new(args.n).map_err(context("--n"))?;
-    let k = args.k;
-    if k >= args.n {
-        return Err(context("--k")(Error::IndexOutOfRange { k, n: args.n }));
+    if let Some(BasisCommand::Roots(roots)) = &args.command {
+        return run_roots(roots);
     }
-    let ts = &args.t.0;
+    // clap makes --n, --k and --t required unless a subcommand is given.
+    let (Some(n), Some(k), Some(t)) = (args.n, args.k, args.t.as_ref()) else {
+        return Err(Failure::Input("hi basis needs --n, --k and --t (or a subcommand)".into()));
+    };
+    let sigma = Sigma::try_new(n).map_err(context("--n"))?;
+    if k >= n {
+        return Err(context("--k")(Error::IndexOutOfRange { k, n }));
+    }
+    let ts = &t.0;
     let mut out = Object::new().field("sigma", Json::numbers(ts.iter().map(|&t| sigma.eval(k, t))));
     for order in 1..=args.derivatives {
         out.push(format!("d{order}"), Json::numbers(ts.iter().map(|&t| sigma.deriv(k, t, order))));
     }
     Ok(out.build())
+}
+
+/// `{"roots": [[lo, hi], ...], "unique": [...], "verdicts": [...], "complete": c}`: the zeros
+/// of the D-th derivative of σⁿ on [0, 1] (§5.6).
+///
+/// # Errors
+///
+/// [`Failure::Input`] unless 1 ≤ n ≤ 4096 and D ≤ 16.
+fn run_roots(args: &RootsArgs) -> Result<Json, Failure> {
+    let sigma = Sigma::try_new(args.n).map_err(context("--n"))?;
+    if args.n > 4096 {
+        return Err(Failure::Input(format!(
+            "--n: {} is too large for the root search (at most 4096)",
+            args.n
+        )));
+    }
+    if args.derivative > 16 {
+        return Err(Failure::Input(format!(
+            "--derivative: {} is too large (at most 16)",
+            args.derivative
+        )));
+    }
+    let found =
+        sigma.derivative_roots(args.derivative, Interval::new(0.0, 1.0), &RootConfig::default());
+    let verdict = |v: Verdict| match v {
+        Verdict::Unique => "unique",
+        Verdict::Exists => "exists",
+        Verdict::AtMostOne => "at-most-one",
+        Verdict::Unknown => "unknown",
+    };
+    Ok(Object::new()
+        .field(
+            "roots",
+            Json::Array(
+                found
+                    .roots
+                    .iter()
+                    .map(|r| Json::numbers([r.enclosure.lo(), r.enclosure.hi()]))
+                    .collect(),
+            ),
+        )
+        .field(
+            "unique",
+            Json::Array(
+                found.roots.iter().map(|r| Json::Bool(r.verdict == Verdict::Unique)).collect(),
+            ),
+        )
+        .field(
+            "verdicts",
+            Json::Array(
+                found.roots.iter().map(|r| Json::String(verdict(r.verdict).into())).collect(),
+            ),
+        )
+        .field("complete", Json::Bool(found.complete))
+        .build())
 }

@@ -121,8 +121,27 @@ impl Sigma {
     /// ```
     #[must_use]
     pub fn deriv_roots(&self, domain: Interval, config: &RootConfig) -> Roots1 {
+        self.derivative_roots(1, domain, config)
+    }
+
+    /// Every zero of the derivative of order `order` of σⁿ = σⁿ₀ in `domain` (order 0: the
+    /// zeros of σⁿ itself, the nodes j/n, j ≠ 0 mod n), as [`Sigma::deriv_roots`] does for
+    /// order 1.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_curve::Sigma;
+    /// use hi_interval::{Interval, RootConfig};
+    /// // σ⁴ vanishes at 1/4, 2/4 and 3/4.
+    /// let roots = Sigma::new(4).derivative_roots(0, Interval::new(0.1, 0.9), &RootConfig::default());
+    /// assert_eq!(roots.roots.len(), 3);
+    /// assert!(roots.roots[0].enclosure.contains(0.25));
+    /// ```
+    #[must_use]
+    pub fn derivative_roots(&self, order: usize, domain: Interval, config: &RootConfig) -> Roots1 {
         let n = self.n;
-        find_roots_1d(|t| cosine_sum(n, t, 1), |t| cosine_sum(n, t, 2), domain, config)
+        find_roots_1d(|t| cosine_sum(n, t, order), |t| cosine_sum(n, t, order + 1), domain, config)
     }
 }
 
