@@ -908,7 +908,7 @@ fn unwritable_output_exits_1_with_one_line() {
 /// The enclosures and verdicts of `hi basis roots`.
 fn roots(n: &str, derivative: &str) -> (Vec<(f64, f64)>, Vec<String>) {
     let out = ok(&["basis", "roots", "--n", n, "--derivative", derivative]);
-    assert_eq!(out["complete"], Value::Bool(true));
+    assert_eq!(out["complete"], Value::Bool(true), "the search finished");
     let roots = out["roots"]
         .as_array()
         .expect("an array")
@@ -927,7 +927,11 @@ fn roots(n: &str, derivative: &str) -> (Vec<(f64, f64)>, Vec<String>) {
         .iter()
         .map(|u| u == &Value::Bool(true))
         .collect();
-    assert_eq!(unique, verdicts.iter().map(|v| v == "unique").collect::<Vec<_>>());
+    assert_eq!(
+        unique,
+        verdicts.iter().map(|v| v == "unique").collect::<Vec<_>>(),
+        "unique matches the verdicts"
+    );
     (roots, verdicts)
 }
 
