@@ -17,6 +17,7 @@ Basis: hi basis --n N --k K --t T1,... (values, derivatives); hi basis roots --n
 Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivide|nonuniform
   --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
 Surface commands: hi surface eval|mesh|example (see 'hi surface --help').
+Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
 
 Input (--input FILE, or --input - for stdin):
   {\"points\": [[x, y], ...]}   or the bare array   [[x, y], ...]
@@ -55,6 +56,14 @@ Output: {\"roots\": [[lo, hi], ...], \"unique\": [true, ...], \"verdicts\": [\"u
   zero (proven). verdicts: unique, exists (at least one), at-most-one (a zero at an end of
   [0, 1] may lie just outside), unknown. complete: false if a cap stopped the search.
 Example: hi basis roots --n 3 --derivative 1   (zeros at 0, 1/2 and 1)";
+
+/// The output of `hi subdivide`.
+const SUBDIVIDE_MESH_HELP: &str = "\
+Output: {\"files\": [...], \"vertices\": V, \"edges\": E, \"faces\": F} after writing the mesh.
+  Loop, butterfly, sqrt3 and isqrt3 take triangle meshes; catmull-clark and doo-sabin any
+  polygons. Loop and catmull-clark have boundary rules; the others need a closed mesh.
+  glTF output is the mesh triangulated (fans), with smooth normals.
+Example: hi subdivide --scheme catmull-clark --steps 2 cube.obj -o cube2.glb";
 
 /// Prefixes a curve subcommand's help text with the input shape.
 macro_rules! curve_help {
@@ -193,6 +202,55 @@ pub(crate) enum Command {
     /// The harmonic surface through a grid of points: evaluation, meshes, examples.
     #[command(subcommand, after_help = SURFACE_HELP, arg_required_else_help = false)]
     Surface(SurfaceCommand),
+    /// Subdivision surfaces of §4.5: refine a polygon mesh by a classic scheme.
+    #[command(after_help = SUBDIVIDE_MESH_HELP)]
+    Subdivide(SubdivideMeshArgs),
+}
+
+/// The subdivision schemes of `hi subdivide`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum SchemeName {
+    /// Loop (triangles; closed or with boundary).
+    Loop,
+    /// Modified butterfly, Zorin et al. (closed triangle meshes; interpolating).
+    Butterfly,
+    /// Kobbelt's √3 (closed triangle meshes).
+    Sqrt3,
+    /// Interpolating √3, Labsik and Greiner (closed triangle meshes).
+    Isqrt3,
+    /// Catmull-Clark (any polygons; closed or with boundary).
+    CatmullClark,
+    /// Doo-Sabin (any closed polygon mesh).
+    DooSabin,
+}
+
+/// The weights of Loop's scheme.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum LoopBeta {
+    /// Loop's original β.
+    Loop,
+    /// Warren's simpler β.
+    Warren,
+}
+
+/// Options of `hi subdivide`.
+#[derive(Debug, Args)]
+pub(crate) struct SubdivideMeshArgs {
+    /// The scheme.
+    #[arg(long, value_enum)]
+    pub(crate) scheme: SchemeName,
+    /// Number of steps (0 to 8).
+    #[arg(long, value_name = "K", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) steps: usize,
+    /// β of Loop's scheme.
+    #[arg(long, value_enum, default_value = "loop")]
+    pub(crate) loop_weights: LoopBeta,
+    /// The input mesh, `.obj` or `.off`.
+    #[arg(value_name = "IN")]
+    pub(crate) input: PathBuf,
+    /// The output file: `.obj`, `.off`, `.gltf` (with a `.bin`) or `.glb`.
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub(crate) output: PathBuf,
 }
 
 /// The subcommands of `hi curve`.

@@ -10,6 +10,7 @@ mod resample;
 mod rotate;
 mod sample;
 mod subdivide;
+mod subdivide_mesh;
 mod surface_eval;
 mod surface_example;
 mod surface_mesh;
@@ -28,6 +29,7 @@ use crate::output::Json;
 pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
     match command {
         Command::Basis(args) => basis::run(args),
+        Command::Subdivide(args) => subdivide_mesh::run(args),
         Command::Curve(CurveCommand::Eval(args)) => eval::run(args),
         Command::Curve(CurveCommand::Sample(args)) => sample::run(args),
         Command::Curve(CurveCommand::Fairness(args)) => fairness::run(args),

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+//! `hi subdivide`: a polygon mesh refined by one of the subdivision schemes of §4.5.
+
+use std::path::PathBuf;
+
+use hi_surface::export;
+use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
+
+use crate::cli::{LoopBeta, SchemeName, SubdivideMeshArgs};
+use crate::error::Failure;
+use crate::output::{Json, Object};
+
+/// The most steps allowed: each multiplies the faces by 3 or 4, so 8 steps make a cube's 6
+/// faces about 400 000.
+const MAX_STEPS: usize = 8;
+
+/// Subdivides the mesh and writes it; returns `{"files", "vertices", "edges", "faces"}`.
+///
+/// # Errors
+///
+/// [`Failure::Input`] for an unknown extension, a mesh file that cannot be read or is not a
+/// valid manifold mesh, a scheme that does not take this mesh (wrong primitive, boundary),
+/// too many steps, or an output file that cannot be written.
+pub(crate) fn run(args: &SubdivideMeshArgs) -> Result<Json, Failure> {
+    if args.steps > MAX_STEPS {
+        return Err(Failure::input(format!(
+            "--steps: {} is too many (at most {MAX_STEPS})",
+            args.steps
+        )));
+    }
+    let ext = args
+        .output
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .unwrap_or_default();
+    if !matches!(ext.as_str(), "obj" | "off" | "gltf" | "glb") {
+        return Err(Failure::input(format!(
+            "-o: {}: unknown extension (expected .obj, .off, .gltf or .glb)",
+            args.output.display()
+        )));
+    }
+    let mesh = PolyMesh::load(&args.input)
+        .map_err(|e| Failure::input(format!("{}: {e}", args.input.display())))?;
+    let scheme = match args.scheme {
+        SchemeName::Loop => Scheme::Loop(match args.loop_weights {
+            LoopBeta::Loop => LoopWeights::Loop,
+            LoopBeta::Warren => LoopWeights::Warren,
+        }),
+        SchemeName::Butterfly => Scheme::Butterfly,
+        SchemeName::Sqrt3 => Scheme::Sqrt3,
+        SchemeName::Isqrt3 => Scheme::InterpolatingSqrt3,
+        SchemeName::CatmullClark => Scheme::CatmullClark,
+        SchemeName::DooSabin => Scheme::DooSabin,
+    };
+    let refined = scheme
+        .steps(&mesh, args.steps)
+        .map_err(|e| Failure::input(format!("{}: {e}", scheme.name())))?;
+    let files: Vec<PathBuf> = match ext.as_str() {
+        "obj" | "off" => {
+            refined.save(&args.output).map_err(|e| Failure::input(format!("-o: {e}")))?;
+            vec![args.output.clone()]
+        }
+        _ => {
+            let triangles =
+                refined.to_triangle_mesh().map_err(|e| Failure::input(format!("-o: {e}")))?;
+            export::save(&triangles, &args.output)?
+        }
+    };
+    Ok(Object::new()
+        .field(
+            "files",
+            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
+        )
+        .field("vertices", Json::Count(refined.n_vertices()))
+        .field("edges", Json::Count(refined.n_edges()))
+        .field("faces", Json::Count(refined.n_faces()))
+        .build())
+}
