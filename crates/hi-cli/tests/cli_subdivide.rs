@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! End-to-end tests of `hi subdivide`: the refined meshes are read back from the written files
 //! (OBJ parsed here by hand, GLB by the `gltf` crate) and checked against the values the peer
-//! programs give (shared/PEERS.md §3: CGAL, OpenMesh, trimesh agree on them).
+//! programs give (shared/PEERS.md §3: CGAL, `OpenMesh` and trimesh agree on them).
 
 mod common;
 
