@@ -3,6 +3,7 @@
 //! (OBJ parsed here by hand, GLB by the `gltf` crate) and checked against the values the peer
 //! programs give (shared/PEERS.md §3: CGAL, `OpenMesh` and trimesh agree on them).
 
+#[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
 mod common;
 
 use common::{TempFile, bad, ok};

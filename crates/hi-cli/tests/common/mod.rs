@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Helpers shared by the end-to-end tests of the `hi` binary in `cli_compare.rs` and
 //! `cli_surface.rs`: temporary files, running `hi`, and reading its JSON.
-#![allow(dead_code, reason = "each test binary uses a different part of the shared helpers")]
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
