@@ -18,6 +18,7 @@ Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivid
   --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
 Surface commands: hi surface eval|mesh|example (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
+Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron] ...
 
 Input (--input FILE, or --input - for stdin):
   {\"points\": [[x, y], ...]}   or the bare array   [[x, y], ...]
@@ -64,6 +65,21 @@ Output: {\"files\": [...], \"vertices\": V, \"edges\": E, \"faces\": F} after wr
   polygons. Loop and catmull-clark have boundary rules; the others need a closed mesh.
   glTF output is the mesh triangulated (fans), with smooth normals.
 Example: hi subdivide --scheme catmull-clark --steps 2 cube.obj -o cube2.glb";
+
+/// The output of `hi fit`.
+const FIT_HELP: &str = "\
+Output (stdout, and --report): {\"scan\": …, \"points\": P, \"image_points\": Q, \"dropped_points\": D,
+  \"image\": [R, C], \"surface\": [M, N], \"non_star_fraction\": s, \"hole_fraction\": h,
+  \"stages\": [{\"name\": …, \"seconds\": t}, …], \"reduction\": {\"max_deviation\", \"upper_bound\"} | null,
+  \"errors\": {\"mean\", \"rms\", \"max\", \"diagonal\", \"relative\": [mean, rms, max]},
+  \"hausdorff\": {\"distance\", \"relative\"} | null, \"files\": [...]}
+  Rays from the centre sample the scan into a geometry image; the harmonic surface through its
+  texels is written as a mesh over the part of the parameters that covers the object once
+  (2x the image's resolution), or as its grid. non_star_fraction: the rays that met the scan
+  more than once (not star-shaped about the centre; the surface follows the outermost shell
+  there; above 5% a warning is printed). errors: distances from the scan's points to the
+  surface; hausdorff: both ways against the scan's mesh, when it has faces.
+Example: hi fit bunny.obj -o bunny.glb --param flat-octahedron --smooth 1 --reduce 0.25";
 
 /// Prefixes a curve subcommand's help text with the input shape.
 macro_rules! curve_help {
@@ -205,6 +221,49 @@ pub(crate) enum Command {
     /// Subdivision surfaces of §4.5: refine a polygon mesh by a classic scheme.
     #[command(after_help = SUBDIVIDE_MESH_HELP)]
     Subdivide(SubdivideMeshArgs),
+    /// Fit a harmonic surface to a scan through a geometry image (§5.3, §5.4, §5.8).
+    #[command(after_help = FIT_HELP)]
+    Fit(FitArgs),
+}
+
+/// The geometry-image layouts of `hi fit`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum ParamName {
+    /// Latitude–longitude rays over a doubled meridian (algorithm 2).
+    Sphere,
+    /// The octahedral square, wrapped as it is (seams at its edges, as in figure 5.19).
+    Octahedron,
+    /// The octahedral square extended by its symmetry (seamless).
+    FlatOctahedron,
+}
+
+/// Options of `hi fit`.
+#[derive(Debug, Args)]
+pub(crate) struct FitArgs {
+    /// The scan: .obj, .ply, .off, .stl, .xyz or .pts.
+    #[arg(value_name = "SCAN")]
+    pub(crate) scan: PathBuf,
+    /// The output: a mesh of the surface (.glb, .gltf, .obj) or its grid (.json, for 'hi surface').
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub(crate) output: PathBuf,
+    /// The geometry image's parameterisation.
+    #[arg(long, value_enum, default_value = "sphere")]
+    pub(crate) param: ParamName,
+    /// Geometry image size, rows×columns (rows even).
+    #[arg(long, value_name = "RxC", default_value = "128x128", value_parser = parse_size)]
+    pub(crate) resolution: Size,
+    /// Smooth the geometry image with a periodic Gaussian of σ = K texels (§5.4).
+    #[arg(long, value_name = "K", value_parser = parse_finite)]
+    pub(crate) smooth: Option<f64>,
+    /// Keep about this fraction of the texels by Theorem 5.3 (§5.8 keeps 0.25).
+    #[arg(long, value_name = "F", value_parser = parse_finite)]
+    pub(crate) reduce: Option<f64>,
+    /// The centre of the rays, x,y,z (default: the mean of the points).
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = parse_float_list)]
+    pub(crate) centre: Option<FloatList>,
+    /// Also write the summary as JSON to this file.
+    #[arg(long, value_name = "R.json")]
+    pub(crate) report: Option<PathBuf>,
 }
 
 /// The subdivision schemes of `hi subdivide`.

@@ -5,6 +5,7 @@
 mod basis;
 mod eval;
 mod fairness;
+mod fit;
 mod nonuniform;
 mod resample;
 mod rotate;
@@ -30,6 +31,7 @@ pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
     match command {
         Command::Basis(args) => basis::run(args),
         Command::Subdivide(args) => subdivide_mesh::run(args),
+        Command::Fit(args) => fit::run(args),
         Command::Curve(CurveCommand::Eval(args)) => eval::run(args),
         Command::Curve(CurveCommand::Sample(args)) => sample::run(args),
         Command::Curve(CurveCommand::Fairness(args)) => fairness::run(args),

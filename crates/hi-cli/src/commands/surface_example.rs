@@ -95,7 +95,7 @@ fn find_test_surface(name: &str) -> Result<ParametricSurface, Failure> {
 }
 
 /// Writes `json` to the file at `path`.
-fn write_file(path: &Path, json: &Json, pretty: bool) -> Result<(), Failure> {
+pub(crate) fn write_file(path: &Path, json: &Json, pretty: bool) -> Result<(), Failure> {
     let fail = |e: std::io::Error| Failure::input(format!("{}: cannot write: {e}", path.display()));
     let file = std::fs::File::create(path).map_err(fail)?;
     write_json(&mut std::io::BufWriter::new(file), json, pretty).map_err(fail)

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+//! `hi fit`: a harmonic surface fitted to a scan through a geometry image (§5.3, §5.4, §5.8),
+//! with a progress display, a summary and a warning when the scan is not star-shaped.
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+use glam::DVec3;
+use hi_geomimage::scan::read_scan;
+use hi_geomimage::{FitOptions, Layout, Smoothing, fit};
+use hi_surface::export::{self, MeshFormat};
+use hi_surface::{MeshOptions, TriangleMesh};
+use indicatif::{ProgressBar, ProgressStyle};
+
+use crate::cli::{FitArgs, ParamName};
+use crate::commands::surface_example::write_file;
+use crate::error::{Failure, stderr_line};
+use crate::output::{Json, Object};
+
+/// Above this fraction of rays meeting the scan more than once, `hi fit` warns.
+const NON_STAR_WARNING: f64 = 0.05;
+
+/// Fits, writes the surface and returns the summary (also written to `--report`).
+///
+/// # Errors
+///
+/// [`Failure::Input`] for an unreadable or malformed scan (with its line or byte), bad
+/// options, an unknown output extension, or an output that cannot be written.
+pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
+    let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let as_grid = ext.as_deref() == Some("json");
+    if !as_grid {
+        MeshFormat::from_path(&args.output)
+            .map_err(|e| Failure::input(format!("-o: {e} (or .json for the surface's grid)")))?;
+    }
+    let centre = match &args.centre {
+        None => None,
+        Some(list) => match list.0[..] {
+            [x, y, z] => Some(DVec3::new(x, y, z)),
+            _ => return Err(Failure::input("--centre: expected three numbers x,y,z")),
+        },
+    };
+    let scan = read_scan(&args.scan)
+        .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+    let options = FitOptions {
+        layout: match args.param {
+            ParamName::Sphere => Layout::Sphere,
+            ParamName::Octahedron => Layout::Octahedron,
+            ParamName::FlatOctahedron => Layout::FlatOctahedron,
+        },
+        rows: args.resolution.0,
+        cols: args.resolution.1,
+        centre,
+        smoothing: args.smooth.map(|sigma| Smoothing::Gaussian { sigma }),
+        reduce: args.reduce,
+        ..FitOptions::default()
+    };
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new_spinner();
+        if let Ok(style) = ProgressStyle::with_template("{spinner} {elapsed} {msg}") {
+            bar.set_style(style);
+        }
+        bar.enable_steady_tick(std::time::Duration::from_millis(100));
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    let result = fit(&scan, &options, &mut |stage| bar.set_message(stage));
+    bar.finish_and_clear();
+    let fitted = result.map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+    let report = &fitted.report;
+    if report.non_star_fraction > NON_STAR_WARNING {
+        eprintln!(
+            "{}",
+            stderr_line(&format!(
+                "warning: {:.1}% of the rays meet {} more than once: it is not star-shaped about the centre, and the surface follows its outermost shell there",
+                100.0 * report.non_star_fraction,
+                args.scan.display()
+            ))
+        );
+    }
+    let files: Vec<PathBuf> = if as_grid {
+        let grid = fitted.surface.rows();
+        let json = Object::new()
+            .field("grid", Json::Array(grid.iter().map(|row| Json::points(row)).collect()))
+            .build();
+        write_file(&args.output, &json, false)?;
+        vec![args.output.clone()]
+    } else {
+        let (u0, u1) = options.layout.covering_window();
+        let (m, n) = (fitted.surface.m(), fitted.surface.n());
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a window of at most one period times a grid size"
+        )]
+        let n_u = ((2 * m) as f64 * (u1 - u0)).round().max(3.0) as usize;
+        let mesh_options = MeshOptions {
+            n_u,
+            n_v: 2 * n,
+            u_range: [u0, u1],
+            v_range: [0.0, 1.0],
+            ..MeshOptions::default()
+        };
+        let mesh = TriangleMesh::try_from_surface(&fitted.surface, &mesh_options)?;
+        export::save(&mesh, &args.output)?
+    };
+    let summary = summary(args, &fitted, &files);
+    if let Some(path) = &args.report {
+        write_file(path, &summary, true)?;
+    }
+    Ok(summary)
+}
+
+/// The summary of a fit as JSON.
+fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Json {
+    let r = &fitted.report;
+    let stages = r
+        .stages
+        .iter()
+        .map(|s| {
+            Object::new()
+                .field("name", Json::String(s.name.to_owned()))
+                .field("seconds", Json::Number(s.seconds))
+                .build()
+        })
+        .collect();
+    let reduction = r.reduction.map_or(Json::Null, |e| {
+        Object::new()
+            .field("max_deviation", Json::Number(e.max_deviation))
+            .field("upper_bound", Json::Number(e.upper_bound))
+            .build()
+    });
+    let errors = r.errors.as_ref().map_or(Json::Null, |d| {
+        Object::new()
+            .field("mean", Json::Number(d.mean))
+            .field("rms", Json::Number(d.rms))
+            .field("max", Json::Number(d.max))
+            .field("diagonal", Json::Number(d.diagonal))
+            .field("relative", Json::numbers(d.relative()))
+            .build()
+    });
+    let hausdorff = r.hausdorff.as_ref().map_or(Json::Null, |h| {
+        let diagonal = h.scan_to_surface.diagonal;
+        Object::new()
+            .field("distance", Json::Number(h.distance()))
+            .field(
+                "relative",
+                Json::Number(if diagonal > 0.0 { h.distance() / diagonal } else { 0.0 }),
+            )
+            .field("scan_to_surface_max", Json::Number(h.scan_to_surface.max))
+            .field("surface_to_scan_max", Json::Number(h.surface_to_scan.max))
+            .build()
+    });
+    Object::new()
+        .field("scan", Json::String(args.scan.display().to_string()))
+        .field("points", Json::Count(r.points))
+        .field("image_points", Json::Count(r.image_points))
+        .field("dropped_points", Json::Count(r.dropped_points))
+        .field(
+            "image",
+            Json::Array(vec![
+                Json::Count(fitted.spherical.image.rows()),
+                Json::Count(fitted.spherical.image.cols()),
+            ]),
+        )
+        .field(
+            "surface",
+            Json::Array(vec![Json::Count(r.surface_size.0), Json::Count(r.surface_size.1)]),
+        )
+        .field("non_star_fraction", Json::Number(r.non_star_fraction))
+        .field("hole_fraction", Json::Number(r.hole_fraction))
+        .field("stages", Json::Array(stages))
+        .field("reduction", reduction)
+        .field("errors", errors)
+        .field("hausdorff", hausdorff)
+        .field(
+            "files",
+            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
+        )
+        .build()
+}

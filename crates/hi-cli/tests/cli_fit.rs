@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+//! End-to-end tests of `hi fit` on scans generated here: points on an ellipsoid (the fitted
+//! grid must lie on it), two nested spheres (never star-shaped: a warning), and malformed
+//! files (one line naming the problem).
+
+#[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
+mod common;
+
+use std::f64::consts::PI;
+
+use common::{TempFile, bad, num, ok, run};
+use serde_json::Value;
+
+/// `n` points on the ellipsoid with semi-axes `axes`, as XYZ text.
+fn ellipsoid_xyz(n: usize, axes: [f64; 3]) -> String {
+    let golden = PI * (3.0 - 5f64.sqrt());
+    (0..n)
+        .map(|k| {
+            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+            let s = (1.0 - z * z).sqrt();
+            let phi = k as f64 * golden;
+            format!("{} {} {}\n", axes[0] * s * phi.cos(), axes[1] * s * phi.sin(), axes[2] * z)
+        })
+        .collect()
+}
+
+fn scan_file(text: &str, ext: &str) -> TempFile {
+    let file = TempFile::path_with(ext);
+    std::fs::write(file.as_path(), text).expect("temp file is writable");
+    file
+}
+
+#[test]
+fn an_ellipsoid_fits_and_its_grid_lies_on_it() {
+    let axes = [1.5, 1.0, 0.7];
+    let scan = scan_file(&ellipsoid_xyz(40_000, axes), "xyz");
+    let grid_file = TempFile::path_with("json");
+    let report_file = TempFile::path_with("json");
+    let out = ok(&[
+        "fit",
+        scan.path(),
+        "-o",
+        grid_file.path(),
+        "--resolution",
+        "32x32",
+        "--param",
+        "flat-octahedron",
+        "--report",
+        report_file.path(),
+    ]);
+    assert_eq!(out["points"].as_u64(), Some(40_000));
+    assert_eq!(num(&out["non_star_fraction"]), 0.0);
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(report_file.as_path()).expect("report"))
+            .expect("JSON");
+    assert_eq!(report, out, "the report file holds the printed summary");
+    let relative = out["errors"]["relative"].as_array().expect("errors");
+    assert!(num(&relative[0]) < 1e-3, "mean distance {}", relative[0]);
+    // The grid's points are the geometry image's texels: on the ellipsoid.
+    let grid: Value =
+        serde_json::from_str(&std::fs::read_to_string(grid_file.as_path()).expect("grid"))
+            .expect("JSON");
+    let rows = grid["grid"].as_array().expect("rows");
+    assert_eq!(rows.len(), 32);
+    for row in rows {
+        for p in row.as_array().expect("a row") {
+            let [x, y, z] = [0, 1, 2].map(|i| num(&p[i]));
+            let q = (x / axes[0]).powi(2) + (y / axes[1]).powi(2) + (z / axes[2]).powi(2);
+            assert!((q - 1.0).abs() < 1e-2, "({x}, {y}, {z}): {q}");
+        }
+    }
+    // And as a mesh: a GLB that reads back.
+    let glb = TempFile::path_with("glb");
+    let out =
+        ok(&["fit", scan.path(), "-o", glb.path(), "--resolution", "16x16", "--reduce", "0.25"]);
+    assert_eq!(out["surface"], serde_json::json!([8, 8]));
+    assert!(num(&out["reduction"]["max_deviation"]) <= num(&out["reduction"]["upper_bound"]));
+    let (doc, _, _) = gltf::import(glb.as_path()).expect("the GLB reads back");
+    assert_eq!(doc.meshes().count(), 1);
+}
+
+#[test]
+fn nested_spheres_get_a_warning() {
+    let mut text = ellipsoid_xyz(5000, [1.0; 3]);
+    text.push_str(&ellipsoid_xyz(5000, [2.0; 3]));
+    let scan = scan_file(&text, "xyz");
+    let out_file = TempFile::path_with("obj");
+    let out = run(&[
+        "fit",
+        scan.path(),
+        "-o",
+        out_file.path(),
+        "--resolution",
+        "16x16",
+        "--centre",
+        "0,0,0",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let stderr = String::from_utf8(out.stderr).expect("UTF-8");
+    assert!(
+        stderr.starts_with("hi: warning: 100.0% of the rays meet")
+            && stderr.matches('\n').count() == 1,
+        "{stderr}"
+    );
+}
+
+#[test]
+fn bad_scans_and_options_are_named() {
+    let out = TempFile::path_with("glb");
+    let scan = scan_file("0 0 0\n1 0 0\n0 1\n", "xyz");
+    bad(&["fit", scan.path(), "-o", out.path()], "XYZ, line 3: expected 3 numbers");
+    let good = scan_file(&ellipsoid_xyz(500, [1.0; 3]), "xyz");
+    bad(&["fit", good.path(), "-o", "out.stl"], "-o:");
+    bad(&["fit", good.path(), "-o", out.path(), "--resolution", "15x16"], "an even number of rows");
+    bad(&["fit", good.path(), "-o", out.path(), "--reduce", "2"], "reduce");
+    bad(
+        &["fit", good.path(), "-o", out.path(), "--centre", "1,2"],
+        "--centre: expected three numbers",
+    );
+    bad(&["fit", "scan.las", "-o", out.path()], "unknown scan format");
+}
