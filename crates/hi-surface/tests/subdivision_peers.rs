@@ -246,7 +246,8 @@ fn live_peers_match() {
     // spot.obj: closed, 2930 vertices, 5856 triangles (SOURCES.md there).
     match PolyMesh::load(models.join("spot.obj")) {
         Ok(spot) => inputs.push(("spot".into(), spot)),
-        Err(e) => skip(&format!("the real meshes are absent ({e})")),
+        // Third-party data, not a peer program: its absence is said, never an error.
+        Err(e) => eprintln!("real mesh skipped: the shared data folder is absent ({e})"),
     }
     let mut jobs = String::new();
     let mut expected = Vec::new();
