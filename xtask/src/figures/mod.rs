@@ -14,6 +14,7 @@
 //! | [`polygons`] | 3.7–3.12, 3.15–3.18: polygons by METAPOST, B-spline and harmonic interpolation, curvature plots; the fairness table |
 //! | [`nonuniform`] | 3.20–3.23, non-uniform harmonic interpolation (§3.10) |
 //! | [`theorems`] | 5.2, 5.6: subdivision, rotation and insertion (chapter 5) |
+//! | [`fitting`] | 5.12: a surface fitted to scattered points through a geometry image |
 //! | [`surfaces`] | 4.1, 5.1, 5.3–5.5, 5.31–5.43: surfaces as glTF models; the §5.9 curvature tables |
 //!
 //! [`plot`] gives them a common look on top of plotters and [`data`] holds the point sets.
@@ -29,6 +30,7 @@ mod basis;
 mod chapter2;
 mod curves;
 mod data;
+mod fitting;
 mod glb;
 mod nonuniform;
 mod plot;
@@ -143,6 +145,7 @@ fn registry() -> Vec<Figure> {
         nonuniform::FIGURES,
         polygons::FIGURES,
         surfaces::FIGURES,
+        fitting::FIGURES,
         theorems::FIGURES,
     ]
     .concat();
