@@ -134,40 +134,52 @@ pub fn distances_to_surface(
     oversample: usize,
 ) -> Result<Distances, Error> {
     check_points(points, "point")?;
-    let (rows, cols) = (surface.m().max(2) * oversample, surface.n().max(2) * oversample);
-    if oversample == 0 || rows.saturating_mul(cols) > crate::MAX_TEXELS {
-        return Err(Error::InvalidOption {
-            name: "oversample",
-            value: oversample as f64,
-            expected: "at least 1, and at most 2²⁶ samples in all",
-        });
-    }
-    let samples = surface.sample_uniform(rows, cols, 0, 0)?.values;
-    let grid = SampleGrid { rows, cols, samples: &samples };
-    let tree: ImmutableKdTree<f64, 3> =
-        ImmutableKdTree::new_from_slice(&samples.iter().map(|p| p.to_array()).collect::<Vec<_>>())
-            .map_err(|_| Error::Degenerate { what: "the surface samples do not form a kd-tree" })?;
-    let k = NonZero::new(4).unwrap_or(NonZero::<usize>::MIN);
-    let per_point = points
-        .par_iter()
-        .map(|p| {
-            let near = tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
-            near.iter()
-                .map(|n| grid.distance_around(n.item as usize, *p))
-                .fold(f64::INFINITY, f64::min)
-        })
-        .collect();
-    Ok(Distances::from_values(per_point, bounding_diagonal(points)))
+    let grid = SampleGrid::of(surface, oversample)?;
+    grid.distances(points)
 }
 
 /// A periodic grid of surface samples, triangulated quad by quad.
-struct SampleGrid<'a> {
+struct SampleGrid {
     rows: usize,
     cols: usize,
-    samples: &'a [DVec3],
+    samples: Vec<DVec3>,
 }
 
-impl SampleGrid<'_> {
+impl SampleGrid {
+    /// The surface sampled `oversample` times finer than its grid (by FFT).
+    fn of(surface: &HarmonicSurface<DVec3>, oversample: usize) -> Result<Self, Error> {
+        let (rows, cols) = (surface.m().max(2) * oversample, surface.n().max(2) * oversample);
+        if oversample == 0 || rows.saturating_mul(cols) > crate::MAX_TEXELS {
+            return Err(Error::InvalidOption {
+                name: "oversample",
+                value: oversample as f64,
+                expected: "at least 1, and at most 2²⁶ samples in all",
+            });
+        }
+        let samples = surface.sample_uniform(rows, cols, 0, 0)?.values;
+        Ok(Self { rows, cols, samples })
+    }
+
+    /// The distance from each of `points` to the triangulated samples.
+    fn distances(&self, points: &[DVec3]) -> Result<Distances, Error> {
+        let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(
+            &self.samples.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
+        )
+        .map_err(|_| Error::Degenerate { what: "the surface samples do not form a kd-tree" })?;
+        let k = NonZero::new(4).unwrap_or(NonZero::<usize>::MIN);
+        let per_point = points
+            .par_iter()
+            .map(|p| {
+                let near =
+                    tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+                near.iter()
+                    .map(|n| self.distance_around(n.item as usize, *p))
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .collect();
+        Ok(Distances::from_values(per_point, bounding_diagonal(points)))
+    }
+
     fn at(&self, i: usize, j: usize) -> DVec3 {
         self.samples[(i % self.rows) * self.cols + j % self.cols]
     }
@@ -278,9 +290,10 @@ pub fn hausdorff(
     triangles: &[[u32; 3]],
     oversample: usize,
 ) -> Result<Hausdorff, Error> {
-    let scan_to_surface = distances_to_surface(surface, vertices, oversample)?;
-    let samples =
-        surface.sample_uniform(surface.m() * oversample, surface.n() * oversample, 0, 0)?.values;
-    let surface_to_scan = distances_to_mesh(&samples, vertices, triangles)?;
+    check_points(vertices, "vertex")?;
+    // One sampling of the surface serves both directions.
+    let grid = SampleGrid::of(surface, oversample)?;
+    let scan_to_surface = grid.distances(vertices)?;
+    let surface_to_scan = distances_to_mesh(&grid.samples, vertices, triangles)?;
     Ok(Hausdorff { scan_to_surface, surface_to_scan })
 }

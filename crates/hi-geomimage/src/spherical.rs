@@ -319,21 +319,15 @@ pub fn spherical_image(
             let found =
                 tree.query(&q).nearest_n::<SquaredEuclidean<f64>>(k).within(chord2).execute();
             if found.len() >= min_neighbours {
-                return Hit::Found(
-                    estimate(
-                        &found
-                            .iter()
-                            .map(|f| (f.distance, distances[f.item as usize]))
-                            .collect::<Vec<_>>(),
-                        chord2,
-                        gap,
-                    ),
-                    false,
-                )
-                .with_shells(
-                    &found.iter().map(|f| distances[f.item as usize]).collect::<Vec<_>>(),
+                let (r, several) = estimate(
+                    &found
+                        .iter()
+                        .map(|f| (f.distance, distances[f.item as usize]))
+                        .collect::<Vec<_>>(),
+                    chord2,
                     gap,
                 );
+                return Hit::Found(r, several);
             }
             if angle >= max_angle {
                 return Hit::Hole;
@@ -422,16 +416,6 @@ fn complete_by_symmetry<T: Copy>(
     }
 }
 
-impl Hit {
-    /// Marks a hit as seeing several shells when the sorted distances have a gap.
-    fn with_shells(self, distances: &[f64], gap: f64) -> Self {
-        match self {
-            Self::Found(r, _) => Self::Found(r, shells(distances, gap).len() > 1),
-            Self::Hole => Self::Hole,
-        }
-    }
-}
-
 /// The groups of `distances` (sorted) separated by gaps larger than `gap`.
 fn shells(distances: &[f64], gap: f64) -> Vec<Vec<f64>> {
     let mut sorted = distances.to_vec();
@@ -448,8 +432,8 @@ fn shells(distances: &[f64], gap: f64) -> Vec<Vec<f64>> {
 
 /// The distance along a ray from the gathered points `(chord², distance)`: the outermost
 /// shell's distances averaged with weights (1 − chord²/limit)² + ε, which fall to nearly 0 at
-/// the edge of the search cone.
-fn estimate(found: &[(f64, f64)], limit: f64, gap: f64) -> f64 {
+/// the edge of the search cone; and whether the points form several shells.
+fn estimate(found: &[(f64, f64)], limit: f64, gap: f64) -> (f64, bool) {
     let groups = shells(&found.iter().map(|f| f.1).collect::<Vec<_>>(), gap);
     let outer_min = groups.last().and_then(|g| g.first().copied()).unwrap_or(0.0);
     let (mut sum, mut weight) = (0.0, 0.0);
@@ -460,7 +444,7 @@ fn estimate(found: &[(f64, f64)], limit: f64, gap: f64) -> f64 {
             weight += w;
         }
     }
-    sum / weight
+    (sum / weight, groups.len() > 1)
 }
 
 /// Fills the holes of a periodic image pass by pass: a hole with known 4-neighbours takes
