@@ -81,7 +81,43 @@ fn closed_shapes() -> Vec<(&'static str, PolyMesh)> {
         ("octa", PolyMesh::octahedron()),
         ("tricube", PolyMesh::triangulated_cube()),
         ("star", PolyMesh::star()),
+        ("quad-star", PolyMesh::quad_star()),
+        ("tri-quad-star", PolyMesh::quad_star().triangulated().expect("fan")),
     ]
+}
+
+/// The volume enclosed by a closed mesh (divergence theorem over the fan triangles): positive
+/// when the faces are counter-clockwise about the outward normal.
+fn signed_volume(m: &PolyMesh) -> f64 {
+    let p = m.positions();
+    m.faces()
+        .flat_map(|f| (1..f.len() - 1).map(move |i| [f[0], f[i], f[i + 1]]))
+        .map(|[a, b, c]| p[a as usize].dot(p[b as usize].cross(p[c as usize])) / 6.0)
+        .sum()
+}
+
+#[test]
+fn the_quad_star_is_the_cube_with_six_outward_frusta() {
+    let star = PolyMesh::quad_star();
+    assert!(star.is_closed(), "closed");
+    // Cube [−1, 1]³ (volume 8) plus six frusta of height 1.2 between squares of areas 4 and
+    // 0.16: h/3·(A₁ + A₂ + √(A₁A₂)) = 0.4·4.96 each.
+    let expected = 8.0 + 6.0 * 0.4 * (4.0 + 0.16 + 0.8);
+    let vol = signed_volume(&star);
+    assert!((vol - expected).abs() < 1e-12, "volume {vol}, expected {expected}");
+    let tri = star.triangulated().expect("fan");
+    assert!((signed_volume(&tri) - expected).abs() < 1e-12, "the fan keeps the volume");
+    assert_eq!(tri.n_edges(), 60 + 30, "one diagonal per quad");
+    // The cube's corners have valence 3 + 3 (three cube edges, three spike edges), the tops 3.
+    assert_eq!((star.valence(0), star.valence(8)), (6, 3), "valences");
+}
+
+#[test]
+fn the_fan_of_the_cube_is_the_triangulated_cube() {
+    let fan = PolyMesh::cube().triangulated().expect("fan");
+    let fixed = PolyMesh::triangulated_cube();
+    assert_eq!(fan.positions(), fixed.positions(), "same vertices");
+    assert!(fan.faces().eq(fixed.faces()), "same triangles in the same order");
 }
 
 fn is_triangle_mesh(m: &PolyMesh) -> bool {

@@ -16,6 +16,7 @@
 //! | [`theorems`] | 5.2, 5.6: subdivision, rotation and insertion (chapter 5) |
 //! | [`fitting`] | 5.12: a surface fitted to scattered points through a geometry image |
 //! | [`surfaces`] | 4.1, 5.1, 5.3–5.5, 5.31–5.43: surfaces as glTF models; the §5.9 curvature tables |
+//! | [`subdivision`] | 4.11–4.35: subdivision schemes on the cube, the star and a head as glTF models; Table 4.1 |
 //!
 //! [`plot`] gives them a common look on top of plotters and [`data`] holds the point sets.
 //! To add a figure, write its drawing function in a topic module (a new one for a new topic) and
@@ -35,6 +36,7 @@ mod glb;
 mod nonuniform;
 mod plot;
 mod polygons;
+mod subdivision;
 mod surfaces;
 mod theorems;
 
@@ -145,6 +147,7 @@ fn registry() -> Vec<Figure> {
         nonuniform::FIGURES,
         polygons::FIGURES,
         surfaces::FIGURES,
+        subdivision::FIGURES,
         fitting::FIGURES,
         theorems::FIGURES,
     ]
@@ -155,7 +158,7 @@ fn registry() -> Vec<Figure> {
 
 /// Every table, in the order of the index page.
 fn tables() -> Vec<Table> {
-    let all: [&[Table]; 2] = [polygons::TABLES, surfaces::TABLES];
+    let all: [&[Table]; 3] = [polygons::TABLES, subdivision::TABLES, surfaces::TABLES];
     all.concat()
 }
 

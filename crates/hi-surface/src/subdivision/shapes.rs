@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 //! Small closed control meshes for the subdivision figures of Hardy 2005, §4.5 (the cube and
-//! the star of figures 4.11–4.34) and for the peer comparisons.
+//! the star of figures 4.11–4.34) and for the peer comparisons, and the fan triangulation of
+//! any mesh.
 
 use glam::DVec3;
 
-use super::PolyMesh;
+use super::{MeshError, PolyMesh};
 
 impl PolyMesh {
     /// The unit cube [0, 1]³ as six quads (the vertex order and faces of `cube.off` of the
@@ -99,5 +100,75 @@ impl PolyMesh {
             }
         }
         PolyMesh::try_new(positions, &faces).expect("the star is a valid closed mesh")
+    }
+
+    /// A star of quadrilaterals: the cube [−1, 1]³ with a tapered spike on each face. Each
+    /// face (c₀, c₁, c₂, c₃) with centre c and outward normal n keeps its corners and gains a
+    /// top tᵢ = c + 0.2·(cᵢ − c) + 1.2·n, joined by four side quads (cᵢ, cᵢ₊₁, tᵢ₊₁, tᵢ) and
+    /// closed by the top (t₀, t₁, t₂, t₃): V, E, F = 32, 60, 30. The thesis's star of figures
+    /// 4.12–4.33 is drawn but not given; this is a stand-in with the same character (spikes
+    /// on a convex core, vertices of valence 3 to 6), all quads, so that Catmull-Clark and
+    /// Doo-Sabin see the quad star and [`PolyMesh::triangulated`] gives the triangle one.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let star = hi_surface::subdivision::PolyMesh::quad_star();
+    /// assert_eq!((star.n_vertices(), star.n_edges(), star.n_faces()), (32, 60, 30));
+    /// assert!(star.is_closed() && star.faces().all(|f| f.len() == 4));
+    /// ```
+    ///
+    /// # Panics
+    ///
+    /// Never: the mesh is fixed and checked by the tests.
+    #[must_use]
+    pub fn quad_star() -> Self {
+        let cube = PolyMesh::cube();
+        let mut positions: Vec<DVec3> =
+            cube.positions().iter().map(|&p| 2.0 * p - DVec3::ONE).collect();
+        let mut faces = Vec::with_capacity(30);
+        for f in cube.faces() {
+            let corners: Vec<DVec3> = f.iter().map(|&k| positions[k as usize]).collect();
+            let centre = corners.iter().sum::<DVec3>() / 4.0;
+            // The cube's faces are squares about the origin: the centre is the outward normal.
+            let normal = centre.normalize();
+            let top = positions.len() as u32;
+            for &c in &corners {
+                positions.push(centre + 0.2 * (c - centre) + 1.2 * normal);
+            }
+            for i in 0..4 {
+                let j = (i + 1) % 4;
+                faces.push([f[i], f[j], top + j as u32, top + i as u32]);
+            }
+            faces.push([top, top + 1, top + 2, top + 3]);
+        }
+        PolyMesh::try_new(positions, &faces).expect("the quad star is a valid closed mesh")
+    }
+
+    /// The mesh with every face (v₀, v₁, …, vₖ₋₁) split into the fan of triangles
+    /// (v₀, vᵢ, vᵢ₊₁), i = 1 … k − 2: the same vertices, in the same order. On the cube it
+    /// gives [`PolyMesh::triangulated_cube`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_surface::subdivision::PolyMesh;
+    ///
+    /// let t = PolyMesh::quad_star().triangulated()?;
+    /// assert_eq!((t.n_vertices(), t.n_faces()), (32, 60));
+    /// assert_eq!(PolyMesh::cube().triangulated()?.faces().count(), 12);
+    /// # Ok::<(), hi_surface::subdivision::MeshError>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// [`MeshError::NonManifoldEdge`] if a new diagonal (v₀, vᵢ) is already an edge of the
+    /// mesh (two faces that share two vertices that are not neighbours in one of them).
+    pub fn triangulated(&self) -> Result<Self, MeshError> {
+        let faces: Vec<[u32; 3]> = self
+            .faces()
+            .flat_map(|f| (1..f.len() - 1).map(move |i| [f[0], f[i], f[i + 1]]))
+            .collect();
+        PolyMesh::try_new(self.positions().to_vec(), &faces)
     }
 }

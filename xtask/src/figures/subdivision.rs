@@ -1,0 +1,596 @@
+// SPDX-License-Identifier: MIT
+//! Figures 4.11–4.35 and Table 4.1: the subdivision schemes of §4.5 on the cube, the star and
+//! a head, as binary glTF models, and the comparison of the schemes measured on them.
+//!
+//! Every stage is a [`PolyMesh`] from `hi_surface::subdivision`, drawn as its faces split into
+//! triangle fans with area-weighted vertex normals ([`PolyMesh::to_triangle_mesh`]); the limit
+//! surfaces of Loop and Catmull-Clark put every vertex of the third step on the limit surface
+//! with its exact limit normal ([`loop_limit`], [`catmull_clark_limit`]); the other schemes
+//! have no closed-form limit, and their "limit" is the fourth step.
+
+use std::f64::consts::PI;
+use std::fmt::Write as _;
+
+use anyhow::{Context, Result, ensure};
+use glam::DVec3;
+use hi_surface::TriangleMesh;
+use hi_surface::subdivision::{
+    LimitPoint, LoopWeights, PolyMesh, Scheme, catmull_clark_limit, loop_limit,
+};
+
+use super::glb::glb;
+use super::{Figure, Format, Panel, Table};
+
+/// The control meshes of the figures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Shape {
+    /// [`PolyMesh::cube`]: six quads.
+    Cube,
+    /// [`PolyMesh::triangulated_cube`]: twelve triangles.
+    TriCube,
+    /// [`PolyMesh::quad_star`]: thirty quads.
+    Star,
+    /// The quad star split into sixty triangles ([`PolyMesh::triangulated`]).
+    TriStar,
+    /// [`head`]: a coarse closed triangle mesh of a head.
+    Head,
+}
+
+impl Shape {
+    fn mesh(self) -> Result<PolyMesh> {
+        Ok(match self {
+            Shape::Cube => PolyMesh::cube(),
+            Shape::TriCube => PolyMesh::triangulated_cube(),
+            Shape::Star => PolyMesh::quad_star(),
+            Shape::TriStar => PolyMesh::quad_star().triangulated()?,
+            Shape::Head => head()?,
+        })
+    }
+}
+
+/// Loop with Loop's β, as in the thesis.
+const LOOP: Scheme = Scheme::Loop(LoopWeights::Loop);
+
+/// The steps shown by the "first four steps" figures: the control mesh and three steps.
+const LAST_STEP: usize = 3;
+
+/// The steps of the "limit" of a scheme without a closed-form limit.
+const LIMIT_STEPS: usize = 4;
+
+/// The steps of the head of figure 4.35.
+const HEAD_STEPS: usize = 2;
+
+/// The mesh after `steps` steps of `scheme` on `shape`, checked: an interpolating scheme keeps
+/// the control vertices (bit for bit, as the first vertices of the result).
+fn refined(scheme: Scheme, shape: Shape, steps: usize) -> Result<PolyMesh> {
+    let control = shape.mesh()?;
+    let mesh = scheme.steps(&control, steps)?;
+    if scheme.is_interpolating() {
+        ensure!(
+            mesh.positions()[..control.n_vertices()] == *control.positions(),
+            "{} moved a control vertex of {shape:?}",
+            scheme.name()
+        );
+    }
+    Ok(mesh)
+}
+
+/// A stage of a "first four steps" figure.
+fn stage(scheme: Scheme, shape: Shape, steps: usize) -> Result<Vec<u8>> {
+    glb(&refined(scheme, shape, steps)?.to_triangle_mesh()?)
+}
+
+/// The mesh whose vertices are `limit`'s positions on `mesh`'s faces, with the limit normals.
+fn limit_mesh(mesh: &PolyMesh, limit: &[LimitPoint]) -> Result<TriangleMesh> {
+    let faces: Vec<Vec<u32>> = mesh.faces().map(<[u32]>::to_vec).collect();
+    let on_limit = PolyMesh::try_new(limit.iter().map(|l| l.position).collect(), &faces)?;
+    let fan = on_limit.to_triangle_mesh()?;
+    let normals = limit.iter().zip(fan.normals()).map(|(l, &n)| l.normal.unwrap_or(n)).collect();
+    Ok(TriangleMesh::try_new(
+        fan.positions().to_vec(),
+        normals,
+        fan.uvs().to_vec(),
+        fan.triangles().to_vec(),
+    )?)
+}
+
+/// The limit surface of `scheme` on `shape`: the third step pushed to the limit (Loop,
+/// Catmull-Clark) or the fourth step.
+fn limit(scheme: Scheme, shape: Shape) -> Result<Vec<u8>> {
+    let mesh = match scheme {
+        Scheme::Loop(w) => {
+            let mesh = refined(scheme, shape, LAST_STEP)?;
+            limit_mesh(&mesh, &loop_limit(&mesh, w)?)?
+        }
+        Scheme::CatmullClark => {
+            let mesh = refined(scheme, shape, LAST_STEP)?;
+            limit_mesh(&mesh, &catmull_clark_limit(&mesh)?)?
+        }
+        _ => refined(scheme, shape, LIMIT_STEPS)?.to_triangle_mesh()?,
+    };
+    glb(&mesh)
+}
+
+/// The head of figure 4.35 after [`HEAD_STEPS`] steps of `scheme` (the control mesh for
+/// `None`).
+fn head_stage(scheme: Option<Scheme>) -> Result<Vec<u8>> {
+    match scheme {
+        Some(s) => stage(s, Shape::Head, HEAD_STEPS),
+        None => glb(&Shape::Head.mesh()?.to_triangle_mesh()?),
+    }
+}
+
+/// A stand-in for Hoppe's mannequin head: a closed triangle mesh of 16 meridians and 9 rings
+/// (288 triangles) on an egg-shaped head, facing +y, with a nose, brows, eye sockets, ears,
+/// a narrower jaw and chin. Coarse, like the thesis's control mesh, so that the schemes differ.
+fn head() -> Result<PolyMesh> {
+    const MERIDIANS: usize = 16;
+    const RINGS: usize = 9;
+    /// A smooth bump of height `h` and angular radius `w` about direction `d` (unit).
+    fn bump(p: DVec3, d: DVec3, h: f64, w: f64) -> f64 {
+        let c = p.dot(d).clamp(-1.0, 1.0);
+        h * (-(c.acos() / w).powi(2)).exp()
+    }
+    let shape = |theta: f64, phi: f64| -> DVec3 {
+        // The unit direction: θ from the crown (+z) down, φ from the face (+y) round.
+        let dir = DVec3::new(theta.sin() * phi.sin(), theta.sin() * phi.cos(), theta.cos());
+        let mut r = 1.0;
+        r += bump(dir, DVec3::new(0.0, 0.97, -0.24).normalize(), 0.32, 0.22); // nose
+        r += bump(dir, DVec3::new(0.0, 0.9, 0.44).normalize(), 0.08, 0.45); // brow
+        for side in [-1.0, 1.0] {
+            r -= bump(dir, DVec3::new(0.38 * side, 0.88, 0.22).normalize(), 0.1, 0.18); // eye
+            r += bump(dir, DVec3::new(side, -0.1, 0.0).normalize(), 0.12, 0.2); // ear
+        }
+        r += bump(dir, DVec3::new(0.0, 0.75, -0.66).normalize(), 0.1, 0.25); // chin
+        // A narrower jaw, an egg-shaped skull.
+        let jaw = 1.0 - 0.22 * (-dir.z).max(0.0);
+        DVec3::new(0.78 * jaw * dir.x, 0.9 * jaw * dir.y, 1.1 * dir.z) * r
+    };
+    let mut positions = vec![shape(0.0, 0.0)];
+    for ring in 1..=RINGS {
+        let theta = PI * ring as f64 / (RINGS + 1) as f64;
+        for m in 0..MERIDIANS {
+            positions.push(shape(theta, 2.0 * PI * m as f64 / MERIDIANS as f64));
+        }
+    }
+    positions.push(shape(PI, 0.0));
+    let bottom = (positions.len() - 1) as u32;
+    let at = |ring: usize, m: usize| (1 + (ring - 1) * MERIDIANS + m % MERIDIANS) as u32;
+    let mut faces: Vec<[u32; 3]> = Vec::new();
+    for m in 0..MERIDIANS {
+        // φ grows clockwise seen from +z (from +y towards +x): counter-clockwise about the
+        // outward normal is (pole, next, this) at the crown.
+        faces.push([0, at(1, m + 1), at(1, m)]);
+        for ring in 1..RINGS {
+            let (a, b, c, d) = (at(ring, m), at(ring, m + 1), at(ring + 1, m + 1), at(ring + 1, m));
+            faces.push([a, b, c]);
+            faces.push([a, c, d]);
+        }
+        faces.push([bottom, at(RINGS, m), at(RINGS, m + 1)]);
+    }
+    let mesh = PolyMesh::try_new(positions, &faces).context("the head mesh")?;
+    ensure!(signed_volume(&mesh) > 0.0, "the head's faces point inwards");
+    Ok(mesh)
+}
+
+/// The volume enclosed by a closed mesh, positive when its faces point outwards.
+fn signed_volume(mesh: &PolyMesh) -> f64 {
+    let p = mesh.positions();
+    mesh.faces()
+        .flat_map(|f| (1..f.len() - 1).map(move |i| [f[0], f[i], f[i + 1]]))
+        .map(|[a, b, c]| p[a as usize].dot(p[b as usize].cross(p[c as usize])) / 6.0)
+        .sum()
+}
+
+/// What every figure of steps draws.
+const STEPS_DRAWN: &str = "(a) The control mesh and (b)–(d) the first three steps of the scheme (`hi_surface::subdivision`), \
+    each face drawn as a fan of triangles with area-weighted vertex normals, no colours. The thesis's four panels \
+    count the control mesh as the first.";
+
+/// The data line of the cube figures.
+const CUBE_DATA: &str = "the cube [0, 1]³ of six quads (`PolyMesh::cube`); triangulated: each quad (a, b, c, d) split \
+    into (a, b, c), (a, c, d) (`PolyMesh::triangulated_cube`).";
+
+/// The data line of the star figures.
+const STAR_DATA: &str = "stand-in (the thesis does not give its star): the cube [−1, 1]³ with a tapered spike on \
+    each face, 30 quads (`PolyMesh::quad_star`); triangulated: each quad split into a fan of two triangles, 60 \
+    triangles (`PolyMesh::triangulated`).";
+
+/// A "first four steps" figure.
+macro_rules! steps {
+    ($number:literal, $caption:literal, $scheme:expr, $shape:expr, $data:expr) => {
+        Figure {
+            number: (4, $number),
+            caption: $caption,
+            drawn: STEPS_DRAWN,
+            data: $data,
+            format: Format::Glb,
+            panels: &[
+                Panel {
+                    suffix: "a",
+                    title: "(a) Control mesh",
+                    draw: |_| stage($scheme, $shape, 0),
+                },
+                Panel { suffix: "b", title: "(b) One step", draw: |_| stage($scheme, $shape, 1) },
+                Panel { suffix: "c", title: "(c) Two steps", draw: |_| stage($scheme, $shape, 2) },
+                Panel {
+                    suffix: "d",
+                    title: "(d) Three steps",
+                    draw: |_| stage($scheme, $shape, LAST_STEP),
+                },
+            ],
+        }
+    };
+}
+
+/// A "limit surfaces" figure: the cube and the star.
+macro_rules! limits {
+    ($number:literal, $caption:literal, $scheme:expr, $cube:expr, $star:expr, $drawn:literal, $data:expr) => {
+        Figure {
+            number: (4, $number),
+            caption: $caption,
+            drawn: $drawn,
+            data: $data,
+            format: Format::Glb,
+            panels: &[
+                Panel { suffix: "a", title: "(a) Cube mesh", draw: |_| limit($scheme, $cube) },
+                Panel { suffix: "b", title: "(b) Star mesh", draw: |_| limit($scheme, $star) },
+            ],
+        }
+    };
+}
+
+/// The data line of the limit figures.
+const BOTH_DATA: &str =
+    "the cube and the star of the figures before (the star is a stand-in: `PolyMesh::quad_star`).";
+
+/// The figures of this module.
+pub(crate) const FIGURES: &[Figure] = &[
+    steps!(
+        11,
+        "First four steps of a cube subdivided with Loop subdivision",
+        LOOP,
+        Shape::TriCube,
+        CUBE_DATA
+    ),
+    steps!(
+        12,
+        "First four steps of a star shape subdivided with Loop subdivision",
+        LOOP,
+        Shape::TriStar,
+        STAR_DATA
+    ),
+    limits!(
+        13,
+        "Limit surfaces (Loop subdivision)",
+        LOOP,
+        Shape::TriCube,
+        Shape::TriStar,
+        "The triangulated cube and star after three Loop steps with every vertex moved to its limit position and \
+         given its exact limit normal (`loop_limit`: Loop's limit masks), so every vertex lies on the limit surface.",
+        BOTH_DATA
+    ),
+    steps!(
+        15,
+        "First four steps of a cube subdivided with modified butterfly subdivision",
+        Scheme::Butterfly,
+        Shape::TriCube,
+        CUBE_DATA
+    ),
+    steps!(
+        16,
+        "First four steps of a star shape subdivided with modified butterfly subdivision",
+        Scheme::Butterfly,
+        Shape::TriStar,
+        STAR_DATA
+    ),
+    limits!(
+        17,
+        "Limit surfaces (Modified butterfly subdivision)",
+        Scheme::Butterfly,
+        Shape::TriCube,
+        Shape::TriStar,
+        "The triangulated cube and star after four steps of the modified butterfly scheme (it has no closed-form \
+         limit; four steps are 256 triangles per control triangle). The control vertices are kept: checked when the \
+         figure is made.",
+        BOTH_DATA
+    ),
+    steps!(
+        20,
+        "First four steps of a cube subdivided with √3 subdivision",
+        Scheme::Sqrt3,
+        Shape::TriCube,
+        CUBE_DATA
+    ),
+    steps!(
+        21,
+        "First four steps of a star shape subdivided with √3 subdivision",
+        Scheme::Sqrt3,
+        Shape::TriStar,
+        STAR_DATA
+    ),
+    limits!(
+        22,
+        "Limit surfaces (√3 subdivision)",
+        Scheme::Sqrt3,
+        Shape::TriCube,
+        Shape::TriStar,
+        "The triangulated cube and star after four √3 steps (81 triangles per control triangle; no closed-form \
+         limit is used).",
+        BOTH_DATA
+    ),
+    steps!(
+        25,
+        "First four steps of a triangulated cube subdivided with Catmull-Clark subdivision",
+        Scheme::CatmullClark,
+        Shape::TriCube,
+        CUBE_DATA
+    ),
+    steps!(
+        26,
+        "First four steps of a cube subdivided with Catmull-Clark subdivision",
+        Scheme::CatmullClark,
+        Shape::Cube,
+        CUBE_DATA
+    ),
+    steps!(
+        27,
+        "First four steps of a triangulated star shape subdivided with Catmull-Clark subdivision",
+        Scheme::CatmullClark,
+        Shape::TriStar,
+        STAR_DATA
+    ),
+    steps!(
+        28,
+        "First four steps of a star shape subdivided with Catmull-Clark subdivision",
+        Scheme::CatmullClark,
+        Shape::Star,
+        STAR_DATA
+    ),
+    limits!(
+        29,
+        "Limit surfaces (Catmull-Clark subdivision)",
+        Scheme::CatmullClark,
+        Shape::Cube,
+        Shape::Star,
+        "The quad cube and star after three Catmull-Clark steps with every vertex moved to its limit position and \
+         given its exact limit normal (`catmull_clark_limit`), so every vertex lies on the limit surface.",
+        BOTH_DATA
+    ),
+    steps!(
+        30,
+        "First four steps of a triangulated cube subdivided with Doo-Sabin subdivision",
+        Scheme::DooSabin,
+        Shape::TriCube,
+        CUBE_DATA
+    ),
+    steps!(
+        31,
+        "First four steps of a cube subdivided with Doo-Sabin subdivision",
+        Scheme::DooSabin,
+        Shape::Cube,
+        CUBE_DATA
+    ),
+    steps!(
+        32,
+        "First four steps of a triangulated star shape subdivided with Doo-Sabin subdivision",
+        Scheme::DooSabin,
+        Shape::TriStar,
+        STAR_DATA
+    ),
+    steps!(
+        33,
+        "First four steps of a star shape subdivided with Doo-Sabin subdivision",
+        Scheme::DooSabin,
+        Shape::Star,
+        STAR_DATA
+    ),
+    limits!(
+        34,
+        "Limit surfaces (Doo-Sabin subdivision)",
+        Scheme::DooSabin,
+        Shape::Cube,
+        Shape::Star,
+        "The quad cube and star after four Doo-Sabin steps (no closed-form limit is used).",
+        BOTH_DATA
+    ),
+    Figure {
+        number: (4, 35),
+        caption: "Subdivision of the mannequin head",
+        drawn: "(a) The control mesh; (b)–(g) two steps of each scheme on it, triangles for every scheme as in the \
+                thesis; (e), interpolating √3, is not in the thesis.",
+        data: "stand-in for Hoppe's mannequin head (not available): a closed head of 288 triangles built in code \
+               (16 meridians, 9 rings, with nose, brows, eye sockets, ears and chin; `xtask/src/figures/subdivision.rs`).",
+        format: Format::Glb,
+        panels: &[
+            Panel { suffix: "a", title: "(a) Control mesh", draw: |_| head_stage(None) },
+            Panel { suffix: "b", title: "(b) Loop", draw: |_| head_stage(Some(LOOP)) },
+            Panel {
+                suffix: "c",
+                title: "(c) Modified butterfly",
+                draw: |_| head_stage(Some(Scheme::Butterfly)),
+            },
+            Panel { suffix: "d", title: "(d) √3", draw: |_| head_stage(Some(Scheme::Sqrt3)) },
+            Panel {
+                suffix: "e",
+                title: "(e) Interpolating √3",
+                draw: |_| head_stage(Some(Scheme::InterpolatingSqrt3)),
+            },
+            Panel {
+                suffix: "f",
+                title: "(f) Catmull-Clark",
+                draw: |_| head_stage(Some(Scheme::CatmullClark)),
+            },
+            Panel {
+                suffix: "g",
+                title: "(g) Doo-Sabin",
+                draw: |_| head_stage(Some(Scheme::DooSabin)),
+            },
+        ],
+    },
+];
+
+/// The tables of this module.
+pub(crate) const TABLES: &[Table] = &[Table {
+    anchor: "subdivision-schemes",
+    title: "Table 4.1: Comparison of subdivision schemes",
+    about: "The thesis's columns (triangles, polygons, interpolating, continuity) next to what we measure. \
+        *Triangles* and *polygons*: one step on the triangulated cube and on a pentagonal prism (two pentagons, five \
+        quads), accepted or refused with an error. *Interpolating*: the largest distance from a control vertex of \
+        the triangulated star (of the quad star for the polygon schemes) to the mesh after three steps (nearest point \
+        on its triangles), relative to the control mesh's bounding-box diagonal. *Continuity*: as stated by the \
+        schemes' authors for the limit surface at regular vertices (at extraordinary vertices the triangle schemes \
+        and Catmull-Clark are C¹). *V / F*: vertices and faces of the control mesh and after 1, 2, 3 steps. The \
+        harmonic row subdivides the 4×4 torus grid (§5.2; the \"faces\" are the grid's quads). Time per step is \
+        measured by `cargo xtask bench subdivision` and reported in `docs/performance.md`, not here: this page is \
+        regenerated bit for bit.",
+    make: scheme_table,
+}];
+
+/// A pentagonal prism: two pentagons and five quads (a closed mesh that is neither all
+/// triangles nor all quads).
+fn prism() -> Result<PolyMesh> {
+    let mut positions = Vec::new();
+    for z in [0.0, 1.0] {
+        for k in 0..5 {
+            let a = 2.0 * PI * f64::from(k) / 5.0;
+            positions.push(DVec3::new(a.cos(), a.sin(), z));
+        }
+    }
+    let mut faces: Vec<Vec<u32>> = vec![vec![4, 3, 2, 1, 0], vec![5, 6, 7, 8, 9]];
+    for k in 0..5u32 {
+        let j = (k + 1) % 5;
+        faces.push(vec![k, j, j + 5, k + 5]);
+    }
+    let mesh = PolyMesh::try_new(positions, &faces)?;
+    ensure!(signed_volume(&mesh) > 0.0, "the prism's faces point inwards");
+    Ok(mesh)
+}
+
+/// "yes" if one step of `scheme` accepts `mesh`, else "no".
+fn accepts(scheme: Scheme, mesh: &PolyMesh) -> &'static str {
+    if scheme.step(mesh).is_ok() { "yes" } else { "no" }
+}
+
+/// The largest distance from the vertices of `control` to the triangles of `refined`,
+/// relative to `control`'s bounding-box diagonal.
+fn interpolation_error(control: &PolyMesh, refined: &PolyMesh) -> Result<f64> {
+    let tri = refined.to_triangle_mesh()?;
+    let d = hi_geomimage::distance::distances_to_mesh(
+        control.positions(),
+        tri.positions(),
+        tri.triangles(),
+    )?;
+    Ok(d.max / hi_geomimage::distance::bounding_diagonal(control.positions()))
+}
+
+/// Table 4.1, measured.
+fn scheme_table() -> Result<String> {
+    let tri_cube = PolyMesh::triangulated_cube();
+    let prism = prism()?;
+    let tri_star = Shape::TriStar.mesh()?;
+    let quad_star = Shape::Star.mesh()?;
+    let mut s = String::from(
+        "| scheme | triangles (thesis) | triangles (measured) | polygons (thesis) | polygons (measured) | \
+         interpolating (thesis) | control vertex to mesh after 3 steps | continuity | V / F of the star, steps 0–3 |\n\
+         |---|---|---|---|---|---|---|---|---|\n",
+    );
+    let rows: [(Scheme, &str, &str, &str, &str); 7] = [
+        (LOOP, "Loop", "no", "no", "C²"),
+        (Scheme::Loop(LoopWeights::Warren), "Loop, Warren's β", "–", "–", "C²"),
+        (Scheme::Butterfly, "Modified butterfly", "no", "yes", "C¹"),
+        (Scheme::Sqrt3, "√3", "no", "no", "C²"),
+        (Scheme::InterpolatingSqrt3, "Interpolating √3", "–", "–", "C¹"),
+        (Scheme::CatmullClark, "Catmull-Clark", "yes", "no", "C²"),
+        (Scheme::DooSabin, "Doo-Sabin", "yes", "no", "C¹"),
+    ];
+    for (scheme, name, polygons_thesis, interpolating_thesis, continuity) in rows {
+        let triangles_thesis = if polygons_thesis == "–" { "–" } else { "yes" };
+        let control = if accepts(scheme, &prism) == "yes" { &quad_star } else { &tri_star };
+        let mut counts = vec![format!("{} / {}", control.n_vertices(), control.n_faces())];
+        let mut mesh = control.clone();
+        for _ in 0..LAST_STEP {
+            mesh = scheme.step(&mesh)?;
+            counts.push(format!("{} / {}", mesh.n_vertices(), mesh.n_faces()));
+        }
+        let err = interpolation_error(control, &mesh)?;
+        let _ = writeln!(
+            s,
+            "| {name} | {triangles_thesis} | {} | {polygons_thesis} | {} | {interpolating_thesis} | {} | {continuity} | {} |",
+            accepts(scheme, &tri_cube),
+            accepts(scheme, &prism),
+            format_error(err),
+            counts.join(" → ")
+        );
+    }
+    let _ = writeln!(s, "{}", harmonic_row()?);
+    Ok(s)
+}
+
+/// The relative distance of a control vertex, "0" when exactly zero.
+fn format_error(e: f64) -> String {
+    if e == 0.0 { "0 (kept)".to_owned() } else { format!("{e:.2e}") }
+}
+
+/// The row of harmonic tensor-product subdivision (§5.2) on the 4×4 torus grid.
+fn harmonic_row() -> Result<String> {
+    let torus = hi_surface::torus(2.0, 1.0);
+    let (m, n) = (torus.m(), torus.n());
+    let mut counts = vec![format!("{} / {}", m * n, m * n)];
+    let mut worst: f64 = 0.0;
+    let mut grid = torus.clone();
+    for level in 1..=LAST_STEP as u32 {
+        grid = torus.subdivide(level)?;
+        counts.push(format!("{} / {}", grid.m() * grid.n(), grid.m() * grid.n()));
+    }
+    // The control points are the grid points (2ᵏj, 2ᵏk) of level k; the distance to the
+    // refined mesh is at most the distance to that vertex.
+    let step = 1 << LAST_STEP;
+    for j in 0..m {
+        for k in 0..n {
+            worst = worst.max(torus.point(j, k).distance(grid.point(step * j, step * k)));
+        }
+    }
+    let diagonal = hi_geomimage::distance::bounding_diagonal(torus.points());
+    let err = worst / diagonal;
+    ensure!(err < 1e-14, "harmonic subdivision moved a control point by {err:e}");
+    Ok(format!(
+        "| Harmonic tensor product (§5.2) | – | no (grids) | – | no (grids) | – | {} | C^∞ | {} |",
+        if worst == 0.0 { "0 (kept)".to_owned() } else { format!("≤ {err:.0e} (rounding)") },
+        counts.join(" → ")
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_head_is_closed_and_outward() {
+        let head = head().expect("valid");
+        assert!(head.is_closed(), "closed");
+        assert_eq!(head.n_faces(), 288, "2·16 pole triangles + 2·16·8 ring triangles");
+        assert!(signed_volume(&head) > 0.0, "outward");
+    }
+
+    #[test]
+    fn the_prism_is_refused_by_the_triangle_schemes_only() {
+        let prism = prism().expect("valid");
+        for scheme in Scheme::ALL {
+            let polygons = matches!(scheme, Scheme::CatmullClark | Scheme::DooSabin);
+            assert_eq!(accepts(scheme, &prism) == "yes", polygons, "{}", scheme.name());
+        }
+    }
+
+    #[test]
+    fn a_kept_vertex_is_at_distance_zero_and_a_moved_one_is_not() {
+        let star = Shape::TriStar.mesh().expect("star");
+        let butterfly = Scheme::Butterfly.steps(&star, 1).expect("step");
+        assert_eq!(interpolation_error(&star, &butterfly).expect("distance"), 0.0, "kept");
+        let loop_mesh = LOOP.steps(&star, 1).expect("step");
+        assert!(
+            interpolation_error(&star, &loop_mesh).expect("distance") > 1e-3,
+            "Loop moves the tips"
+        );
+    }
+}
