@@ -5,8 +5,11 @@
 //! Commands:
 //! - `figures [--check]`: regenerate the thesis figures into `docs/figures/` (with `--check`,
 //!   fail instead if a committed file is stale);
+//! - `bench <topic>`: time our code and the peer programs side by side and write the topic's
+//!   section of `docs/performance.md` (topics: `subdivision`);
 //! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
 
+mod bench;
 mod figures;
 mod layers;
 
@@ -19,12 +22,13 @@ fn main() -> Result<()> {
     let root = project_root();
     match args.first().map(String::as_str) {
         Some("figures") => figures::run(&root, args.iter().any(|a| a == "--check")),
+        Some("bench") => bench::run(&root, args.get(1).map(String::as_str)),
         Some("layers") => {
             layers::check(&root)?;
             println!("layers: every crate depends only on crates below it");
             Ok(())
         }
-        _ => bail!("usage: cargo xtask <figures [--check] | layers>"),
+        _ => bail!("usage: cargo xtask <figures [--check] | bench <topic> | layers>"),
     }
 }
 

@@ -143,14 +143,37 @@ impl PolyMesh {
             n_edges: 0,
             vertex_he: Vec::new(),
         };
-        // Pair half-edges by sorting on the undirected edge.
-        let mut keys: Vec<(u64, u32)> = (0..n_he as u32)
-            .map(|h| {
-                let (a, b) = (mesh.from(h), mesh.to(h));
-                ((u64::from(a.min(b)) << 32) | u64::from(a.max(b)), h)
-            })
-            .collect();
-        keys.sort_unstable();
+        // Pair half-edges by the undirected edge (min, max): a counting sort on min (linear),
+        // then a sort on max inside each vertex's small bucket. Edges are numbered in
+        // (min, max) order.
+        let n_vertices = mesh.positions.len();
+        let ends = |h: u32| {
+            let (a, b) = (mesh.from(h), mesh.to(h));
+            (a.min(b), a.max(b))
+        };
+        let mut bucket_start = vec![0_u32; n_vertices + 1];
+        for h in 0..n_he as u32 {
+            bucket_start[ends(h).0 as usize + 1] += 1;
+        }
+        for v in 0..n_vertices {
+            bucket_start[v + 1] += bucket_start[v];
+        }
+        let mut fill = bucket_start[..n_vertices].to_vec();
+        let mut order = vec![0_u32; n_he];
+        for h in 0..n_he as u32 {
+            let lo = ends(h).0 as usize;
+            order[fill[lo] as usize] = h;
+            fill[lo] += 1;
+        }
+        let mut keys: Vec<(u64, u32)> = Vec::with_capacity(n_he);
+        for v in 0..n_vertices {
+            let bucket = &mut order[bucket_start[v] as usize..bucket_start[v + 1] as usize];
+            bucket.sort_unstable_by_key(|&h| (ends(h).1, h));
+            keys.extend(bucket.iter().map(|&h| {
+                let (a, b) = ends(h);
+                ((u64::from(a) << 32) | u64::from(b), h)
+            }));
+        }
         let mut i = 0;
         let mut n_edges = 0_u32;
         while i < keys.len() {
