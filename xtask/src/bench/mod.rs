@@ -155,12 +155,12 @@ mod tests {
 
     #[test]
     fn a_section_is_appended_then_replaced_and_others_are_kept() {
-        let first = with_section("", "a", "one");
+        let first = with_section("", "a", "first body");
         assert!(first.starts_with("# Performance"), "header on a new file");
         let both = with_section(&first, "b", "two");
         let replaced = with_section(&both, "a", "three\n");
         assert!(replaced.contains("<!-- bench:a -->\nthree\n<!-- /bench:a -->"), "{replaced}");
-        assert!(!replaced.contains("one"), "the old body is gone");
+        assert!(!replaced.contains("first body"), "the old body is gone");
         assert!(replaced.contains("<!-- bench:b -->\ntwo\n<!-- /bench:b -->"), "b is kept");
         assert!(
             replaced.find("bench:a").expect("a") < replaced.find("bench:b").expect("b"),
