@@ -20,6 +20,7 @@
 //! | rotation (Thm 5.1 and an exact one), insertion/reduction (Thm 5.3), subdivision (§5.2) | [`HarmonicCurve`] methods |
 //! | trigonometric interpolation of §2.13 | [`TrigonometricCurve`] |
 //! | non-uniform interpolation (§3.10): the thesis formula and true node interpolation | [`NonUniformCurve`] |
+//! | Bézier forms (§5.7): the thesis cubic and quintic schemes, C1 Hermite pieces to a tolerance, deviation measured and bounded | [`bezier`] |
 //!
 //! # Examples
 //!
@@ -43,6 +44,7 @@
 //! None: the crate has no optional features.
 
 mod basis;
+pub mod bezier;
 pub mod compare;
 mod curve;
 mod differential;

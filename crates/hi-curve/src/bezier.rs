@@ -1,0 +1,714 @@
+// SPDX-License-Identifier: MIT
+//! Harmonic curves as piecewise Bézier curves (Hardy 2005, §5.7; MATH.md §4): the thesis's two
+//! schemes, which approximate the basis σₖ by piecewise polynomials, and a C1 Hermite scheme
+//! that reaches any tolerance, each with its deviation measured and bounded.
+//!
+//! | scheme | pieces | continuity | deviation |
+//! |---|---|---|---|
+//! | [`BezierScheme::ThesisCubic`] | n cubics on [a/n, (a+1)/n], through 4 equally spaced samples of each σₖ | C0 | a plateau: ≈ 6.2e-3 of the basis for every n |
+//! | [`BezierScheme::ThesisQuintic`] | two quintics between consecutive zeros of σ′, Hermite data (value, σ′, σ″) at the ends and the middle | C2 | a plateau of ≈ 3e-4; the points are not interpolated exactly |
+//! | [`BezierScheme::Hermite`] | cubic (or quintic) Hermite pieces of the curve itself, split until a guaranteed bound is below the tolerance | C1 (C2) | below the tolerance |
+//!
+//! The two thesis schemes are linear maps of the data: a [`BasisPieces`] holds the control
+//! values `P[a][k][j]` of the approximation of σₖ on piece a, and [`BasisPieces::apply`] sums
+//! them with the points, Σₖ `P[a][k][j]`·xₖ, exactly as the thesis builds its patches. The cubic
+//! scheme keeps the partition of unity (the control values of each piece sum to 1 over k), so
+//! it is affine invariant, and its ends are Kronecker deltas, so it passes through the points.
+//! The quintic scheme does neither exactly: each σₖ is interpolated at its own breaks (the zeros
+//! of σₖ′, which miss the nodes j/n, j ≠ k), so Σₖ Sₖ differs from 1, and Sₖ(j/n) from δⱼₖ, by
+//! about the scheme's error. That error is a plateau too: 1.5e-4 to 4.3e-4 of the basis for
+//! every n (9–25 times below the cubic's), since the pieces shrink with the oscillation.
+//!
+//! # Deviation: measured and bounded
+//!
+//! [`BezierReport`] gives the largest and the RMS distance between the curve and its Bézier
+//! form on a dense sample (every piece at [`SAMPLES_PER_PIECE`] + 1 points), and a guaranteed
+//! bound from the remainder of polynomial interpolation: on a piece of width h,
+//!
+//! - 4 equally spaced nodes (thesis cubic): |x − p| ≤ h⁴/1944 · max‖x⁗‖;
+//! - cubic Hermite (value and derivative at both ends): |x − p| ≤ h⁴/384 · max‖x⁗‖;
+//! - quintic Hermite (value and two derivatives at both ends): |x − p| ≤ h⁶/46080 · max‖x⁽⁶⁾‖;
+//!
+//! with max‖x⁽ᵖ⁾‖ over the piece enclosed by interval arithmetic (`hi-interval`) on the
+//! curve's Fourier series, term by term, so the bound holds for every t, not only the sampled.
+//! (The thesis quintic approximates each σₖ on its own pieces; its bound is σ's bound on its
+//! pieces times Σₖ ‖xₖ‖, as the approximated basis does not sum to one.)
+
+use hi_bezier::{BezierCurve, ControlPoint, PiecewiseBezier};
+use hi_interval::{Interval, RootConfig};
+
+use crate::{Error, Fourier, HarmonicCurve, Sigma};
+
+/// Samples per piece for the measured deviation (the ends included: `SAMPLES_PER_PIECE + 1`).
+pub const SAMPLES_PER_PIECE: usize = 32;
+
+/// The most pieces the adaptive Hermite scheme makes before it gives up.
+pub const MAX_PIECES: usize = 1 << 20;
+
+/// The degree of the pieces of [`BezierScheme::Hermite`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum HermiteDegree {
+    /// Cubic pieces with the value and the first derivative of the curve at both ends: C1.
+    #[default]
+    Cubic,
+    /// Quintic pieces with the value and the first two derivatives at both ends: C2.
+    Quintic,
+}
+
+/// How a harmonic curve becomes Bézier pieces (§5.7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum BezierScheme {
+    /// The thesis's cubic scheme (MATH.md §4): on each [a/n, (a+1)/n] one cubic per σₖ through
+    /// σₖ at a/n + i/(3n), i = 0 … 3. C0; the data points are interpolated.
+    ThesisCubic,
+    /// The thesis's earlier degree-5 scheme: two quintic Hermite pieces (value, σ′, σ″) between
+    /// consecutive zeros of σ′, split at the midpoint; the zeros are found by interval Newton
+    /// ([`Sigma::deriv_roots`]). The pieces of all σₖ are merged, so a curve piece ends wherever
+    /// one σₖ's piece ends.
+    ThesisQuintic,
+    /// Hermite pieces of the curve itself (value and derivatives of the true curve at the joins),
+    /// starting from [a/n, (a+1)/n] and halved until the guaranteed bound is below the tolerance.
+    Hermite(HermiteDegree),
+}
+
+impl BezierScheme {
+    /// The scheme's name on the command line: `thesis-cubic`, `thesis-quintic`, `hermite`,
+    /// `hermite-quintic`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            BezierScheme::ThesisCubic => "thesis-cubic",
+            BezierScheme::ThesisQuintic => "thesis-quintic",
+            BezierScheme::Hermite(HermiteDegree::Cubic) => "hermite",
+            BezierScheme::Hermite(HermiteDegree::Quintic) => "hermite-quintic",
+        }
+    }
+
+    /// The scheme of a name of [`BezierScheme::name`].
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Self> {
+        Some(match name {
+            "thesis-cubic" => BezierScheme::ThesisCubic,
+            "thesis-quintic" => BezierScheme::ThesisQuintic,
+            "hermite" => BezierScheme::Hermite(HermiteDegree::Cubic),
+            "hermite-quintic" => BezierScheme::Hermite(HermiteDegree::Quintic),
+            _ => return None,
+        })
+    }
+}
+
+/// A piecewise-polynomial approximation of the whole basis σ₀ … σₙ₋₁ of size n on [0, 1]:
+/// pieces [`breaks[a]`, `breaks[a+1]`] and, for each piece a and function k, the Bézier control
+/// values `P[a][k][j]`, j = 0 … degree (local parameter s = (t − `breaks[a]`)/(`breaks[a+1]` − `breaks[a]`)).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BasisPieces {
+    n: usize,
+    degree: usize,
+    // Invariant: `breaks[0]` = 0, `breaks[last]` = 1, increasing; ctrl.len() = pieces·n·(degree+1).
+    breaks: Vec<f64>,
+    ctrl: Vec<f64>,
+    // The breaks of σ₀'s own pieces, from 0 to 1 (σₖ's are these shifted by k/n).
+    own: Vec<f64>,
+}
+
+/// The inverse of the Bernstein matrix Bᵢⱼ = B³ⱼ(i/3): control values from 4 equally spaced
+/// samples (P₁ = (−5f₀ + 18f₁ − 9f₂ + 2f₃)/6, P₂ symmetric).
+fn cubic_from_samples(f: [f64; 4]) -> [f64; 4] {
+    [
+        f[0],
+        (-5.0 * f[0] + 18.0 * f[1] - 9.0 * f[2] + 2.0 * f[3]) / 6.0,
+        (2.0 * f[0] - 9.0 * f[1] + 18.0 * f[2] - 5.0 * f[3]) / 6.0,
+        f[3],
+    ]
+}
+
+/// The quintic Bézier control points of the Hermite data (f, f′, f″) at both ends of a piece of
+/// width h (derivatives with respect to t).
+fn quintic_hermite<P: ControlPoint>(f0: [P; 3], f1: [P; 3], h: f64) -> [P; 6] {
+    let [a, da, dda] = f0;
+    let [b, db, ddb] = f1;
+    [
+        a,
+        a + da * (h / 5.0),
+        a + da * (2.0 * h / 5.0) + dda * (h * h / 20.0),
+        b - db * (2.0 * h / 5.0) + ddb * (h * h / 20.0),
+        b - db * (h / 5.0),
+        b,
+    ]
+}
+
+/// The cubic Bézier control points of the Hermite data (f, f′) at both ends of a piece of
+/// width h.
+fn cubic_hermite<P: ControlPoint>(f0: [P; 2], f1: [P; 2], h: f64) -> [P; 4] {
+    [f0[0], f0[0] + f0[1] * (h / 3.0), f1[0] - f1[1] * (h / 3.0), f1[0]]
+}
+
+impl BasisPieces {
+    /// The thesis's cubic scheme for basis size n (MATH.md §4): n pieces [a/n, (a+1)/n]; on
+    /// each, `P[a][k]` = B⁻¹·[σₖ(a/n + i/(3n))]ᵢ. `P[a][k][0]` = δₐₖ and `P[a][k][3]` = δₐ₊₁,ₖ.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroBasisSize`] for n = 0.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_curve::bezier::BasisPieces;
+    ///
+    /// let p = BasisPieces::thesis_cubic(5)?;
+    /// assert_eq!((p.n_pieces(), p.degree()), (5, 3));
+    /// // The ends are Kronecker deltas: the data points are interpolated.
+    /// assert_eq!(p.control(2, 2)[0], 1.0);
+    /// assert_eq!(p.control(2, 3)[3], 1.0);
+    /// # Ok::<(), hi_curve::Error>(())
+    /// ```
+    pub fn thesis_cubic(n: usize) -> Result<Self, Error> {
+        let sigma = Sigma::try_new(n)?;
+        let nf = n as f64;
+        let mut ctrl = Vec::with_capacity(n * n * 4);
+        for a in 0..n {
+            for k in 0..n {
+                let f = [0, 1, 2, 3].map(|i| {
+                    if i == 0 {
+                        f64::from(u8::from(k == a))
+                    } else if i == 3 {
+                        f64::from(u8::from(k == (a + 1) % n))
+                    } else {
+                        sigma.eval(k, (a as f64 + f64::from(i) / 3.0) / nf)
+                    }
+                });
+                ctrl.extend(cubic_from_samples(f));
+            }
+        }
+        let breaks: Vec<f64> = (0..=n).map(|a| a as f64 / nf).collect();
+        Ok(Self { n, degree: 3, own: breaks.clone(), breaks, ctrl })
+    }
+
+    /// The zeros of σ′ in [0, 1), from interval Newton, reduced modulo 1 and sorted; 0 is one.
+    fn sigma_prime_zeros(n: usize) -> Result<Vec<f64>, Error> {
+        let sigma = Sigma::try_new(n)?;
+        let roots = sigma.deriv_roots(Interval::new(-0.01, 1.01), &RootConfig::default());
+        if !roots.complete {
+            return Err(Error::Singular { what: "the zeros of σ′ (the root search hit a cap)" });
+        }
+        let mut zeros: Vec<f64> =
+            roots.roots.iter().map(|r| r.enclosure.mid().rem_euclid(1.0)).collect();
+        zeros.push(0.0);
+        Ok(dedup_sorted(zeros))
+    }
+
+    /// The thesis's degree-5 scheme for basis size n: σ is approximated between consecutive
+    /// zeros of σ′ by two quintic Hermite pieces (value, σ′, σ″ of σ at the zeros and the
+    /// midpoint); σₖ(t) = σ(t − k/n) by the same pieces shifted. The result's breaks are the
+    /// union of all shifted breaks, and on each of its pieces every σₖ is the restriction of
+    /// one of its own quintics.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ZeroBasisSize`] for n = 0; [`Error::InvalidCount`] for n ≤ 2, where σ′ has
+    /// too few zeros for the scheme (n = 1: σ′ ≡ 0); [`Error::Singular`] if the root search
+    /// does not complete.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_curve::bezier::BasisPieces;
+    ///
+    /// let p = BasisPieces::thesis_quintic(5)?;
+    /// assert_eq!(p.degree(), 5);
+    /// // Exact at the zeros of σ′, which include the nodes: σ₀(0) = 1.
+    /// assert!((p.eval(0, 0.0) - 1.0).abs() < 1e-14);
+    /// # Ok::<(), hi_curve::Error>(())
+    /// ```
+    pub fn thesis_quintic(n: usize) -> Result<Self, Error> {
+        if n == 0 {
+            return Err(Error::ZeroBasisSize);
+        }
+        if n <= 2 {
+            return Err(Error::InvalidCount {
+                what: "basis size n for the thesis quintic scheme",
+                value: n,
+                expected: "n ≥ 3 (σ′ needs zeros that split the period)",
+            });
+        }
+        let sigma = Sigma::new(n);
+        let zeros = Self::sigma_prime_zeros(n)?;
+        // σ's own breaks: the zeros and the midpoints between them (cyclically).
+        let mut own = Vec::with_capacity(2 * zeros.len() + 1);
+        for (i, &z) in zeros.iter().enumerate() {
+            let next = zeros.get(i + 1).copied().unwrap_or(1.0 + zeros[0]);
+            own.push(z);
+            own.push(0.5 * (z + next));
+        }
+        own.push(1.0 + zeros[0]);
+        let nf = n as f64;
+        let mut all: Vec<f64> = (0..n)
+            .flat_map(|k| own.iter().map(move |&b| (b + k as f64 / nf).rem_euclid(1.0)))
+            .collect();
+        all.push(0.0);
+        let mut breaks = dedup_sorted(all);
+        breaks.push(1.0);
+        let data = |t: f64| [0, 1, 2].map(|o| sigma.deriv(0, t, o));
+        let mut ctrl = Vec::with_capacity((breaks.len() - 1) * n * 6);
+        for w in breaks.windows(2) {
+            let (u0, u1) = (w[0], w[1]);
+            for k in 0..n {
+                // σₖ on [u0, u1] is σ on [u0 − k/n, u1 − k/n]: find σ's piece holding it.
+                let shift = k as f64 / nf;
+                let mid = (0.5 * (u0 + u1) - shift - own[0]).rem_euclid(1.0) + own[0];
+                let i = own.windows(2).position(|p| p[0] <= mid && mid <= p[1]).unwrap_or(0);
+                let (b0, b1) = (own[i], own[i + 1]);
+                let piece = quintic_hermite(data(b0), data(b1), b1 - b0);
+                let curve = BezierCurve::new(piece.to_vec());
+                // Local parameters of [u0, u1] − shift inside [b0, b1], unwrapped near mid.
+                let offset = mid - (0.5 * (u0 + u1) - shift);
+                let (s0, s1) = (
+                    (u0 - shift + offset - b0) / (b1 - b0),
+                    (u1 - shift + offset - b0) / (b1 - b0),
+                );
+                let sub = curve.subsegment(s0.clamp(0.0, 1.0), s1.clamp(0.0, 1.0));
+                ctrl.extend_from_slice(sub.control_points());
+            }
+        }
+        Ok(Self { n, degree: 5, breaks, ctrl, own })
+    }
+
+    /// The basis size n.
+    #[must_use]
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// The degree of every piece (3 or 5).
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The number of pieces.
+    #[must_use]
+    pub fn n_pieces(&self) -> usize {
+        self.breaks.len() - 1
+    }
+
+    /// The piece boundaries, 0 = `breaks[0]` < … < `breaks[pieces]` = 1.
+    #[must_use]
+    pub fn breaks(&self) -> &[f64] {
+        &self.breaks
+    }
+
+    /// The breaks of σ₀'s own pieces, from 0 to 1: those of σₖ are these shifted by k/n. For
+    /// the cubic scheme they are the breaks a/n; for the quintic scheme the zeros of σ′ and the
+    /// midpoints between them, a subset of [`BasisPieces::breaks`].
+    #[must_use]
+    pub fn sigma_breaks(&self) -> &[f64] {
+        &self.own
+    }
+
+    /// The control values `P[a][k][0 ..= degree]` of σₖ on piece a.
+    ///
+    /// # Panics
+    ///
+    /// If a ≥ [`BasisPieces::n_pieces`] or k ≥ n.
+    #[must_use]
+    pub fn control(&self, a: usize, k: usize) -> &[f64] {
+        assert!(a < self.n_pieces() && k < self.n, "piece {a} or function {k} out of range");
+        let m = self.degree + 1;
+        let start = (a * self.n + k) * m;
+        &self.ctrl[start..start + m]
+    }
+
+    /// The piece holding t (taken modulo 1) and the local parameter in it.
+    fn locate(&self, t: f64) -> (usize, f64) {
+        locate(&self.breaks, t)
+    }
+
+    /// The approximation of σₖ(t) (t taken modulo 1; k modulo n).
+    #[must_use]
+    pub fn eval(&self, k: usize, t: f64) -> f64 {
+        let (a, s) = self.locate(t);
+        BezierCurve::new(self.control(a, k % self.n).to_vec()).eval(s)
+    }
+
+    /// The Bézier form of the curve Σₖ σₖ(t)·xₖ with this approximation of the basis: piece a
+    /// has control points Σₖ `P[a][k][j]`·xₖ (the thesis's patch formula, in one direction).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidCount`] if `points.len()` is not n; [`Error::NonFinitePoint`].
+    pub fn apply<P: ControlPoint>(&self, points: &[P]) -> Result<BezierSpline<P>, Error> {
+        if points.len() != self.n {
+            return Err(Error::InvalidCount {
+                what: "number of points for this basis",
+                value: points.len(),
+                expected: "exactly the basis size n",
+            });
+        }
+        if let Some(index) = points.iter().position(|p| !p.is_finite()) {
+            return Err(Error::NonFinitePoint { index });
+        }
+        let segments = (0..self.n_pieces())
+            .map(|a| {
+                let control = (0..=self.degree)
+                    .map(|j| {
+                        let mut sum = P::ZERO;
+                        for (k, &x) in points.iter().enumerate() {
+                            sum += x * self.control(a, k)[j];
+                        }
+                        sum
+                    })
+                    .collect();
+                BezierCurve::new(control)
+            })
+            .collect();
+        Ok(BezierSpline { breaks: self.breaks.clone(), segments })
+    }
+}
+
+/// Sorts and removes values closer than 1e-12 to their predecessor; values ≥ 1 − 1e-12 wrap
+/// to 0.
+fn dedup_sorted(mut v: Vec<f64>) -> Vec<f64> {
+    for x in &mut v {
+        if *x >= 1.0 - 1e-12 {
+            *x = 0.0;
+        }
+    }
+    v.sort_by(f64::total_cmp);
+    v.dedup_by(|b, a| (*b - *a).abs() < 1e-12);
+    v
+}
+
+/// The piece of `breaks` holding t modulo 1 and the local parameter.
+fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
+    let t = t.rem_euclid(1.0);
+    let pieces = breaks.len() - 1;
+    let a = breaks.partition_point(|&b| b <= t).saturating_sub(1).min(pieces - 1);
+    let (b0, b1) = (breaks[a], breaks[a + 1]);
+    (a, ((t - b0) / (b1 - b0)).clamp(0.0, 1.0))
+}
+
+/// A closed chain of Bézier pieces over the harmonic parameter: piece a covers
+/// t ∈ [`breaks[a]`, `breaks[a+1]`] with local parameter s = (t − `breaks[a]`)/(`breaks[a+1]` − `breaks[a]`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BezierSpline<P> {
+    // Invariant: breaks as for BasisPieces; segments.len() = breaks.len() − 1 ≥ 1.
+    breaks: Vec<f64>,
+    segments: Vec<BezierCurve<P>>,
+}
+
+impl<P: ControlPoint> BezierSpline<P> {
+    /// The pieces.
+    #[must_use]
+    pub fn segments(&self) -> &[BezierCurve<P>] {
+        &self.segments
+    }
+
+    /// The piece boundaries in the harmonic parameter, from 0 to 1.
+    #[must_use]
+    pub fn breaks(&self) -> &[f64] {
+        &self.breaks
+    }
+
+    /// The point at t (taken modulo 1).
+    #[must_use]
+    pub fn eval(&self, t: f64) -> P {
+        let (a, s) = locate(&self.breaks, t);
+        self.segments[a].eval(s)
+    }
+
+    /// The derivative of order `order` with respect to t (one-sided at the breaks: the piece
+    /// that starts there).
+    #[must_use]
+    pub fn eval_deriv(&self, t: f64, order: usize) -> P {
+        let (a, s) = locate(&self.breaks, t);
+        let h = self.breaks[a + 1] - self.breaks[a];
+        self.segments[a].eval_deriv(s, order) * h.powi(-(order as i32))
+    }
+
+    /// The same pieces as a [`PiecewiseBezier`] (piece i on [i/s, (i+1)/s] there: the same
+    /// point set, parameterised piece by piece).
+    #[must_use]
+    pub fn to_piecewise(&self) -> PiecewiseBezier<P> {
+        PiecewiseBezier::new(self.segments.clone())
+    }
+
+    /// The largest angle (radians) between the tangents on either side of a join, over every
+    /// join including the closing one; 0 for a C1 chain (joins where a tangent vanishes are
+    /// skipped).
+    #[must_use]
+    pub fn max_tangent_jump(&self) -> f64 {
+        let m = self.segments.len();
+        let mut worst: f64 = 0.0;
+        for a in 0..m {
+            let (left, right) = (&self.segments[a], &self.segments[(a + 1) % m]);
+            let (l, r) = (left.eval_deriv(1.0, 1), right.eval_deriv(0.0, 1));
+            let (nl, nr) = (l.norm(), r.norm());
+            if nl > 0.0 && nr > 0.0 {
+                // 2·atan2(|l̂ − r̂|, |l̂ + r̂|): accurate for small angles, unlike acos.
+                let (l, r) = (l * (1.0 / nl), r * (1.0 / nr));
+                worst = worst.max(2.0 * (l - r).norm().atan2((l + r).norm()));
+            }
+        }
+        worst
+    }
+}
+
+/// What a conversion achieved (§5.7): pieces, deviation from the harmonic curve (measured and
+/// bounded) and continuity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BezierReport {
+    /// Number of Bézier pieces.
+    pub pieces: usize,
+    /// Degree of the pieces.
+    pub degree: usize,
+    /// Largest distance between the curve and its Bézier form on the dense sample.
+    pub max_deviation: f64,
+    /// RMS distance on the dense sample.
+    pub rms_deviation: f64,
+    /// A guaranteed upper bound of the distance for every t (interval arithmetic; see the
+    /// module documentation).
+    pub bound: f64,
+    /// The largest tangent angle jump at a join, radians.
+    pub max_tangent_jump: f64,
+}
+
+/// A harmonic curve's Bézier form with its report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveBezier<P> {
+    /// The pieces.
+    pub spline: BezierSpline<P>,
+    /// What they achieve.
+    pub report: BezierReport,
+}
+
+/// An enclosure of sup ‖X⁽ᵖ⁾(t)‖ over t ∈ [t0, t1] for a Fourier series: per coordinate the
+/// interval sum of the terms (2πj)ᵖ·[aⱼ cos(2πjt + pπ/2) + bⱼ sin(2πjt + pπ/2)], then the
+/// Euclidean norm of the per-coordinate magnitudes, rounded up.
+pub(crate) fn deriv_bound<P: ControlPoint>(f: &Fourier<P>, t0: f64, t1: f64, order: usize) -> f64 {
+    let t = Interval::new(t0.min(t1), t0.max(t1));
+    let two_pi = Interval::PI * Interval::point(2.0);
+    let mut sums = vec![Interval::point(0.0); P::DIM];
+    for j in 1..=f.degree() {
+        let jf = Interval::point(j as f64);
+        let w = (two_pi * jf).powi(order as i32);
+        let (s, c) = (two_pi * jf * t).sin_cos();
+        // Turning by pπ/2: (cos, sin) → (−sin, cos) per quarter turn.
+        let (cp, sp) = match order % 4 {
+            0 => (c, s),
+            1 => (-s, c),
+            2 => (-c, -s),
+            _ => (s, -c),
+        };
+        let (a, b) = (f.cos_coeffs()[j], f.sin_coeffs()[j]);
+        for (d, sum) in sums.iter_mut().enumerate() {
+            let term = (Interval::point(a.coord(d)) * cp + Interval::point(b.coord(d)) * sp) * w;
+            *sum += term;
+        }
+    }
+    if order == 0 {
+        let a0 = f.cos_coeffs()[0];
+        for (d, sum) in sums.iter_mut().enumerate() {
+            *sum += Interval::point(a0.coord(d));
+        }
+    }
+    let sq = sums.iter().fold(Interval::point(0.0), |acc, s| {
+        let m = Interval::point(s.mag());
+        acc + m * m
+    });
+    sq.sqrt().hi()
+}
+
+/// The remainder constant of a scheme's interpolation on a piece of width h: (c, p) with
+/// |x − p| ≤ c·hᵖ·max‖x⁽ᵖ⁾‖.
+fn remainder(scheme: BezierScheme) -> (f64, usize) {
+    match scheme {
+        BezierScheme::ThesisCubic => (1.0 / 1944.0, 4),
+        BezierScheme::Hermite(HermiteDegree::Cubic) => (1.0 / 384.0, 4),
+        BezierScheme::ThesisQuintic | BezierScheme::Hermite(HermiteDegree::Quintic) => {
+            (1.0 / 46080.0, 6)
+        }
+    }
+}
+
+/// The guaranteed bound of one piece [t0, t1], with a relative margin of 1e-9 for the rounding
+/// of the control points.
+fn piece_bound<P: ControlPoint>(f: &Fourier<P>, scheme: BezierScheme, t0: f64, t1: f64) -> f64 {
+    let (c, p) = remainder(scheme);
+    let h = t1 - t0;
+    c * h.powi(p as i32) * deriv_bound(f, t0, t1, p) * (1.0 + 1e-9)
+}
+
+impl<P: ControlPoint> HarmonicCurve<P> {
+    /// The curve as Bézier pieces by `scheme` (§5.7), with the deviation measured on a dense
+    /// sample and bounded by interval arithmetic. `tolerance` is the largest deviation the
+    /// Hermite scheme may leave (default: 1e-4 of the diagonal of the points' bounding box); the
+    /// thesis schemes have a fixed number of pieces and only report theirs.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NonFiniteParameter`] or [`Error::ParameterOutOfBounds`] for a tolerance that is
+    /// not finite and positive; [`Error::InvalidCount`] for the quintic thesis scheme with
+    /// n ≤ 2; [`Error::InvalidCount`] if the Hermite scheme needs more than [`MAX_PIECES`]
+    /// pieces.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use hi_curve::HarmonicCurve;
+    /// use hi_curve::bezier::{BezierScheme, HermiteDegree};
+    ///
+    /// let square = vec![DVec2::new(1.0, 0.0), DVec2::Y, DVec2::new(-1.0, 0.0), -DVec2::Y];
+    /// let curve = HarmonicCurve::new(square);
+    /// let c1 = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-6))?;
+    /// assert!(c1.report.bound <= 1e-6 && c1.report.max_deviation <= c1.report.bound);
+    /// assert!(c1.report.max_tangent_jump < 1e-9);
+    /// // The thesis's cubic scheme: n pieces, C0, through the points.
+    /// let thesis = curve.to_bezier(BezierScheme::ThesisCubic, None)?;
+    /// assert_eq!(thesis.report.pieces, 4);
+    /// assert!((thesis.spline.eval(0.25) - DVec2::Y).length() < 1e-15);
+    /// # Ok::<(), hi_curve::Error>(())
+    /// ```
+    pub fn to_bezier(
+        &self,
+        scheme: BezierScheme,
+        tolerance: Option<f64>,
+    ) -> Result<CurveBezier<P>, Error> {
+        let tolerance = match tolerance {
+            None => 1e-4 * bounding_diagonal(self.points()).max(f64::MIN_POSITIVE),
+            Some(t) if !t.is_finite() => {
+                return Err(Error::NonFiniteParameter { name: "tolerance", value: t });
+            }
+            Some(t) if t <= 0.0 => {
+                return Err(Error::ParameterOutOfBounds {
+                    name: "tolerance",
+                    value: t,
+                    expected: "a positive number",
+                });
+            }
+            Some(t) => t,
+        };
+        let n = self.n();
+        let fourier = self.fourier();
+        let (spline, bound) = match scheme {
+            BezierScheme::ThesisCubic => {
+                let spline = BasisPieces::thesis_cubic(n)?.apply(self.points())?;
+                let bound = spline
+                    .breaks
+                    .windows(2)
+                    .map(|w| piece_bound(fourier, scheme, w[0], w[1]))
+                    .fold(0.0, f64::max);
+                (spline, bound)
+            }
+            BezierScheme::ThesisQuintic => {
+                let pieces = BasisPieces::thesis_quintic(n)?;
+                let spline = pieces.apply(self.points())?;
+                // Each σₖ is σ's approximation shifted, so |σₖ − Sₖ| is bounded by σ's bound
+                // on its own pieces; the Sₖ need not sum to one (they are interpolants on
+                // different pieces), so the curve's bound is that times Σₖ ‖xₖ‖.
+                let sigma_fourier = Fourier::from_points(
+                    &(0..n).map(|k| f64::from(u8::from(k == 0))).collect::<Vec<_>>(),
+                );
+                let basis_bound = pieces
+                    .own
+                    .windows(2)
+                    .map(|w| piece_bound(&sigma_fourier, scheme, w[0], w[1]))
+                    .fold(0.0, f64::max);
+                let size: f64 = self.points().iter().map(|&x| x.norm()).sum();
+                (spline, basis_bound * size)
+            }
+            BezierScheme::Hermite(degree) => hermite(self, fourier, degree, tolerance)?,
+        };
+        let (max_deviation, rms_deviation) = measure(self, &spline);
+        let report = BezierReport {
+            pieces: spline.segments.len(),
+            degree: spline.segments[0].degree(),
+            max_deviation,
+            rms_deviation,
+            bound,
+            max_tangent_jump: spline.max_tangent_jump(),
+        };
+        Ok(CurveBezier { spline, report })
+    }
+}
+
+/// The diagonal of the bounding box of `points`.
+fn bounding_diagonal<P: ControlPoint>(points: &[P]) -> f64 {
+    (0..P::DIM)
+        .map(|d| {
+            let (lo, hi) = points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.coord(d)), hi.max(p.coord(d)))
+            });
+            (hi - lo).powi(2)
+        })
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// The adaptive Hermite pieces and the largest piece bound.
+fn hermite<P: ControlPoint>(
+    curve: &HarmonicCurve<P>,
+    fourier: &Fourier<P>,
+    degree: HermiteDegree,
+    tolerance: f64,
+) -> Result<(BezierSpline<P>, f64), Error> {
+    let scheme = BezierScheme::Hermite(degree);
+    let n = curve.n().max(1);
+    // A stack of pieces to examine, last-in first-out in reverse order so the output is sorted.
+    let mut todo: Vec<(f64, f64)> =
+        (0..n).rev().map(|a| (a as f64 / n as f64, (a + 1) as f64 / n as f64)).collect();
+    let mut breaks = vec![0.0];
+    let mut segments = Vec::new();
+    let mut worst: f64 = 0.0;
+    while let Some((t0, t1)) = todo.pop() {
+        let bound = piece_bound(fourier, scheme, t0, t1);
+        if bound > tolerance && t1 - t0 > 1e-9 {
+            if segments.len() + todo.len() + 2 > MAX_PIECES {
+                return Err(Error::InvalidCount {
+                    what: "Bézier pieces needed for the tolerance",
+                    value: MAX_PIECES,
+                    expected: "a larger tolerance (the limit of pieces was reached)",
+                });
+            }
+            let mid = 0.5 * (t0 + t1);
+            todo.push((mid, t1));
+            todo.push((t0, mid));
+            continue;
+        }
+        worst = worst.max(bound);
+        let h = t1 - t0;
+        let control = match degree {
+            HermiteDegree::Cubic => {
+                let d = |t: f64| [curve.eval(t), fourier.eval_deriv(t, 1)];
+                cubic_hermite(d(t0), d(t1), h).to_vec()
+            }
+            HermiteDegree::Quintic => {
+                let d =
+                    |t: f64| [curve.eval(t), fourier.eval_deriv(t, 1), fourier.eval_deriv(t, 2)];
+                quintic_hermite(d(t0), d(t1), h).to_vec()
+            }
+        };
+        segments.push(BezierCurve::new(control));
+        breaks.push(t1);
+    }
+    Ok((BezierSpline { breaks, segments }, worst))
+}
+
+/// The largest and the RMS distance between the curve and the spline on every piece at
+/// [`SAMPLES_PER_PIECE`] + 1 points.
+fn measure<P: ControlPoint>(curve: &HarmonicCurve<P>, spline: &BezierSpline<P>) -> (f64, f64) {
+    let (mut max, mut sum, mut count) = (0.0_f64, 0.0, 0_usize);
+    for (a, seg) in spline.segments.iter().enumerate() {
+        let (t0, t1) = (spline.breaks[a], spline.breaks[a + 1]);
+        for i in 0..=SAMPLES_PER_PIECE {
+            let s = i as f64 / SAMPLES_PER_PIECE as f64;
+            let d = (seg.eval(s) - curve.eval(t0 + s * (t1 - t0))).norm();
+            max = max.max(d);
+            sum += d * d;
+            count += 1;
+        }
+    }
+    (max, (sum / count.max(1) as f64).sqrt())
+}
