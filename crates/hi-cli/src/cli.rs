@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
+use hi_curve::bezier::BezierScheme;
 use hi_curve::compare::CurveKind;
 
 use crate::args::{
@@ -19,6 +20,8 @@ Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivid
 Surface commands: hi surface eval|mesh|example (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
 Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron] ...
+Bézier forms (§5.7): hi bezier basis --n N --scheme thesis-cubic|thesis-quintic;
+  hi curve to-bezier --kind harmonic --scheme thesis-cubic|thesis-quintic|hermite|hermite-quintic.
 
 Input (--input FILE, or --input - for stdin):
   {\"points\": [[x, y], ...]}   or the bare array   [[x, y], ...]
@@ -224,7 +227,46 @@ pub(crate) enum Command {
     /// Fit a harmonic surface to a scan through a geometry image (§5.3, §5.4, §5.8).
     #[command(after_help = FIT_HELP)]
     Fit(FitArgs),
+    /// Bézier forms of the harmonic basis (§5.7).
+    #[command(subcommand)]
+    Bezier(BezierCommand),
 }
+
+/// The subcommands of `hi bezier`.
+#[derive(Debug, Subcommand)]
+pub(crate) enum BezierCommand {
+    /// The control values `P[a][k][j]` of σₖ on piece a of a thesis scheme (§5.7).
+    #[command(after_help = BEZIER_BASIS_HELP)]
+    Basis(BezierBasisArgs),
+}
+
+/// The thesis schemes of `hi bezier basis`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum BasisSchemeName {
+    /// One cubic per interval [a/n, (a+1)/n] through 4 equally spaced samples (C0).
+    ThesisCubic,
+    /// Two quintic Hermite pieces between consecutive zeros of σ′.
+    ThesisQuintic,
+}
+
+/// Options of `hi bezier basis`.
+#[derive(Debug, Args)]
+pub(crate) struct BezierBasisArgs {
+    /// Number of basis functions n (1 to 1024; the quintic scheme needs n ≥ 3).
+    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) n: usize,
+    /// The scheme.
+    #[arg(long, value_enum, default_value = "thesis-cubic")]
+    pub(crate) scheme: BasisSchemeName,
+}
+
+/// The output of `hi bezier basis`.
+const BEZIER_BASIS_HELP: &str =
+    "Output: {\"n\": n, \"scheme\": s, \"degree\": d, \"breaks\": [t0 = 0, ..., 1],
+  \"P\": [a][k][j]}: on piece a (t from breaks[a] to breaks[a+1]) the approximation of σₖ is the
+  Bézier polynomial with control values P[a][k][0..=d]. The patches of a harmonic surface are
+  Σₖ Σₗ P[a][k][j]·P[b][l][i]·x_kl (§5.7). thesis-cubic: n pieces, P[a][k][0] = δ(a,k).
+Example: hi bezier basis --n 4 --scheme thesis-cubic";
 
 /// The geometry-image layouts of `hi fit`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -440,6 +482,24 @@ pub(crate) struct ToBezierArgs {
     /// Which curve through the points (see 'hi curve sample --help').
     #[arg(long, value_name = "KIND", value_parser = parse_kind)]
     pub(crate) kind: CurveKind,
+    /// For --kind harmonic: thesis-cubic, thesis-quintic, hermite (C1, default) or
+    /// hermite-quintic (C2) (§5.7).
+    #[arg(long, value_name = "SCHEME", value_parser = parse_bezier_scheme)]
+    pub(crate) scheme: Option<BezierScheme>,
+    /// For the Hermite schemes: the largest deviation from the curve (default 1e-4 of the
+    /// diagonal of the points' bounding box).
+    #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]
+    pub(crate) tolerance: Option<f64>,
+}
+
+/// A Bézier scheme name of `hi curve to-bezier --scheme`.
+fn parse_bezier_scheme(s: &str) -> Result<BezierScheme, String> {
+    BezierScheme::from_name(s.trim()).ok_or_else(|| {
+        format!(
+            "unknown scheme '{}': expected thesis-cubic, thesis-quintic, hermite or hermite-quintic",
+            s.trim()
+        )
+    })
 }
 
 /// Options of `hi curve rotate`.

@@ -354,7 +354,7 @@ fn bad_kinds_and_inputs() {
     bad_on("[[0,0,0],[1,1,1],[2,0,1]]", &["curve", "fairness"], "2-D points");
     bad_on("[0, 1, 2]", &["curve", "fairness"], "2-D points");
     bad_on(SQUARE, &["curve", "fairness", "--samples", "2"], "--samples");
-    bad_on(SQUARE, &["curve", "to-bezier", "--kind", "harmonic"], "not piecewise polynomial");
+    bad_on(SQUARE, &["curve", "to-bezier", "--kind", "trig"], "not piecewise polynomial");
     bad_on(SQUARE, &["curve", "to-bezier", "--kind", "four-point"], "catmull-rom");
     bad_on(SQUARE, &["curve", "to-bezier"], "--kind");
     bad_on("[[0,0],[1,null]]", &["curve", "to-bezier", "--kind", "tcb"], "coordinate 1");

@@ -3,6 +3,7 @@
 //! JSON to print.
 
 mod basis;
+mod bezier_basis;
 mod eval;
 mod fairness;
 mod fit;
@@ -17,7 +18,7 @@ mod surface_example;
 mod surface_mesh;
 mod to_bezier;
 
-use crate::cli::{Command, CurveCommand, SurfaceCommand};
+use crate::cli::{BezierCommand, Command, CurveCommand, SurfaceCommand};
 use crate::error::Failure;
 use crate::output::Json;
 
@@ -32,6 +33,7 @@ pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
         Command::Basis(args) => basis::run(args),
         Command::Subdivide(args) => subdivide_mesh::run(args),
         Command::Fit(args) => fit::run(args),
+        Command::Bezier(BezierCommand::Basis(args)) => bezier_basis::run(args),
         Command::Curve(CurveCommand::Eval(args)) => eval::run(args),
         Command::Curve(CurveCommand::Sample(args)) => sample::run(args),
         Command::Curve(CurveCommand::Fairness(args)) => fairness::run(args),
