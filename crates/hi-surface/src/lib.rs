@@ -21,6 +21,7 @@
 //! | curvature colours, blue → purple as in §5.9, with a legend | [`ColorMap`], [`ColorLegend`] |
 //! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files, read-back checks | [`export`] |
 //! | subdivision surfaces of §4.5 on polygon meshes (Loop, butterfly, √3, Catmull-Clark, Doo-Sabin) | [`subdivision`] |
+//! | Bézier patches (§5.7): the thesis's cubic and quintic schemes, C1 Hermite patches to a tolerance | [`bezier`] |
 //!
 //! # Examples
 //!
@@ -36,6 +37,7 @@
 //!
 //! None: the crate has no optional features.
 
+pub mod bezier;
 mod colormap;
 mod error;
 mod examples;

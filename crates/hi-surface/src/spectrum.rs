@@ -8,6 +8,7 @@
 //! Any partial derivative is the same sum with each factor differentiated.
 
 use hi_curve::{ControlPoint, Fourier};
+use hi_interval::Interval;
 
 /// The real 2-D spectrum of a harmonic surface (see the module documentation).
 #[derive(Clone, Debug, PartialEq)]
@@ -69,5 +70,35 @@ impl<P: ControlPoint> Spectrum2<P> {
     /// The degrees (⌊m/2⌋, ⌊n/2⌋).
     pub(crate) fn degrees(&self) -> (usize, usize) {
         (self.deg_u, self.deg_v)
+    }
+
+    /// An upper bound of sup over (u, v) of ‖∂^{p+q}p/∂uᵖ∂v^q‖: Σₐᵦ (2πa)ᵖ(2πβ)^q·(‖Aₐᵦ‖ +
+    /// ‖Bₐᵦ‖ + ‖Cₐᵦ‖ + ‖Dₐᵦ‖) (each term's factors have magnitude at most one), summed in
+    /// interval arithmetic and rounded up, so it bounds the spectrum as stored.
+    pub(crate) fn deriv_bound(&self, p: usize, q: usize) -> f64 {
+        let two_pi = Interval::PI * Interval::point(2.0);
+        let norm = |x: P| {
+            (0..P::DIM)
+                .map(|d| Interval::point(x.coord(d)).powi(2))
+                .fold(Interval::point(0.0), |a, b| a + b)
+                .sqrt()
+        };
+        let mut sum = Interval::point(0.0);
+        for a in 0..=self.deg_u {
+            if p > 0 && a == 0 {
+                continue;
+            }
+            let wu = (two_pi * Interval::point(a as f64)).powi(p as i32);
+            for b in 0..=self.deg_v {
+                if q > 0 && b == 0 {
+                    continue;
+                }
+                let wv = (two_pi * Interval::point(b as f64)).powi(q as i32);
+                let c = &self.coeffs[a * (self.deg_v + 1) + b];
+                let size = c.iter().fold(Interval::point(0.0), |acc, &x| acc + norm(x));
+                sum += wu * wv * size;
+            }
+        }
+        sum.hi()
     }
 }

@@ -153,6 +153,23 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         self.spectrum.eval_deriv(u, v, p, q)
     }
 
+    /// An upper bound of ‖∂^{p+q}p/∂uᵖ∂v^q‖ over the whole surface, from its 2-D spectrum in
+    /// interval arithmetic (used by the Bézier conversion's guaranteed bound, §5.7).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// // The unit sphere passes through points at distance 1 from the origin.
+    /// let s = hi_surface::sphere(1.0);
+    /// assert!(s.deriv_bound(0, 0) >= 1.0);
+    /// let d = s.eval_deriv(0.1, 0.2, 1, 0).length();
+    /// assert!(s.deriv_bound(1, 0) >= d);
+    /// ```
+    #[must_use]
+    pub fn deriv_bound(&self, p: usize, q: usize) -> f64 {
+        self.spectrum.deriv_bound(p, q)
+    }
+
     /// The degrees (⌊m/2⌋, ⌊n/2⌋) of the surface as a trigonometric polynomial in u and v.
     #[must_use]
     pub fn degrees(&self) -> (usize, usize) {

@@ -1,0 +1,438 @@
+// SPDX-License-Identifier: MIT
+//! Harmonic surfaces as Bézier patches (Hardy 2005, §5.7; MATH.md §4), "so that most computer
+//! graphics software will be able to import the surface".
+//!
+//! The schemes are those of curves ([`hi_curve::bezier`]), applied along u and v:
+//!
+//! - [`BezierScheme::ThesisCubic`]: m×n bicubic patches, `Q[a][b][j][i]` = Σₖ Σₗ `Pᵐ[a][k][j]`·
+//!   `Pⁿ[b][l][i]`·xₖₗ (the thesis's formula); C0, through the data points.
+//! - [`BezierScheme::ThesisQuintic`]: the same with the degree-5 basis pieces; C2 but not
+//!   exactly through the points.
+//! - [`BezierScheme::Hermite`]: tensor-product Hermite patches from the surface's own value,
+//!   pᵤ, pᵥ and twist pᵤᵥ (bicubic; with the second derivatives too for biquintic) at the
+//!   corners; adjacent patches share their edge data, so the result is C1 (C2). The patch grid
+//!   starts at the m×n data grid and each direction is halved until the guaranteed bound is
+//!   below the tolerance (uniform per direction, so the patches meet edge to edge).
+//!
+//! # Deviation
+//!
+//! Measured on every patch at 9×9 parameters against the surface, and bounded: each scheme but
+//! the thesis quintic is a tensor product P = Pᵤ·Pᵥ of one-dimensional interpolation operators,
+//! so I − Pᵤ·Pᵥ = (I − Pᵤ) + (I − Pᵥ) − (I − Pᵤ)·(I − Pᵥ) gives
+//! ‖p − Pp‖ ≤ c·hᵤʳ·Mᵤ + c·hᵥʳ·Mᵥ + c²·hᵤʳhᵥʳ·Mᵤᵥ, with (c, r) the curve scheme's remainder
+//! constant and Mᵤ, Mᵥ, Mᵤᵥ bounds of ‖∂ᵤʳp‖, ‖∂ᵥʳp‖, ‖∂ᵤʳ∂ᵥʳp‖ from the spectrum in interval
+//! arithmetic ([`HarmonicSurface::deriv_bound`]). The thesis quintic approximates each σₖ on its
+//! own pieces: its bound is (eᵤ(1 + eᵥ) + eᵥ)·Σ‖xₖₗ‖ with eᵤ, eᵥ the basis bounds.
+
+use glam::DVec3;
+use hi_bezier::{BezierPatch, ControlPoint};
+use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree};
+
+use crate::{Error, HarmonicSurface};
+
+/// The most patches a conversion makes.
+pub const MAX_PATCHES: usize = 1 << 22;
+
+/// Parameters per patch side for the measured deviation (the ends included: this + 1).
+pub const SAMPLES_PER_SIDE: usize = 8;
+
+/// What a surface conversion achieved (§5.7): patch count, deviation (measured, bounded) and
+/// the largest normal-angle jump across patch edges.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PatchReport {
+    /// Number of patches.
+    pub patches: usize,
+    /// Degrees (in u, in v).
+    pub degree: (usize, usize),
+    /// Largest distance between surface and patches on the sample.
+    pub max_deviation: f64,
+    /// RMS distance on the sample.
+    pub rms_deviation: f64,
+    /// A guaranteed upper bound of the distance everywhere (see the module documentation).
+    pub bound: f64,
+    /// The largest angle between the normals of two patches along their shared edge, radians
+    /// (sampled at [`SAMPLES_PER_SIDE`] + 1 points per edge).
+    pub max_normal_jump: f64,
+}
+
+/// A harmonic surface as Bézier patches: patch (a, b) covers u ∈ [`u_breaks[a]`,
+/// `u_breaks[a+1]`], v ∈ [`v_breaks[b]`, `v_breaks[b+1]`], with local parameters in [0, 1].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceBezier<P> {
+    /// The patch boundaries in u, from 0 to 1.
+    pub u_breaks: Vec<f64>,
+    /// The patch boundaries in v, from 0 to 1.
+    pub v_breaks: Vec<f64>,
+    /// The patches, row-major: index a·(number of v pieces) + b.
+    pub patches: Vec<BezierPatch<P>>,
+    /// What they achieve.
+    pub report: PatchReport,
+}
+
+impl<P: ControlPoint> SurfaceBezier<P> {
+    /// The patch holding (u, v) (taken modulo 1) and the local parameters.
+    #[must_use]
+    pub fn locate(&self, u: f64, v: f64) -> (usize, f64, f64) {
+        let (a, s) = locate(&self.u_breaks, u);
+        let (b, t) = locate(&self.v_breaks, v);
+        (a * (self.v_breaks.len() - 1) + b, s, t)
+    }
+
+    /// The point of the patches at (u, v).
+    #[must_use]
+    pub fn eval(&self, u: f64, v: f64) -> P {
+        let (i, s, t) = self.locate(u, v);
+        self.patches[i].eval(s, t)
+    }
+}
+
+/// The piece of `breaks` holding x modulo 1 and the local parameter.
+fn locate(breaks: &[f64], x: f64) -> (usize, f64) {
+    let x = x.rem_euclid(1.0);
+    let pieces = breaks.len() - 1;
+    let a = breaks.partition_point(|&b| b <= x).saturating_sub(1).min(pieces - 1);
+    (a, ((x - breaks[a]) / (breaks[a + 1] - breaks[a])).clamp(0.0, 1.0))
+}
+
+/// The remainder constant and order of a scheme (as for curves).
+fn remainder(scheme: BezierScheme) -> (f64, usize) {
+    match scheme {
+        BezierScheme::ThesisCubic => (1.0 / 1944.0, 4),
+        BezierScheme::Hermite(HermiteDegree::Cubic) => (1.0 / 384.0, 4),
+        _ => (1.0 / 46080.0, 6),
+    }
+}
+
+/// Weights of the one-dimensional Hermite control points on a piece of width h: control point
+/// i is Σ over d of `w[i][d]`·f⁽ᵈ⁾(end), the end being the left one for i < (degree + 1)/2.
+fn hermite_weights(degree: HermiteDegree, h: f64) -> Vec<Vec<f64>> {
+    match degree {
+        HermiteDegree::Cubic => {
+            vec![vec![1.0, 0.0], vec![1.0, h / 3.0], vec![1.0, -h / 3.0], vec![1.0, 0.0]]
+        }
+        HermiteDegree::Quintic => vec![
+            vec![1.0, 0.0, 0.0],
+            vec![1.0, h / 5.0, 0.0],
+            vec![1.0, 2.0 * h / 5.0, h * h / 20.0],
+            vec![1.0, -2.0 * h / 5.0, h * h / 20.0],
+            vec![1.0, -h / 5.0, 0.0],
+            vec![1.0, 0.0, 0.0],
+        ],
+    }
+}
+
+impl<P: ControlPoint> HarmonicSurface<P> {
+    /// The surface as Bézier patches by `scheme` (§5.7), with the deviation measured and
+    /// bounded. `tolerance` is the deviation the Hermite scheme may leave (default 1e-4 of the
+    /// diagonal of the grid's bounding box); the thesis schemes only report theirs.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NonFiniteParameter`] or [`Error::InvalidValue`] for a tolerance that is not
+    /// finite and positive; [`Error::Curve`] for the thesis quintic with m or n ≤ 2;
+    /// [`Error::InvalidCount`] if more than [`MAX_PATCHES`] patches would be needed.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_curve::bezier::{BezierScheme, HermiteDegree};
+    ///
+    /// let torus = hi_surface::torus(2.0, 1.0);
+    /// // The thesis: 16 bicubic patches for the 4×4 torus, through the 16 points.
+    /// let thesis = torus.to_bezier(BezierScheme::ThesisCubic, None)?;
+    /// assert_eq!(thesis.report.patches, 16);
+    /// assert!((thesis.eval(0.25, 0.5) - torus.point(1, 2)).length() < 1e-14);
+    /// // C1 Hermite patches within 1e-3.
+    /// let c1 = torus.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-3))?;
+    /// assert!(c1.report.bound <= 1e-3 && c1.report.max_normal_jump < 1e-6);
+    /// # Ok::<(), hi_surface::Error>(())
+    /// ```
+    pub fn to_bezier(
+        &self,
+        scheme: BezierScheme,
+        tolerance: Option<f64>,
+    ) -> Result<SurfaceBezier<P>, Error> {
+        let tolerance = match tolerance {
+            None => 1e-4 * bounding_diagonal(self.points()).max(f64::MIN_POSITIVE),
+            Some(t) if !t.is_finite() => {
+                return Err(Error::NonFiniteParameter { name: "tolerance", value: t });
+            }
+            Some(t) if t <= 0.0 => {
+                return Err(Error::InvalidValue {
+                    what: "tolerance",
+                    index: None,
+                    value: t,
+                    expected: "a positive number",
+                });
+            }
+            Some(t) => t,
+        };
+        let (u_breaks, v_breaks, patches, bound) = match scheme {
+            BezierScheme::Hermite(degree) => self.hermite(degree, tolerance)?,
+            _ => self.thesis(scheme)?,
+        };
+        let mut out = SurfaceBezier {
+            u_breaks,
+            v_breaks,
+            patches,
+            report: PatchReport {
+                patches: 0,
+                degree: (0, 0),
+                max_deviation: 0.0,
+                rms_deviation: 0.0,
+                bound,
+                max_normal_jump: 0.0,
+            },
+        };
+        let (max, rms) = self.measure(&out);
+        out.report = PatchReport {
+            patches: out.patches.len(),
+            degree: (out.patches[0].degree_u(), out.patches[0].degree_v()),
+            max_deviation: max,
+            rms_deviation: rms,
+            bound,
+            max_normal_jump: max_normal_jump(&out),
+        };
+        Ok(out)
+    }
+
+    /// The thesis's patches: both directions' basis pieces applied to the grid.
+    #[allow(clippy::type_complexity, reason = "a private tuple of the conversion's parts")]
+    fn thesis(
+        &self,
+        scheme: BezierScheme,
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<BezierPatch<P>>, f64), Error> {
+        let pieces = |k: usize| match scheme {
+            BezierScheme::ThesisQuintic => BasisPieces::thesis_quintic(k),
+            _ => BasisPieces::thesis_cubic(k),
+        };
+        let (bu, bv) = (pieces(self.m())?, pieces(self.n())?);
+        let (du, dv) = (bu.degree(), bv.degree());
+        let (pu, pv) = (bu.n_pieces(), bv.n_pieces());
+        // Along v first: rows[k][b][i] = Σₗ P[b][l][i]·xₖₗ.
+        let mut rows = vec![P::ZERO; self.m() * pv * (dv + 1)];
+        for k in 0..self.m() {
+            for b in 0..pv {
+                for i in 0..=dv {
+                    let mut sum = P::ZERO;
+                    for l in 0..self.n() {
+                        sum += self.point(k, l) * bv.control(b, l)[i];
+                    }
+                    rows[(k * pv + b) * (dv + 1) + i] = sum;
+                }
+            }
+        }
+        let mut patches = Vec::with_capacity(pu * pv);
+        for a in 0..pu {
+            for b in 0..pv {
+                let control: Vec<Vec<P>> = (0..=du)
+                    .map(|j| {
+                        (0..=dv)
+                            .map(|i| {
+                                let mut sum = P::ZERO;
+                                for k in 0..self.m() {
+                                    sum += rows[(k * pv + b) * (dv + 1) + i] * bu.control(a, k)[j];
+                                }
+                                sum
+                            })
+                            .collect()
+                    })
+                    .collect();
+                patches.push(BezierPatch::new(control));
+            }
+        }
+        let bound = if scheme == BezierScheme::ThesisCubic {
+            let hu = 1.0 / self.m() as f64;
+            let hv = 1.0 / self.n() as f64;
+            self.tensor_bound(scheme, hu, hv)
+        } else {
+            // Basis bounds of σ on its own pieces, from the curve conversion of one σ.
+            let basis = |k: usize| -> Result<f64, Error> {
+                let delta: Vec<f64> = (0..k).map(|i| f64::from(u8::from(i == 0))).collect();
+                let c = hi_curve::HarmonicCurve::try_new(delta)?;
+                Ok(c.to_bezier(BezierScheme::ThesisQuintic, None)?.report.bound)
+            };
+            let (eu, ev) = (basis(self.m())?, basis(self.n())?);
+            let size: f64 = self.points().iter().map(|x| x.norm()).sum();
+            (eu * (1.0 + ev) + ev) * size * (1.0 + 1e-9)
+        };
+        Ok((bu.breaks().to_vec(), bv.breaks().to_vec(), patches, bound))
+    }
+
+    /// The guaranteed bound of a tensor-product interpolation scheme on patches hᵤ × hᵥ.
+    fn tensor_bound(&self, scheme: BezierScheme, hu: f64, hv: f64) -> f64 {
+        let (c, r) = remainder(scheme);
+        let (mu, mv, muv) =
+            (self.deriv_bound(r, 0), self.deriv_bound(0, r), self.deriv_bound(r, r));
+        let (eu, ev) = (c * hu.powi(r as i32), c * hv.powi(r as i32));
+        (eu * mu + ev * mv + eu * ev * muv) * (1.0 + 1e-9)
+    }
+
+    /// Hermite patches on the data grid refined per direction until the bound is met.
+    #[allow(clippy::type_complexity, reason = "a private tuple of the conversion's parts")]
+    fn hermite(
+        &self,
+        degree: HermiteDegree,
+        tolerance: f64,
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<BezierPatch<P>>, f64), Error> {
+        let scheme = BezierScheme::Hermite(degree);
+        let (c, r) = remainder(scheme);
+        let (mu, mv) = (self.deriv_bound(r, 0), self.deriv_bound(0, r));
+        let (mut nu, mut nv) = (self.m(), self.n());
+        let mut bound = self.tensor_bound(scheme, 1.0 / nu as f64, 1.0 / nv as f64);
+        while bound > tolerance {
+            if nu.saturating_mul(nv).saturating_mul(2) > MAX_PATCHES {
+                return Err(Error::InvalidCount {
+                    what: "Bézier patches needed for the tolerance",
+                    value: MAX_PATCHES,
+                    expected: "a larger tolerance (the limit of patches was reached)",
+                });
+            }
+            // Halve the direction whose term is larger.
+            let eu = c * (1.0 / nu as f64).powi(r as i32) * mu;
+            let ev = c * (1.0 / nv as f64).powi(r as i32) * mv;
+            if eu >= ev {
+                nu *= 2;
+            } else {
+                nv *= 2;
+            }
+            bound = self.tensor_bound(scheme, 1.0 / nu as f64, 1.0 / nv as f64);
+        }
+        let u_breaks: Vec<f64> = (0..=nu).map(|a| a as f64 / nu as f64).collect();
+        let v_breaks: Vec<f64> = (0..=nv).map(|b| b as f64 / nv as f64).collect();
+        let orders = match degree {
+            HermiteDegree::Cubic => 2,
+            HermiteDegree::Quintic => 3,
+        };
+        // Corner data: ∂ᵤᵈ∂ᵥᵉp at every grid vertex, d, e < orders.
+        let corner = |a: usize, b: usize| -> Vec<Vec<P>> {
+            let (u, v) = (a as f64 / nu as f64, b as f64 / nv as f64);
+            (0..orders)
+                .map(|d| {
+                    (0..orders)
+                        .map(|e| {
+                            if d == 0 && e == 0 {
+                                self.eval(u, v)
+                            } else {
+                                self.eval_deriv(u, v, d, e)
+                            }
+                        })
+                        .collect()
+                })
+                .collect()
+        };
+        let data: Vec<Vec<Vec<Vec<P>>>> =
+            (0..=nu).map(|a| (0..=nv).map(|b| corner(a, b)).collect()).collect();
+        let (wu, wv) =
+            (hermite_weights(degree, 1.0 / nu as f64), hermite_weights(degree, 1.0 / nv as f64));
+        let half = wu.len() / 2;
+        let mut patches = Vec::with_capacity(nu * nv);
+        for a in 0..nu {
+            for b in 0..nv {
+                let control: Vec<Vec<P>> = (0..wu.len())
+                    .map(|i| {
+                        (0..wv.len())
+                            .map(|j| {
+                                let ca = if i < half { a } else { a + 1 };
+                                let cb = if j < half { b } else { b + 1 };
+                                let d = &data[ca][cb];
+                                let mut sum = P::ZERO;
+                                for (du, &x) in wu[i].iter().enumerate() {
+                                    for (dv, &y) in wv[j].iter().enumerate() {
+                                        if x != 0.0 && y != 0.0 {
+                                            sum += d[du][dv] * (x * y);
+                                        }
+                                    }
+                                }
+                                sum
+                            })
+                            .collect()
+                    })
+                    .collect();
+                patches.push(BezierPatch::new(control));
+            }
+        }
+        Ok((u_breaks, v_breaks, patches, bound))
+    }
+
+    /// Largest and RMS distance between the surface and the patches on every patch's
+    /// (`SAMPLES_PER_SIDE` + 1)² parameters.
+    fn measure(&self, b: &SurfaceBezier<P>) -> (f64, f64) {
+        let nv = b.v_breaks.len() - 1;
+        let (mut max, mut sum, mut count) = (0.0_f64, 0.0, 0_usize);
+        for (idx, patch) in b.patches.iter().enumerate() {
+            let (a, c) = (idx / nv, idx % nv);
+            let (u0, u1) = (b.u_breaks[a], b.u_breaks[a + 1]);
+            let (v0, v1) = (b.v_breaks[c], b.v_breaks[c + 1]);
+            for i in 0..=SAMPLES_PER_SIDE {
+                let s = i as f64 / SAMPLES_PER_SIDE as f64;
+                for j in 0..=SAMPLES_PER_SIDE {
+                    let t = j as f64 / SAMPLES_PER_SIDE as f64;
+                    let d = (patch.eval(s, t) - self.eval(u0 + s * (u1 - u0), v0 + t * (v1 - v0)))
+                        .norm();
+                    max = max.max(d);
+                    sum += d * d;
+                    count += 1;
+                }
+            }
+        }
+        (max, (sum / count.max(1) as f64).sqrt())
+    }
+}
+
+/// The unit normal of a patch of 3-D points at (s, t), from its partials; `None` where they are
+/// parallel. Points of other dimensions have no normal.
+fn patch_normal<P: ControlPoint>(patch: &BezierPatch<P>, s: f64, t: f64) -> Option<DVec3> {
+    if P::DIM != 3 {
+        return None;
+    }
+    let (_, pu, pv) = patch.eval_with_partials(s, t);
+    let v3 = |p: P| DVec3::new(p.coord(0), p.coord(1), p.coord(2));
+    v3(pu).cross(v3(pv)).try_normalize()
+}
+
+/// The angle between unit vectors, accurate near 0.
+fn angle(a: DVec3, b: DVec3) -> f64 {
+    2.0 * (a - b).length().atan2((a + b).length())
+}
+
+/// The largest normal jump across the edges between neighbouring patches (both directions,
+/// the closing edges included: the surface is periodic).
+fn max_normal_jump<P: ControlPoint>(b: &SurfaceBezier<P>) -> f64 {
+    let (nu, nv) = (b.u_breaks.len() - 1, b.v_breaks.len() - 1);
+    let patch = |a: usize, c: usize| &b.patches[(a % nu) * nv + (c % nv)];
+    let mut worst: f64 = 0.0;
+    for a in 0..nu {
+        for c in 0..nv {
+            for i in 0..=SAMPLES_PER_SIDE {
+                let x = i as f64 / SAMPLES_PER_SIDE as f64;
+                // The edge u = end of patch a, between (a, c) and (a + 1, c).
+                if let (Some(l), Some(r)) =
+                    (patch_normal(patch(a, c), 1.0, x), patch_normal(patch(a + 1, c), 0.0, x))
+                {
+                    worst = worst.max(angle(l, r));
+                }
+                // The edge v = end of patch c, between (a, c) and (a, c + 1).
+                if let (Some(l), Some(r)) =
+                    (patch_normal(patch(a, c), x, 1.0), patch_normal(patch(a, c + 1), x, 0.0))
+                {
+                    worst = worst.max(angle(l, r));
+                }
+            }
+        }
+    }
+    worst
+}
+
+/// The diagonal of the bounding box of `points`.
+fn bounding_diagonal<P: ControlPoint>(points: &[P]) -> f64 {
+    (0..P::DIM)
+        .map(|d| {
+            let (lo, hi) = points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.coord(d)), hi.max(p.coord(d)))
+            });
+            (hi - lo).powi(2)
+        })
+        .sum::<f64>()
+        .sqrt()
+}
