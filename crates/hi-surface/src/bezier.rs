@@ -24,11 +24,13 @@
 //! arithmetic ([`HarmonicSurface::deriv_bound`]). The thesis quintic approximates each σₖ on its
 //! own pieces: its bound is (eᵤ(1 + eᵥ) + eᵥ)·Σ‖xₖₗ‖ with eᵤ, eᵥ the basis bounds.
 
-use glam::DVec3;
+use std::io::Write;
+
+use glam::{DVec2, DVec3};
 use hi_bezier::{BezierPatch, ControlPoint};
 use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree};
 
-use crate::{Error, HarmonicSurface};
+use crate::{Error, HarmonicSurface, TriangleMesh, srgb_to_linear};
 
 /// The most patches a conversion makes.
 pub const MAX_PATCHES: usize = 1 << 22;
@@ -83,6 +85,127 @@ impl<P: ControlPoint> SurfaceBezier<P> {
     pub fn eval(&self, u: f64, v: f64) -> P {
         let (i, s, t) = self.locate(u, v);
         self.patches[i].eval(s, t)
+    }
+}
+
+/// A colour for patch `index`: hues spaced by the golden angle so that neighbours differ,
+/// saturation and value fixed, as linear RGB.
+#[must_use]
+pub fn patch_color(index: usize) -> [f32; 3] {
+    let hue = (index as f64 * 0.618_033_988_749_895).fract() * 6.0;
+    let (s, v) = (0.55, 0.9);
+    let c = v * s;
+    let x = c * (1.0 - (hue % 2.0 - 1.0).abs());
+    let (r, g, b) = match hue as u32 {
+        0 => (c, x, 0.0),
+        1 => (x, c, 0.0),
+        2 => (0.0, c, x),
+        3 => (0.0, x, c),
+        4 => (x, 0.0, c),
+        _ => (c, 0.0, x),
+    };
+    let m = v - c;
+    [r, g, b].map(|k| srgb_to_linear((k + m) as f32))
+}
+
+impl SurfaceBezier<DVec3> {
+    /// A triangle mesh of the patches: each patch sampled on (k + 1)² parameters (k ≥ 1) with
+    /// its own vertices, normals from its partials, UVs the surface parameters, and one colour
+    /// per patch ([`patch_color`]), as in figure 5.28(b).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidCount`] for k = 0 or a mesh over 2³² vertices.
+    pub fn to_triangle_mesh(&self, k: usize) -> Result<TriangleMesh, Error> {
+        let side = k + 1;
+        let total = self.patches.len().saturating_mul(side * side);
+        if k == 0 || total >= u32::MAX as usize {
+            return Err(Error::InvalidCount {
+                what: "samples per patch side",
+                value: k,
+                expected: "at least 1, and fewer than 2³² vertices in all",
+            });
+        }
+        let nv = self.v_breaks.len() - 1;
+        let (mut positions, mut normals, mut uvs, mut colors, mut triangles) = (
+            Vec::with_capacity(total),
+            Vec::with_capacity(total),
+            Vec::with_capacity(total),
+            Vec::with_capacity(total),
+            Vec::new(),
+        );
+        for (idx, patch) in self.patches.iter().enumerate() {
+            let (a, c) = (idx / nv, idx % nv);
+            let (u0, u1) = (self.u_breaks[a], self.u_breaks[a + 1]);
+            let (v0, v1) = (self.v_breaks[c], self.v_breaks[c + 1]);
+            let base = positions.len() as u32;
+            let color = patch_color(idx);
+            for i in 0..side {
+                let s = i as f64 / k as f64;
+                for j in 0..side {
+                    let t = j as f64 / k as f64;
+                    let (p, pu, pv) = patch.eval_with_partials(s, t);
+                    // At a degenerate corner (a pole) step inside for the normal.
+                    let n = pu.cross(pv).try_normalize().or_else(|| {
+                        let (_, qu, qv) = patch.eval_with_partials(
+                            s.clamp(1e-6, 1.0 - 1e-6),
+                            t.clamp(1e-6, 1.0 - 1e-6),
+                        );
+                        qu.cross(qv).try_normalize()
+                    });
+                    positions.push(p);
+                    normals.push(n.unwrap_or(DVec3::Z));
+                    uvs.push(DVec2::new(u0 + s * (u1 - u0), v0 + t * (v1 - v0)));
+                    colors.push(color);
+                }
+            }
+            for i in 0..k as u32 {
+                for j in 0..k as u32 {
+                    let at = |i: u32, j: u32| base + i * side as u32 + j;
+                    triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+                    triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+                }
+            }
+        }
+        TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)
+    }
+
+    /// Writes the patches as an OBJ free-form surface file: the control points as `v` lines,
+    /// then per patch `cstype bezier`, `deg du dv`, `surf 0 1 0 1` with the control-point
+    /// indices (u varying fastest, as the OBJ specification orders surface control points),
+    /// `parm u 0 1`, `parm v 0 1` and `end`.
+    ///
+    /// # Errors
+    ///
+    /// Those of `w`.
+    pub fn write_obj<W: Write>(&self, mut w: W) -> std::io::Result<()> {
+        writeln!(
+            w,
+            "# harmonic surface as {} Bézier patches (Hardy 2005, §5.7)",
+            self.patches.len()
+        )?;
+        for patch in &self.patches {
+            let rows = patch.rows();
+            for j in 0..rows[0].len() {
+                for row in &rows {
+                    let p = row[j];
+                    writeln!(w, "v {} {} {}", p.x, p.y, p.z)?;
+                }
+            }
+        }
+        let mut next = 1_usize;
+        for patch in &self.patches {
+            let (du, dv) = (patch.degree_u(), patch.degree_v());
+            let count = (du + 1) * (dv + 1);
+            writeln!(w, "cstype bezier\ndeg {du} {dv}")?;
+            write!(w, "surf 0 1 0 1")?;
+            for i in next..next + count {
+                write!(w, " {i}")?;
+            }
+            writeln!(w, "\nparm u 0 1\nparm v 0 1\nend")?;
+            next += count;
+        }
+        w.flush()
     }
 }
 

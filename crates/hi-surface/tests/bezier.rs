@@ -138,6 +138,54 @@ fn the_thesis_quintic_patches_stay_within_their_bound() {
 }
 
 #[test]
+fn patches_tessellate_with_one_colour_each_and_write_obj_free_form() {
+    let s = torus(2.0, 1.0);
+    let b = s.to_bezier(BezierScheme::ThesisCubic, None).expect("converts");
+    let mesh = b.to_triangle_mesh(6).expect("mesh");
+    assert_eq!(mesh.n_vertices(), 16 * 49, "(k + 1)² vertices per patch");
+    assert_eq!(mesh.n_triangles(), 16 * 72, "2k² triangles per patch");
+    let colors = mesh.colors().expect("coloured");
+    let mut distinct: Vec<[u32; 3]> = colors.chunks(49).map(|c| c[0].map(f32::to_bits)).collect();
+    assert!(colors.chunks(49).all(|c| c.iter().all(|x| *x == c[0])), "one colour per patch");
+    distinct.sort_unstable();
+    distinct.dedup();
+    assert_eq!(distinct.len(), 16, "every patch its own colour");
+    for (p, uv) in mesh.positions().iter().zip(mesh.uvs()) {
+        assert!((*p - b.eval(uv.x, uv.y)).length() < 1e-12, "UVs are the surface parameters");
+    }
+    assert!(b.to_triangle_mesh(0).is_err(), "k = 0");
+
+    let mut obj = Vec::new();
+    b.write_obj(&mut obj).expect("writes");
+    let text = String::from_utf8(obj).expect("UTF-8");
+    let vertices: Vec<DVec3> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| {
+            let c: Vec<f64> = l.split_whitespace().map(|x| x.parse().expect("number")).collect();
+            DVec3::new(c[0], c[1], c[2])
+        })
+        .collect();
+    assert_eq!(vertices.len(), 16 * 16, "16 control points per patch");
+    assert_eq!(text.matches("cstype bezier").count(), 16, "one surface per patch");
+    // Read back patch 5 from its `surf` line (u fastest) and compare with the patch.
+    let surf: Vec<usize> = text
+        .lines()
+        .filter(|l| l.starts_with("surf "))
+        .nth(5)
+        .expect("patch 5")
+        .split_whitespace()
+        .skip(5)
+        .map(|i| i.parse().expect("index"))
+        .collect();
+    let rows = b.patches[5].rows();
+    for (n, &i) in surf.iter().enumerate() {
+        let (iu, iv) = (n % 4, n / 4);
+        assert_eq!(vertices[i - 1], rows[iu][iv], "control point ({iu}, {iv})");
+    }
+}
+
+#[test]
 fn bad_tolerances_and_small_grids_are_errors() {
     let s = torus(2.0, 1.0);
     let hermite = BezierScheme::Hermite(HermiteDegree::Cubic);

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use glam::DVec3;
+use hi_curve::bezier::BezierScheme;
 use hi_surface::{
     ColorMap, ColorScale, CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, Seam,
     TriangleMesh, export, sphere, torus,
@@ -94,10 +95,16 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
             },
         ),
     ];
-    cases
+    let mut all: Vec<(&'static str, TriangleMesh)> = cases
         .into_iter()
         .map(|(name, s, opts)| (name, TriangleMesh::try_from_surface(&s, &opts).unwrap()))
-        .collect()
+        .collect();
+    // Bézier patches of §5.7, one colour per patch (the sphere's patches meet at the poles).
+    for (name, s) in [("torus_patches", torus(2.0, 0.5)), ("sphere_patches", sphere(1.0))] {
+        let patches = s.to_bezier(BezierScheme::ThesisCubic, None).unwrap();
+        all.push((name, patches.to_triangle_mesh(8).unwrap()));
+    }
+    all
 }
 
 fn node_and_validator() -> Result<(), String> {
