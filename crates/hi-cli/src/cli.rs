@@ -17,7 +17,7 @@ const MAIN_HELP: &str = "\
 Basis: hi basis --n N --k K --t T1,... (values, derivatives); hi basis roots --n N --derivative D.
 Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivide|nonuniform
   --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
-Surface commands: hi surface eval|mesh|example (see 'hi surface --help').
+Surface commands: hi surface eval|mesh|example|bezier (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
 Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron] ...
 Bézier forms (§5.7): hi bezier basis --n N --scheme thesis-cubic|thesis-quintic;
@@ -626,7 +626,47 @@ pub(crate) enum SurfaceCommand {
     /// The grid file of an example surface: sphere, torus or a surface of §5.9.
     #[command(after_help = SURFACE_EXAMPLE_HELP)]
     Example(SurfaceExampleArgs),
+    /// The surface as Bézier patches (§5.7): JSON, OBJ free-form, or a coloured mesh.
+    #[command(after_help = SURFACE_BEZIER_HELP)]
+    Bezier(SurfaceBezierArgs),
 }
+
+/// Options of `hi surface bezier`.
+#[derive(Debug, Args)]
+pub(crate) struct SurfaceBezierArgs {
+    /// Where the grid comes from.
+    #[command(flatten)]
+    pub(crate) input: GridArg,
+    /// thesis-cubic, thesis-quintic, hermite (C1, default) or hermite-quintic (C2).
+    #[arg(long, value_name = "SCHEME", default_value = "hermite", value_parser = parse_bezier_scheme)]
+    pub(crate) scheme: BezierScheme,
+    /// For the Hermite schemes: the largest deviation from the surface (default 1e-4 of the
+    /// diagonal of the grid's bounding box).
+    #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]
+    pub(crate) tolerance: Option<f64>,
+    /// Samples per patch side in a mesh output (1 to 64).
+    #[arg(long, value_name = "K", default_value = "8", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) samples: usize,
+    /// The output: .json (patches), .obj (free-form Bézier surfaces), .gltf or .glb (a mesh with
+    /// one colour per patch).
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub(crate) output: PathBuf,
+}
+
+/// The output of `hi surface bezier`.
+const SURFACE_BEZIER_HELP: &str = surface_help!(
+    "\
+Converts the harmonic surface to Bézier patches (§5.7) and writes them to OUT: .json
+  {\"scheme\", \"u_breaks\", \"v_breaks\", \"patches\": [{\"u\": [u0, u1], \"v\": [v0, v1],
+  \"degree\": [du, dv], \"control\": [[point, ...] per u index]}], \"report\"}; .obj: OBJ free-form
+  surfaces (cstype bezier, surf); .gltf/.glb: the patches sampled K×K, one colour per patch.
+  thesis-cubic: the thesis's m×n bicubic patches (C0, through the points); thesis-quintic: its
+  degree-5 scheme; hermite: C1 bicubic patches from the surface's derivatives, refined until
+  a guaranteed bound is below the tolerance.
+Output: {\"files\": [...], \"report\": {\"scheme\", \"patches\", \"degree\": [du, dv],
+  \"max_deviation\", \"rms_deviation\", \"bound\", \"max_normal_jump\" (radians)}}.
+Example: hi surface example torus | hi surface bezier --input - --scheme thesis-cubic -o torus.glb"
+);
 
 /// The grid file option shared by the surface subcommands.
 #[derive(Debug, Args)]

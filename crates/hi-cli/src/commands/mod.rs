@@ -13,6 +13,7 @@ mod rotate;
 mod sample;
 mod subdivide;
 mod subdivide_mesh;
+mod surface_bezier;
 mod surface_eval;
 mod surface_example;
 mod surface_mesh;
@@ -45,5 +46,6 @@ pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
         Command::Surface(SurfaceCommand::Eval(args)) => surface_eval::run(args),
         Command::Surface(SurfaceCommand::Mesh(args)) => surface_mesh::run(args),
         Command::Surface(SurfaceCommand::Example(args)) => surface_example::run(args, pretty),
+        Command::Surface(SurfaceCommand::Bezier(args)) => surface_bezier::run(args, pretty),
     }
 }
