@@ -25,7 +25,7 @@ fn convert(grid: &str, ext: &str, args: &[&str]) -> (Value, TempFile) {
     (ok(&all), out)
 }
 
-/// Bernstein basis value B^d_i(s).
+/// The Bernstein basis value Bᵈᵢ(s).
 fn bernstein(d: usize, i: usize, s: f64) -> f64 {
     let binom = (0..i).fold(1.0, |acc, k| acc * (d - k) as f64 / (k + 1) as f64);
     binom * s.powi(i as i32) * (1.0 - s).powi((d - i) as i32)
