@@ -6,6 +6,7 @@ mod basis;
 mod eval;
 mod fairness;
 mod fit;
+mod fit_sections;
 mod nonuniform;
 mod resample;
 mod rotate;
