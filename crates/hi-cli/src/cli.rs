@@ -19,7 +19,7 @@ Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivid
   --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
 Surface commands: hi surface eval|mesh|example|bezier (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
-Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron] ...
+Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron|sections] ...
 Bézier forms (§5.7): hi bezier basis --n N --scheme thesis-cubic|thesis-quintic;
   hi curve to-bezier --kind harmonic --scheme thesis-cubic|thesis-quintic|hermite|hermite-quintic.
 
@@ -82,7 +82,16 @@ Output (stdout, and --report): {\"scan\": …, \"points\": P, \"image_points\": 
   more than once (not star-shaped about the centre; the surface follows the outermost shell
   there; above 5% a warning is printed). errors: distances from the scan's points to the
   surface; hausdorff: both ways against the scan's mesh, when it has faces.
-Example: hi fit bunny.obj -o bunny.glb --param flat-octahedron --smooth 1 --reduce 0.25";
+--param sections is algorithm 1 (§5.3) instead: sections across --axis (K equal slabs with
+  --slices K, else the thesis's recursive subdivision), a harmonic curve through each (points in
+  --order), insertion to equal counts, rotation alignment, the reversed traversal. Its output
+  replaces image, non_star_fraction and hole_fraction by \"sections\": [{\"range\", \"height\",
+  \"points\", \"radius\", \"polygon_crossings\", \"misordered\", \"curve_crossings\",
+  \"overshoot\", \"rotation\", \"deviation\", \"deviation_unaligned\"}, …], \"axis\",
+  \"contour_points\", \"deviation\", \"deviation_unaligned\", \"sampling_scale\",
+  \"surface_to_points\" and \"problems\": [\"section 3: …\", …] (each also printed as a warning).
+Example: hi fit bunny.obj -o bunny.glb --param flat-octahedron --smooth 1 --reduce 0.25
+         hi fit scan.xyz -o fit.glb --param sections --slices 24 --axis y";
 
 /// Prefixes a curve subcommand's help text with the input shape.
 macro_rules! curve_help {
@@ -224,7 +233,7 @@ pub(crate) enum Command {
     /// Subdivision surfaces of §4.5: refine a polygon mesh by a classic scheme.
     #[command(after_help = SUBDIVIDE_MESH_HELP)]
     Subdivide(SubdivideMeshArgs),
-    /// Fit a harmonic surface to a scan through a geometry image (§5.3, §5.4, §5.8).
+    /// Fit a harmonic surface to a scan through a geometry image, or by cross-sections (§5.3, §5.4, §5.8).
     #[command(after_help = FIT_HELP)]
     Fit(FitArgs),
     /// Bézier forms of the harmonic basis (§5.7).
@@ -277,6 +286,30 @@ pub(crate) enum ParamName {
     Octahedron,
     /// The octahedral square extended by its symmetry (seamless).
     FlatOctahedron,
+    /// No geometry image: algorithm 1's cross-sections (§5.3).
+    Sections,
+}
+
+/// The slicing axes of `hi fit --param sections`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum AxisName {
+    /// Sections perpendicular to x.
+    X,
+    /// Sections perpendicular to y.
+    Y,
+    /// Sections perpendicular to z.
+    Z,
+    /// Sections perpendicular to the direction of largest variance.
+    Principal,
+}
+
+/// The contour orders of `hi fit --param sections`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum OrderName {
+    /// By polar angle about the section's centroid.
+    Angular,
+    /// Greedy nearest-neighbour chaining.
+    Nearest,
 }
 
 /// Options of `hi fit`.
@@ -306,6 +339,15 @@ pub(crate) struct FitArgs {
     /// Also write the summary as JSON to this file.
     #[arg(long, value_name = "R.json")]
     pub(crate) report: Option<PathBuf>,
+    /// --param sections: K sections of equal thickness (default: the thesis's recursive subdivision).
+    #[arg(long, value_name = "K", value_parser = parse_whole)]
+    pub(crate) slices: Option<usize>,
+    /// --param sections: the axis the sections are cut across.
+    #[arg(long, value_enum, default_value = "z")]
+    pub(crate) axis: AxisName,
+    /// --param sections: how each section's points are ordered along its contour.
+    #[arg(long, value_enum, default_value = "angular")]
+    pub(crate) order: OrderName,
 }
 
 /// The subdivision schemes of `hi subdivide`.

@@ -34,7 +34,8 @@ pub struct Distances {
 }
 
 impl Distances {
-    fn from_values(per_point: Vec<f64>, diagonal: f64) -> Self {
+    /// The summary of `per_point`, relative numbers against `diagonal`.
+    pub(crate) fn from_values(per_point: Vec<f64>, diagonal: f64) -> Self {
         let n = per_point.len().max(1) as f64;
         let mean = per_point.iter().sum::<f64>() / n;
         let rms = (per_point.iter().map(|d| d * d).sum::<f64>() / n).sqrt();

@@ -47,6 +47,21 @@ pub enum Error {
         /// What is degenerate, in words.
         what: &'static str,
     },
+    /// A cross-section of algorithm 1 (§5.3) holds too few points for a contour.
+    SparseSlice {
+        /// The section, from the lowest (0).
+        slice: usize,
+        /// Sections in all.
+        n_slices: usize,
+        /// The lower end of its slab of heights along the slicing axis.
+        from: f64,
+        /// The upper end.
+        to: f64,
+        /// Points in it.
+        found: usize,
+        /// Points needed.
+        needed: usize,
+    },
     /// An error from the surface layer.
     Surface(hi_surface::Error),
 }
@@ -66,6 +81,10 @@ impl fmt::Display for Error {
                 write!(f, "option {name} = {value} is out of range: {expected}")
             }
             Self::Degenerate { what } => write!(f, "degenerate input: {what}"),
+            Self::SparseSlice { slice, n_slices, from, to, found, needed } => write!(
+                f,
+                "section {slice} of {n_slices} (heights {from:.6} to {to:.6} along the axis) has {found} points, at least {needed} needed: use fewer sections"
+            ),
             Self::Surface(e) => write!(f, "{e}"),
         }
     }

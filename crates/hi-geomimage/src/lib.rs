@@ -12,6 +12,7 @@
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
 //! | ray-cast geometry images (algorithm 2): spherical, octahedral and flattened octahedral layouts, with star-shape and hole diagnostics | §5.3 | [`spherical`], [`Layout`] |
 //! | periodic smoothing (box, Gaussian), Theorem 5.3 resampling with the reduction error | §5.4 | [`Smoothing`], [`GeometryImage::smoothed`], [`GeometryImage::resampled`] |
+//! | algorithm 1: cross-sections, a harmonic curve per contour, insertion, rotation alignment, the reversed traversal; with failure diagnostics | §5.3, figures 5.7–5.9 | [`sections`], [`fit_sections`] |
 //! | the fitting pipeline, timed stage by stage, with diagnostics and errors | §5.3, §5.8, Table 5.1 | [`fit()`] |
 //! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
 //! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
@@ -23,10 +24,12 @@ pub mod fit;
 mod image;
 pub mod sampling;
 pub mod scan;
+pub mod sections;
 pub mod spherical;
 
 pub use error::Error;
 pub use filter::Smoothing;
 pub use fit::{Fit, FitOptions, FitReport, Stage, fit};
 pub use image::{GeometryImage, MAX_TEXELS};
+pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};
 pub use spherical::Layout;

@@ -14,6 +14,7 @@
 //! | [`polygons`] | 3.7–3.12, 3.15–3.18: polygons by METAPOST, B-spline and harmonic interpolation, curvature plots; the fairness table |
 //! | [`nonuniform`] | 3.20–3.23, non-uniform harmonic interpolation (§3.10) |
 //! | [`theorems`] | 5.2, 5.6: subdivision, rotation and insertion (chapter 5) |
+//! | [`sections`] | 5.7–5.9: surfaces fitted from cross-sections (algorithm 1), once well and twice badly |
 //! | [`fitting`] | 5.12: a surface fitted to scattered points through a geometry image |
 //! | [`surfaces`] | 4.1, 5.1, 5.3–5.5, 5.31–5.43: surfaces as glTF models; the §5.9 curvature tables |
 //! | [`subdivision`] | 4.11–4.35: subdivision schemes on the cube, the star and a head as glTF models; Table 4.1 |
@@ -36,6 +37,7 @@ mod glb;
 mod nonuniform;
 mod plot;
 mod polygons;
+mod sections;
 mod subdivision;
 mod surfaces;
 mod theorems;
@@ -149,6 +151,7 @@ fn registry() -> Vec<Figure> {
         surfaces::FIGURES,
         subdivision::FIGURES,
         fitting::FIGURES,
+        sections::FIGURES,
         theorems::FIGURES,
     ]
     .concat();

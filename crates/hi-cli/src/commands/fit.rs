@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! `hi fit`: a harmonic surface fitted to a scan through a geometry image (§5.3, §5.4, §5.8),
-//! with a progress display, a summary and a warning when the scan is not star-shaped.
+//! with a progress display, a summary and a warning when the scan is not star-shaped;
+//! `--param sections` goes to algorithm 1 instead ([`super::fit_sections`]).
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -27,6 +28,12 @@ const NON_STAR_WARNING: f64 = 0.05;
 /// [`Failure::Input`] for an unreadable or malformed scan (with its line or byte), bad
 /// options, an unknown output extension, or an output that cannot be written.
 pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
+    let layout = match args.param {
+        ParamName::Sphere => Layout::Sphere,
+        ParamName::Octahedron => Layout::Octahedron,
+        ParamName::FlatOctahedron => Layout::FlatOctahedron,
+        ParamName::Sections => return super::fit_sections::run(args),
+    };
     let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let as_grid = ext.as_deref() == Some("json");
     if !as_grid {
@@ -43,11 +50,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     let scan = read_scan(&args.scan)
         .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
     let options = FitOptions {
-        layout: match args.param {
-            ParamName::Sphere => Layout::Sphere,
-            ParamName::Octahedron => Layout::Octahedron,
-            ParamName::FlatOctahedron => Layout::FlatOctahedron,
-        },
+        layout,
         rows: args.resolution.0,
         cols: args.resolution.1,
         centre,

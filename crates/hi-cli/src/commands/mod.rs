@@ -7,6 +7,7 @@ mod bezier_basis;
 mod eval;
 mod fairness;
 mod fit;
+mod fit_sections;
 mod nonuniform;
 mod resample;
 mod rotate;
