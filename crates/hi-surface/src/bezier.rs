@@ -16,7 +16,8 @@
 //!
 //! # Deviation
 //!
-//! Measured on every patch at 9×9 parameters against the surface, and bounded: each scheme but
+//! Measured on every patch at 9×9 parameters (5×5 beyond 2¹⁴ patches) against the surface,
+//! and bounded: each scheme but
 //! the thesis quintic is a tensor product P = Pᵤ·Pᵥ of one-dimensional interpolation operators,
 //! so I − Pᵤ·Pᵥ = (I − Pᵤ) + (I − Pᵥ) − (I − Pᵤ)·(I − Pᵥ) gives
 //! ‖p − Pp‖ ≤ c·hᵤʳ·Mᵤ + c·hᵥʳ·Mᵥ + c²·hᵤʳhᵥʳ·Mᵤᵥ, with (c, r) the curve scheme's remainder
@@ -35,7 +36,8 @@ use crate::{Error, HarmonicSurface, TriangleMesh, srgb_to_linear};
 /// The most patches a conversion makes.
 pub const MAX_PATCHES: usize = 1 << 22;
 
-/// Parameters per patch side for the measured deviation (the ends included: this + 1).
+/// Parameters per patch side for the measured deviation (the ends included: this + 1; half as
+/// many beyond 2¹⁴ patches).
 pub const SAMPLES_PER_SIDE: usize = 8;
 
 /// What a surface conversion achieved (§5.7): patch count, deviation (measured, bounded) and
@@ -307,7 +309,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
                 max_normal_jump: 0.0,
             },
         };
-        let (max, rms) = self.measure(&out);
+        let (max, rms) = self.measure(&out)?;
         out.report = PatchReport {
             patches: out.patches.len(),
             degree: (out.patches[0].degree_u(), out.patches[0].degree_v()),
@@ -427,25 +429,14 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             HermiteDegree::Cubic => 2,
             HermiteDegree::Quintic => 3,
         };
-        // Corner data: ∂ᵤᵈ∂ᵥᵉp at every grid vertex, d, e < orders.
-        let corner = |a: usize, b: usize| -> Vec<Vec<P>> {
-            let (u, v) = (a as f64 / nu as f64, b as f64 / nv as f64);
-            (0..orders)
-                .map(|d| {
-                    (0..orders)
-                        .map(|e| {
-                            if d == 0 && e == 0 {
-                                self.eval(u, v)
-                            } else {
-                                self.eval_deriv(u, v, d, e)
-                            }
-                        })
-                        .collect()
-                })
-                .collect()
-        };
-        let data: Vec<Vec<Vec<Vec<P>>>> =
-            (0..=nu).map(|a| (0..=nv).map(|b| corner(a, b)).collect()).collect();
+        // Corner data: ∂ᵤᵈ∂ᵥᵉp at every grid vertex, d, e < orders, by separable sampling.
+        let mut grids = Vec::with_capacity(orders * orders);
+        for d in 0..orders {
+            for e in 0..orders {
+                grids.push(self.sample_params(&u_breaks, &v_breaks, d, e)?);
+            }
+        }
+        let data = |a: usize, b: usize, d: usize, e: usize| grids[d * orders + e].get(a, b);
         let (wu, wv) =
             (hermite_weights(degree, 1.0 / nu as f64), hermite_weights(degree, 1.0 / nv as f64));
         let half = wu.len() / 2;
@@ -458,12 +449,11 @@ impl<P: ControlPoint> HarmonicSurface<P> {
                             .map(|j| {
                                 let ca = if i < half { a } else { a + 1 };
                                 let cb = if j < half { b } else { b + 1 };
-                                let d = &data[ca][cb];
                                 let mut sum = P::ZERO;
                                 for (du, &x) in wu[i].iter().enumerate() {
                                     for (dv, &y) in wv[j].iter().enumerate() {
                                         if x != 0.0 && y != 0.0 {
-                                            sum += d[du][dv] * (x * y);
+                                            sum += data(ca, cb, du, dv) * (x * y);
                                         }
                                     }
                                 }
@@ -479,27 +469,34 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     }
 
     /// Largest and RMS distance between the surface and the patches on every patch's
-    /// (`SAMPLES_PER_SIDE` + 1)² parameters.
-    fn measure(&self, b: &SurfaceBezier<P>) -> (f64, f64) {
+    /// (k + 1)² parameters, k = [`SAMPLES_PER_SIDE`] (half that beyond 2¹⁴ patches), the
+    /// surface sampled by separable basis matrices.
+    fn measure(&self, b: &SurfaceBezier<P>) -> Result<(f64, f64), Error> {
+        let k = if b.patches.len() > 1 << 14 { SAMPLES_PER_SIDE / 2 } else { SAMPLES_PER_SIDE };
+        let params = |breaks: &[f64]| -> Vec<f64> {
+            breaks
+                .windows(2)
+                .flat_map(|w| (0..=k).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / k as f64))
+                .collect()
+        };
+        let (us, vs) = (params(&b.u_breaks), params(&b.v_breaks));
+        let samples = self.sample_params(&us, &vs, 0, 0)?;
         let nv = b.v_breaks.len() - 1;
         let (mut max, mut sum, mut count) = (0.0_f64, 0.0, 0_usize);
         for (idx, patch) in b.patches.iter().enumerate() {
             let (a, c) = (idx / nv, idx % nv);
-            let (u0, u1) = (b.u_breaks[a], b.u_breaks[a + 1]);
-            let (v0, v1) = (b.v_breaks[c], b.v_breaks[c + 1]);
-            for i in 0..=SAMPLES_PER_SIDE {
-                let s = i as f64 / SAMPLES_PER_SIDE as f64;
-                for j in 0..=SAMPLES_PER_SIDE {
-                    let t = j as f64 / SAMPLES_PER_SIDE as f64;
-                    let d = (patch.eval(s, t) - self.eval(u0 + s * (u1 - u0), v0 + t * (v1 - v0)))
-                        .norm();
+            for i in 0..=k {
+                for j in 0..=k {
+                    let (s, t) = (i as f64 / k as f64, j as f64 / k as f64);
+                    let on = samples.get(a * (k + 1) + i, c * (k + 1) + j);
+                    let d = (patch.eval(s, t) - on).norm();
                     max = max.max(d);
                     sum += d * d;
                     count += 1;
                 }
             }
         }
-        (max, (sum / count.max(1) as f64).sqrt())
+        Ok((max, (sum / count.max(1) as f64).sqrt()))
     }
 }
 
