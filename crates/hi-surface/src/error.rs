@@ -146,7 +146,7 @@ impl fmt::Display for Error {
             }
             Error::MeshFile(e) => write!(f, "{e}"),
             Error::TooFewSlices { needed, got } => {
-                write!(f, "{got} slices given: the B-spline surface fit needs at least {needed}")
+                write!(f, "the B-spline surface fit needs at least {needed} slices, {got} given")
             }
             Error::TooFewSlicePoints { slice, needed, got } => {
                 write!(f, "slice {slice} has {got} points: its U-curve needs at least {needed}")

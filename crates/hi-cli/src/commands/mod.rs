@@ -12,6 +12,7 @@ mod rotate;
 mod sample;
 mod subdivide;
 mod subdivide_mesh;
+mod surface_bspline;
 mod surface_eval;
 mod surface_example;
 mod surface_mesh;
@@ -43,5 +44,6 @@ pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
         Command::Surface(SurfaceCommand::Eval(args)) => surface_eval::run(args),
         Command::Surface(SurfaceCommand::Mesh(args)) => surface_mesh::run(args),
         Command::Surface(SurfaceCommand::Example(args)) => surface_example::run(args, pretty),
+        Command::Surface(SurfaceCommand::BsplineFit(args)) => surface_bspline::run(args, pretty),
     }
 }
