@@ -17,7 +17,7 @@ const MAIN_HELP: &str = "\
 Basis: hi basis --n N --k K --t T1,... (values, derivatives); hi basis roots --n N --derivative D.
 Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivide|nonuniform
   --input FILE ... (see 'hi curve --help' and 'hi curve eval --help', for instance).
-Surface commands: hi surface eval|mesh|example|bezier (see 'hi surface --help').
+Surface commands: hi surface eval|mesh|example|bspline-fit|bezier (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
 Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron|sections] ...
 Bézier forms (§5.7): hi bezier basis --n N --scheme thesis-cubic|thesis-quintic;
@@ -602,7 +602,8 @@ const SURFACE_HELP: &str = "\
 Input (--input FILE, or --input - for stdin): {\"grid\": [[[x, y, z], ...], ...]} or the bare
   array of rows: an m×n grid of 3-D points (m, n ≥ 1, every row of the same length), row j at
   u = j/m, point k of a row at v = k/n. The harmonic surface p(u, v) through it is smooth and
-  1-periodic in u and v (§5.1). 'hi surface example' writes such files.";
+  1-periodic in u and v (§5.1). 'hi surface example' writes such files.
+  'hi surface bspline-fit' takes slices of points instead (see its --help).";
 
 /// Prefixes a surface subcommand's help text with the input shape.
 macro_rules! surface_help {
@@ -671,6 +672,72 @@ pub(crate) enum SurfaceCommand {
     /// The surface as Bézier patches (§5.7): JSON, OBJ free-form, or a coloured mesh.
     #[command(after_help = SURFACE_BEZIER_HELP)]
     Bezier(SurfaceBezierArgs),
+    /// A bicubic B-spline surface through slices of points (§4.4): JSON or a mesh.
+    #[command(name = "bspline-fit", after_help = SURFACE_BSPLINE_HELP)]
+    BsplineFit(SurfaceBsplineArgs),
+}
+
+/// The input and output of `hi surface bspline-fit`.
+const SURFACE_BSPLINE_HELP: &str = "\
+Input: {\"slices\": [[[x, y, z], ...], ...]} or the bare array of slices: lists of 3-D points,
+  of any lengths (at least 2 slices of at least 2 points; 3 when closed; 4 with not-a-knot).
+  Through each slice a cubic U-curve (chord-length parameters); the U-curves' knots merged by
+  knot insertion; V-curves across the slices at common averaged chord-length parameters; the
+  bicubic tensor-product B-spline through every point (Watt & Watt's curve network, §4.4).
+Output: without -o, {\"degree\": [3, 3], \"closed\": [cu, cv], \"u_knots\": [...],
+  \"v_knots\": [...], \"control\": [[[x, y, z], ...], ...] (row i along u), \"u_params\": [[...]],
+  \"v_params\": [...], \"patches\": {\"u_breaks\", \"v_breaks\", \"control\": [4×4 nets]},
+  \"adini_patches\": {...}}: point k of slice s is p(u_params[s][k], v_params[s]); closed knots
+  are breakpoints. patches: the exact bicubic Bézier patches; adini_patches: Watt & Watt's,
+  interior points from Adini's twists. With -o OUT.json that object goes to OUT; with
+  -o OUT.(obj|gltf|glb) a mesh of the surface does. stdout then gets {\"files\": [...],
+  \"control\": [M, N]} (and \"vertices\", \"triangles\" for a mesh).
+Example: hi surface bspline-fit --input slices.json --closed-u -o tube.glb";
+
+/// Options of `hi surface bspline-fit`.
+#[derive(Debug, Args)]
+pub(crate) struct SurfaceBsplineArgs {
+    /// JSON file with the slices ("-" reads stdin).
+    #[arg(long, value_name = "FILE")]
+    pub(crate) input: PathBuf,
+    /// The slices are closed curves (periodic U-curves; do not repeat the first point).
+    #[arg(long)]
+    pub(crate) closed_u: bool,
+    /// The surface closes across the slices (the last slice is followed by the first).
+    #[arg(long)]
+    pub(crate) closed_v: bool,
+    /// End condition of the open directions.
+    #[arg(long, value_enum, default_value = "natural")]
+    pub(crate) end: BsplineEnd,
+    /// Parameters of the points along the slices and of the slices.
+    #[arg(long, value_enum, default_value = "chord-length")]
+    pub(crate) params: BsplineParams,
+    /// Mesh quads along u and v, as U×V (at least 3 along a closed direction).
+    #[arg(long, value_name = "UxV", default_value = "64x64", value_parser = parse_size)]
+    pub(crate) resolution: Size,
+    /// Write to OUT: .json (the surface) or a mesh (.obj, .gltf + .bin, .glb).
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub(crate) output: Option<PathBuf>,
+}
+
+/// End conditions of `hi surface bspline-fit`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum BsplineEnd {
+    /// Zero second derivatives at the ends.
+    Natural,
+    /// Continuous third derivatives at the second and second-last points.
+    NotAKnot,
+    /// Coincident end control points (§2.11): zero end derivatives.
+    Clamped,
+}
+
+/// Parameters of `hi surface bspline-fit`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum BsplineParams {
+    /// Chord length (per slice; averaged across the slices).
+    ChordLength,
+    /// Uniform.
+    Uniform,
 }
 
 /// Options of `hi surface bezier`.

@@ -7,6 +7,9 @@
 //!
 //! Surfaces: `{"grid": [[[x, y, z], ...], ...]}` or the bare array of rows, each row an array
 //! of 3-D points, all rows of one length.
+//!
+//! Slices (`hi surface bspline-fit`): `{"slices": [[[x, y, z], ...], ...]}` or the bare array
+//! of slices, each a list of 3-D points, of any lengths.
 
 use std::io::Read;
 use std::path::Path;
@@ -78,49 +81,69 @@ fn read_text(path: &Path) -> Result<(String, String), Failure> {
 ///
 /// A message naming the problem (without the file name).
 pub(crate) fn parse_grid(text: &str) -> Result<Vec<Vec<DVec3>>, String> {
+    parse_nested(text, "grid", "row")
+}
+
+/// Reads the slices of the file at `path` (or stdin for `-`): `{"slices": [[[x, y, z], ...],
+/// ...]}` or the bare array of slices, each a list of 3-D points (of any lengths).
+///
+/// # Errors
+///
+/// [`Failure::Input`] naming the file and the problem: unreadable file, malformed JSON, wrong
+/// shape, points that are not 3-D or not finite.
+pub(crate) fn read_slices(path: &Path) -> Result<(String, Vec<Vec<DVec3>>), Failure> {
+    let (name, text) = read_text(path)?;
+    let slices = parse_nested(&text, "slices", "slice")
+        .map_err(|message| Failure::input(format!("{name}: {message}")))?;
+    Ok((name, slices))
+}
+
+/// Parses `{"KEY": [[p, ...], ...]}` or the bare array of lists of 3-D points; `row` names a
+/// list in messages.
+fn parse_nested(text: &str, key: &str, row: &str) -> Result<Vec<Vec<DVec3>>, String> {
     let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e))?;
     let rows = match value {
         Value::Array(rows) => rows,
         Value::Object(mut map) => {
-            if let Some(key) = map.keys().find(|k| *k != "grid") {
+            if let Some(other) = map.keys().find(|k| *k != key) {
                 return Err(format!(
-                    "unknown key \"{key}\": the object must have the key \"grid\" only"
+                    "unknown key \"{other}\": the object must have the key \"{key}\" only"
                 ));
             }
-            match map.remove("grid") {
+            match map.remove(key) {
                 Some(Value::Array(rows)) => rows,
                 Some(other) => {
                     return Err(format!(
-                        "\"grid\" must be an array of rows, found {}",
+                        "\"{key}\" must be an array of {row}s, found {}",
                         kind(&other)
                     ));
                 }
-                None => return Err("the object has no key \"grid\"".to_owned()),
+                None => return Err(format!("the object has no key \"{key}\"")),
             }
         }
         other => {
             return Err(format!(
-                "expected an array of rows of points or an object {{\"grid\": [...]}}, found {}",
+                "expected an array of {row}s of points or an object {{\"{key}\": [...]}}, found {}",
                 kind(&other)
             ));
         }
     };
     rows.iter()
         .enumerate()
-        .map(|(j, row)| {
-            let Value::Array(points) = row else {
-                return Err(format!("row {j} must be an array of points, found {}", kind(row)));
+        .map(|(j, list)| {
+            let Value::Array(points) = list else {
+                return Err(format!("{row} {j} must be an array of points, found {}", kind(list)));
             };
             points
                 .iter()
                 .enumerate()
                 .map(|(k, point)| {
-                    let c = coordinates(k, point).map_err(|e| format!("row {j}: {e}"))?;
+                    let c = coordinates(k, point).map_err(|e| format!("{row} {j}: {e}"))?;
                     if c.len() == 3 {
                         Ok(DVec3::new(c[0], c[1], c[2]))
                     } else {
                         Err(format!(
-                            "row {j}, point {k} has {} coordinates: surface points must have 3",
+                            "{row} {j}, point {k} has {} coordinates: surface points must have 3",
                             c.len()
                         ))
                     }

@@ -20,6 +20,7 @@
 //! | triangle meshes over a parameter window: welded or split seams, poles, normals (§5.5) | [`TriangleMesh`], [`MeshOptions`] |
 //! | curvature colours, blue → purple as in §5.9, with a legend | [`ColorMap`], [`ColorLegend`] |
 //! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files, read-back checks | [`export`] |
+//! | bicubic B-spline surfaces through slices of data (§4.4, Watt & Watt's curve network), exact and Adini Bézier patches | [`bspline_fit`], [`BSplineSurface`] |
 //! | subdivision surfaces of §4.5 on polygon meshes (Loop, butterfly, √3, Catmull-Clark, Doo-Sabin) | [`subdivision`] |
 //! | Bézier patches (§5.7): the thesis's cubic and quintic schemes, C1 Hermite patches to a tolerance | [`bezier`] |
 //!
@@ -38,6 +39,7 @@
 //! None: the crate has no optional features.
 
 pub mod bezier;
+pub mod bspline_fit;
 mod colormap;
 mod error;
 mod examples;
@@ -51,6 +53,7 @@ mod spectrum;
 pub mod subdivision;
 mod surface;
 
+pub use bspline_fit::{BSplineFit, BSplineSurface, BezierPatchGrid};
 pub use colormap::{
     ColorLegend, ColorMap, ColorMapping, ColorScale, CurvatureQuantity, HIGH_SRGB, LOW_SRGB,
     NEGATIVE_SRGB, NEUTRAL_SRGB, linear_to_srgb, linear_to_srgb_rgb, srgb_to_linear,

@@ -8,6 +8,7 @@
 //!
 //! | module | figures |
 //! |---|---|
+//! | [`bspline`] | 4.5: B-spline surface fitting through a curve network (§4.4) |
 //! | [`chapter2`] | 2.1–2.18: Lagrange, Bézier, B-spline and METAPOST curves, curvature and torsion (chapter 2) |
 //! | [`basis`] | 3.1–3.6, the functions σ and σₖ |
 //! | [`curves`] | 3.13, 3.14, 3.19: uniform harmonic curves against other curves |
@@ -29,6 +30,7 @@
 //! the test `committed_figures_are_current`.
 
 mod basis;
+mod bspline;
 mod chapter2;
 mod curves;
 mod data;
@@ -144,6 +146,7 @@ impl Figure {
 fn registry() -> Vec<Figure> {
     let mut all = [
         basis::FIGURES,
+        bspline::FIGURES,
         chapter2::FIGURES,
         curves::FIGURES,
         nonuniform::FIGURES,

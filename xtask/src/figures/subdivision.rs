@@ -441,7 +441,8 @@ pub(crate) const TABLES: &[Table] = &[Table {
         on its triangles), relative to the control mesh's bounding-box diagonal. *Continuity*: as stated by the \
         schemes' authors for the limit surface at regular vertices (at extraordinary vertices the triangle schemes \
         and Catmull-Clark are C¹). *V / F*: vertices and faces of the control mesh and after 1, 2, 3 steps. The \
-        harmonic row subdivides the 4×4 torus grid (§5.2; the \"faces\" are the grid's quads). Time per step is \
+        harmonic row subdivides the 4×4 torus grid (§5.2; the \"faces\" are the grid's quads); the B-spline row \
+        fits eight closed slices of a torus with 6 to 9 points each (§4.4). Time per step is \
         measured by `cargo xtask bench subdivision` and reported in `docs/performance.md`, not here: this page is \
         regenerated bit for bit.",
     make: scheme_table,
@@ -524,7 +525,46 @@ fn scheme_table() -> Result<String> {
         );
     }
     let _ = writeln!(s, "{}", harmonic_row()?);
+    let _ = writeln!(s, "{}", bspline_row()?);
     Ok(s)
+}
+
+/// The row of the B-spline surface fit (§4.4): eight closed slices of a torus with 6 to 9
+/// points each (so the U-knots must be merged), closed across the slices.
+fn bspline_row() -> Result<String> {
+    use hi_surface::bspline_fit::{BSplineFit, BSplineFitOptions};
+    let slices: Vec<Vec<DVec3>> = (0..8)
+        .map(|s| {
+            let v = 2.0 * PI * f64::from(s) / 8.0;
+            let count = 6 + s % 4;
+            (0..count)
+                .map(|k| {
+                    let u = 2.0 * PI * f64::from(k) / f64::from(count);
+                    let r = 2.0 + 0.8 * u.cos();
+                    DVec3::new(r * v.cos(), r * v.sin(), 0.8 * u.sin())
+                })
+                .collect()
+        })
+        .collect();
+    let points: Vec<DVec3> = slices.iter().flatten().copied().collect();
+    let options = BSplineFitOptions { closed_u: true, closed_v: true, ..Default::default() };
+    let fit = BSplineFit::try_new(slices.clone(), &options)?;
+    let mut worst: f64 = 0.0;
+    for (s, slice) in slices.iter().enumerate() {
+        for (k, &x) in slice.iter().enumerate() {
+            let p = fit.surface().eval(fit.u_params()[s][k], fit.v_params()[s]);
+            worst = worst.max(p.distance(x));
+        }
+    }
+    let err = worst / hi_geomimage::distance::bounding_diagonal(&points);
+    ensure!(err < 1e-12, "the B-spline fit misses a data point by {err:e}");
+    let (cu, cv) = fit.surface().n_control();
+    Ok(format!(
+        "| B-spline surface fit (§4.4) | – | no (point slices) | – | no (point slices) | – | {} | C² | {} slices of 6–9 points ({} in all) → a {cu}×{cv} bicubic control net |",
+        if worst == 0.0 { "0 (kept)".to_owned() } else { format!("≤ {err:.0e} (rounding)") },
+        slices.len(),
+        points.len()
+    ))
 }
 
 /// The relative distance of a control vertex, "0" when exactly zero.

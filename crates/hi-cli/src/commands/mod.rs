@@ -15,6 +15,7 @@ mod sample;
 mod subdivide;
 mod subdivide_mesh;
 mod surface_bezier;
+mod surface_bspline;
 mod surface_eval;
 mod surface_example;
 mod surface_mesh;
@@ -48,5 +49,6 @@ pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
         Command::Surface(SurfaceCommand::Mesh(args)) => surface_mesh::run(args),
         Command::Surface(SurfaceCommand::Example(args)) => surface_example::run(args, pretty),
         Command::Surface(SurfaceCommand::Bezier(args)) => surface_bezier::run(args, pretty),
+        Command::Surface(SurfaceCommand::BsplineFit(args)) => surface_bspline::run(args, pretty),
     }
 }
