@@ -90,6 +90,10 @@ Output (stdout, and --report): {\"scan\": …, \"points\": P, \"image_points\": 
   \"overshoot\", \"rotation\", \"deviation\", \"deviation_unaligned\"}, …], \"axis\",
   \"contour_points\", \"deviation\", \"deviation_unaligned\", \"sampling_scale\",
   \"surface_to_points\" and \"problems\": [\"section 3: …\", …] (each also printed as a warning).
+--bezier writes the surface as Bézier patches (§5.7, see 'hi surface bezier --help'): .json
+  patches, .obj free-form surfaces or a .glb/.gltf mesh with one colour per patch (the patches
+  of one cover of the object), and adds \"bezier\": {\"scheme\", \"patches\", \"patches_once\",
+  \"degree\", \"max_deviation\", \"rms_deviation\", \"bound\", \"max_normal_jump\", \"seconds\"}.
 Example: hi fit bunny.obj -o bunny.glb --param flat-octahedron --smooth 1 --reduce 0.25
          hi fit scan.xyz -o fit.glb --param sections --slices 24 --axis y";
 
@@ -337,6 +341,17 @@ pub(crate) struct FitArgs {
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = parse_float_list)]
     pub(crate) centre: Option<FloatList>,
     /// Also write the summary as JSON to this file.
+    /// Write the surface as Bézier patches (§5.7): .json patches, .obj free-form surfaces, or a
+    /// .glb/.gltf mesh with one colour per patch (geometry-image layouts only).
+    #[arg(long)]
+    pub(crate) bezier: bool,
+    /// With --bezier: thesis-cubic, thesis-quintic, hermite (C1, default) or hermite-quintic.
+    #[arg(long, value_name = "SCHEME", default_value = "hermite", value_parser = parse_bezier_scheme)]
+    pub(crate) bezier_scheme: BezierScheme,
+    /// With --bezier and a Hermite scheme: the largest deviation of the patches from the surface
+    /// (default 1e-4 of the diagonal of the image's bounding box).
+    #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]
+    pub(crate) tolerance: Option<f64>,
     #[arg(long, value_name = "R.json")]
     pub(crate) report: Option<PathBuf>,
     /// --param sections: K sections of equal thickness (default: the thesis's recursive subdivision).

@@ -119,3 +119,68 @@ fn bad_scans_and_options_are_named() {
     );
     bad(&["fit", "scan.las", "-o", out.path()], "unknown scan format");
 }
+
+#[test]
+fn bezier_output_meets_its_tolerance_and_covers_the_object_once() {
+    let scan = scan_file(&ellipsoid_xyz(20_000, [1.5, 1.0, 0.7]), "xyz");
+    // The patches as JSON: the corners of the Hermite patches lie on the fitted surface, whose
+    // grid points are on the ellipsoid.
+    let json = TempFile::path_with("json");
+    let out = ok(&[
+        "fit",
+        scan.path(),
+        "-o",
+        json.path(),
+        "--resolution",
+        "16x16",
+        "--bezier",
+        "--tolerance",
+        "1e-3",
+    ]);
+    let b = &out["bezier"];
+    assert_eq!(b["scheme"], "hermite", "default scheme");
+    assert!(num(&b["bound"]) <= 1e-3 && num(&b["max_deviation"]) <= num(&b["bound"]), "{b}");
+    assert!(num(&b["max_normal_jump"]) < 1e-6, "C1: {b}");
+    let file: Value =
+        serde_json::from_str(&std::fs::read_to_string(json.as_path()).expect("patches"))
+            .expect("JSON");
+    assert_eq!(
+        file["patches"].as_array().expect("patches").len() as u64,
+        b["patches"].as_u64().expect("count"),
+        "every patch is in the file"
+    );
+    // The sphere layout covers the object over u ∈ [0, ½]: half the patch rows.
+    assert_eq!(b["patches_once"].as_u64().expect("once") * 2, b["patches"].as_u64().expect("all"));
+    // The thesis scheme as a coloured mesh: one colour per patch.
+    let glb = TempFile::path_with("glb");
+    let out = ok(&[
+        "fit",
+        scan.path(),
+        "-o",
+        glb.path(),
+        "--resolution",
+        "16x16",
+        "--bezier",
+        "--bezier-scheme",
+        "thesis-cubic",
+    ]);
+    assert_eq!(out["bezier"]["patches"], 256, "m×n thesis patches");
+    let (doc, buffers, _) = gltf::import(glb.as_path()).expect("the GLB reads back");
+    let prim = doc.meshes().next().expect("mesh").primitives().next().expect("primitive");
+    let colors: Vec<[f32; 3]> = prim
+        .reader(|buf| Some(&buffers[buf.index()]))
+        .read_colors(0)
+        .expect("COLOR_0")
+        .into_rgb_f32()
+        .collect();
+    assert_eq!(colors.len(), 128 * 25, "the 128 patches of one cover, 5×5 vertices each");
+    bad(
+        &["fit", scan.path(), "-o", "x.glb", "--tolerance", "1e-3"],
+        "--tolerance applies with --bezier",
+    );
+    bad(
+        &["fit", scan.path(), "-o", "x.glb", "--param", "sections", "--bezier"],
+        "geometry-image layouts",
+    );
+    bad(&["fit", scan.path(), "-o", "x.glb", "--bezier", "--tolerance", "0"], "tolerance");
+}

@@ -88,6 +88,32 @@ impl<P: ControlPoint> SurfaceBezier<P> {
         let (i, s, t) = self.locate(u, v);
         self.patches[i].eval(s, t)
     }
+
+    /// The parameter window ([u0, u1], [v0, v1]) of patch `index` (row-major).
+    ///
+    /// # Panics
+    ///
+    /// If `index` is not less than the number of patches.
+    #[must_use]
+    pub fn window(&self, index: usize) -> ([f64; 2], [f64; 2]) {
+        assert!(index < self.patches.len(), "patch {index} of {}", self.patches.len());
+        let nv = self.v_breaks.len() - 1;
+        let (a, c) = (index / nv, index % nv);
+        ([self.u_breaks[a], self.u_breaks[a + 1]], [self.v_breaks[c], self.v_breaks[c + 1]])
+    }
+
+    /// The indices of the patches whose u-window lies inside `u_range` (to 1e-12): for a surface
+    /// that covers its object twice, such as a fitted spherical geometry image, the patches of
+    /// one cover.
+    #[must_use]
+    pub fn patches_in(&self, u_range: [f64; 2]) -> Vec<usize> {
+        (0..self.patches.len())
+            .filter(|&i| {
+                let ([u0, u1], _) = self.window(i);
+                u0 >= u_range[0] - 1e-12 && u1 <= u_range[1] + 1e-12
+            })
+            .collect()
+    }
 }
 
 /// A colour for patch `index`: hues spaced by the golden angle so that neighbours differ,
@@ -119,13 +145,31 @@ impl SurfaceBezier<DVec3> {
     ///
     /// [`Error::InvalidCount`] for k = 0 or a mesh over 2³² vertices.
     pub fn to_triangle_mesh(&self, k: usize) -> Result<TriangleMesh, Error> {
+        self.to_triangle_mesh_of(k, &(0..self.patches.len()).collect::<Vec<_>>())
+    }
+
+    /// [`SurfaceBezier::to_triangle_mesh`] of the patches `indices` only (see
+    /// [`SurfaceBezier::patches_in`]); each keeps the colour of its index.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidCount`] for k = 0, no patches, an index out of range or a mesh over 2³²
+    /// vertices.
+    pub fn to_triangle_mesh_of(&self, k: usize, indices: &[usize]) -> Result<TriangleMesh, Error> {
+        if let Some(&bad) = indices.iter().find(|&&i| i >= self.patches.len()) {
+            return Err(Error::InvalidCount {
+                what: "patch index",
+                value: bad,
+                expected: "less than the number of patches",
+            });
+        }
         let side = k + 1;
-        let total = self.patches.len().saturating_mul(side * side);
-        if k == 0 || total >= u32::MAX as usize {
+        let total = indices.len().saturating_mul(side * side);
+        if k == 0 || indices.is_empty() || total >= u32::MAX as usize {
             return Err(Error::InvalidCount {
                 what: "samples per patch side",
                 value: k,
-                expected: "at least 1, and fewer than 2³² vertices in all",
+                expected: "at least 1, at least one patch, and fewer than 2³² vertices in all",
             });
         }
         let nv = self.v_breaks.len() - 1;
@@ -136,7 +180,8 @@ impl SurfaceBezier<DVec3> {
             Vec::with_capacity(total),
             Vec::new(),
         );
-        for (idx, patch) in self.patches.iter().enumerate() {
+        for &idx in indices {
+            let patch = &self.patches[idx];
             let (a, c) = (idx / nv, idx % nv);
             let (u0, u1) = (self.u_breaks[a], self.u_breaks[a + 1]);
             let (v0, v1) = (self.v_breaks[c], self.v_breaks[c + 1]);
@@ -180,13 +225,23 @@ impl SurfaceBezier<DVec3> {
     /// # Errors
     ///
     /// Those of `w`.
-    pub fn write_obj<W: Write>(&self, mut w: W) -> std::io::Result<()> {
-        writeln!(
-            w,
-            "# harmonic surface as {} Bézier patches (Hardy 2005, §5.7)",
-            self.patches.len()
-        )?;
-        for patch in &self.patches {
+    pub fn write_obj<W: Write>(&self, w: W) -> std::io::Result<()> {
+        self.write_obj_of(w, &(0..self.patches.len()).collect::<Vec<_>>())
+    }
+
+    /// [`SurfaceBezier::write_obj`] of the patches `indices` only.
+    ///
+    /// # Errors
+    ///
+    /// Those of `w`.
+    ///
+    /// # Panics
+    ///
+    /// If an index is not less than the number of patches.
+    pub fn write_obj_of<W: Write>(&self, mut w: W, indices: &[usize]) -> std::io::Result<()> {
+        let patches: Vec<&BezierPatch<DVec3>> = indices.iter().map(|&i| &self.patches[i]).collect();
+        writeln!(w, "# harmonic surface as {} Bézier patches (Hardy 2005, §5.7)", patches.len())?;
+        for patch in &patches {
             let rows = patch.rows();
             for j in 0..rows[0].len() {
                 for row in &rows {
@@ -196,7 +251,7 @@ impl SurfaceBezier<DVec3> {
             }
         }
         let mut next = 1_usize;
-        for patch in &self.patches {
+        for patch in &patches {
             let (du, dv) = (patch.degree_u(), patch.degree_v());
             let count = (du + 1) * (dv + 1);
             writeln!(w, "cstype bezier\ndeg {du} {dv}")?;

@@ -14,12 +14,16 @@ use hi_surface::{MeshOptions, TriangleMesh};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::cli::{FitArgs, ParamName};
+use crate::commands::surface_bezier;
 use crate::commands::surface_example::write_file;
 use crate::error::{Failure, stderr_line};
 use crate::output::{Json, Object};
 
 /// Above this fraction of rays meeting the scan more than once, `hi fit` warns.
 const NON_STAR_WARNING: f64 = 0.05;
+
+/// Samples per patch side in the mesh of `--bezier`.
+const BEZIER_SAMPLES: usize = 4;
 
 /// Fits, writes the surface and returns the summary (also written to `--report`).
 ///
@@ -32,8 +36,16 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         ParamName::Sphere => Layout::Sphere,
         ParamName::Octahedron => Layout::Octahedron,
         ParamName::FlatOctahedron => Layout::FlatOctahedron,
+        ParamName::Sections if args.bezier => {
+            return Err(Failure::input(
+                "--bezier applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
+            ));
+        }
         ParamName::Sections => return super::fit_sections::run(args),
     };
+    if !args.bezier && args.tolerance.is_some() {
+        return Err(Failure::input("--tolerance applies with --bezier only"));
+    }
     let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let as_grid = ext.as_deref() == Some("json");
     if !as_grid {
@@ -82,7 +94,36 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
             ))
         );
     }
-    let files: Vec<PathBuf> = if as_grid {
+    let mut bezier_report = None;
+    let files: Vec<PathBuf> = if args.bezier {
+        let start = std::time::Instant::now();
+        let patches = fitted
+            .surface
+            .to_bezier(args.bezier_scheme, args.tolerance)
+            .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
+        let seconds = start.elapsed().as_secs_f64();
+        let (u0, u1) = options.layout.covering_window();
+        let once = patches.patches_in([u0, u1]);
+        let name = args.bezier_scheme.name();
+        let mut report = surface_bezier::report_json(name, &patches.report);
+        if let Json::Object(fields) = &mut report {
+            fields.push(("seconds".to_owned(), Json::Number(seconds)));
+            fields.push(("patches_once".to_owned(), Json::Count(once.len())));
+        }
+        bezier_report = Some(report.clone());
+        if as_grid {
+            write_file(&args.output, &surface_bezier::patches_json(name, &patches, report), false)?;
+            vec![args.output.clone()]
+        } else if ext.as_deref() == Some("obj") {
+            surface_bezier::write_obj(&patches, &once, &args.output)?;
+            vec![args.output.clone()]
+        } else {
+            let mesh = patches
+                .to_triangle_mesh_of(BEZIER_SAMPLES, &once)
+                .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
+            export::save(&mesh, &args.output)?
+        }
+    } else if as_grid {
         let grid = fitted.surface.rows();
         let json = Object::new()
             .field("grid", Json::Array(grid.iter().map(|row| Json::points(row)).collect()))
@@ -108,7 +149,10 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         let mesh = TriangleMesh::try_from_surface(&fitted.surface, &mesh_options)?;
         export::save(&mesh, &args.output)?
     };
-    let summary = summary(args, &fitted, &files);
+    let mut summary = summary(args, &fitted, &files);
+    if let (Some(b), Json::Object(fields)) = (bezier_report, &mut summary) {
+        fields.push(("bezier".to_owned(), b));
+    }
     if let Some(path) = &args.report {
         write_file(path, &summary, true)?;
     }

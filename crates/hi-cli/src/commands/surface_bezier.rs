@@ -57,7 +57,8 @@ pub(crate) fn run(args: &SurfaceBezierArgs, pretty: bool) -> Result<Json, Failur
             vec![args.output.clone()]
         }
         Output::Obj => {
-            write_obj(&patches, &args.output)?;
+            let all: Vec<usize> = (0..patches.patches.len()).collect();
+            write_obj(&patches, &all, &args.output)?;
             vec![args.output.clone()]
         }
         Output::Mesh => {
@@ -77,7 +78,7 @@ pub(crate) fn run(args: &SurfaceBezierArgs, pretty: bool) -> Result<Json, Failur
 }
 
 /// The report as JSON.
-fn report_json(scheme: &str, r: &PatchReport) -> Json {
+pub(crate) fn report_json(scheme: &str, r: &PatchReport) -> Json {
     Object::new()
         .field("scheme", Json::String(scheme.to_owned()))
         .field("patches", Json::Count(r.patches))
@@ -90,7 +91,7 @@ fn report_json(scheme: &str, r: &PatchReport) -> Json {
 }
 
 /// The patches file: breaks, each patch's window, degrees and control points, the report.
-fn patches_json(scheme: &str, b: &SurfaceBezier<DVec3>, report: Json) -> Json {
+pub(crate) fn patches_json(scheme: &str, b: &SurfaceBezier<DVec3>, report: Json) -> Json {
     let nv = b.v_breaks.len() - 1;
     let patches = b
         .patches
@@ -118,9 +119,13 @@ fn patches_json(scheme: &str, b: &SurfaceBezier<DVec3>, report: Json) -> Json {
         .build()
 }
 
-/// Writes the OBJ free-form file.
-fn write_obj(b: &SurfaceBezier<DVec3>, path: &Path) -> Result<(), Failure> {
+/// Writes the patches `indices` as an OBJ free-form file.
+pub(crate) fn write_obj(
+    b: &SurfaceBezier<DVec3>,
+    indices: &[usize],
+    path: &Path,
+) -> Result<(), Failure> {
     let fail = |e: std::io::Error| Failure::input(format!("{}: cannot write: {e}", path.display()));
     let file = std::fs::File::create(path).map_err(fail)?;
-    b.write_obj(std::io::BufWriter::new(file)).map_err(fail)
+    b.write_obj_of(std::io::BufWriter::new(file), indices).map_err(fail)
 }
