@@ -193,8 +193,24 @@ impl BasisPieces {
         if !roots.complete {
             return Err(Error::Singular { what: "the zeros of σ′ (the root search hit a cap)" });
         }
-        let mut zeros: Vec<f64> =
-            roots.roots.iter().map(|r| r.enclosure.mid().rem_euclid(1.0)).collect();
+        // The enclosures are narrow but not tight: polish each midpoint by Newton's method on
+        // σ′ (staying inside the enclosure) so that shifted copies of one zero coincide.
+        let mut zeros: Vec<f64> = roots
+            .roots
+            .iter()
+            .map(|r| {
+                let (lo, hi) = (r.enclosure.lo(), r.enclosure.hi());
+                let mut t = r.enclosure.mid();
+                for _ in 0..4 {
+                    let d2 = sigma.deriv(0, t, 2);
+                    if d2 == 0.0 {
+                        break;
+                    }
+                    t = (t - sigma.deriv(0, t, 1) / d2).clamp(lo, hi);
+                }
+                t.rem_euclid(1.0)
+            })
+            .collect();
         zeros.push(0.0);
         Ok(dedup_sorted(zeros))
     }
@@ -367,16 +383,16 @@ impl BasisPieces {
     }
 }
 
-/// Sorts and removes values closer than 1e-12 to their predecessor; values ≥ 1 − 1e-12 wrap
-/// to 0.
+/// Sorts and removes values closer than 1e-9 to their predecessor (the same break reached by
+/// two shifts, up to rounding); values ≥ 1 − 1e-9 wrap to 0.
 fn dedup_sorted(mut v: Vec<f64>) -> Vec<f64> {
     for x in &mut v {
-        if *x >= 1.0 - 1e-12 {
+        if *x >= 1.0 - 1e-9 {
             *x = 0.0;
         }
     }
     v.sort_by(f64::total_cmp);
-    v.dedup_by(|b, a| (*b - *a).abs() < 1e-12);
+    v.dedup_by(|b, a| (*b - *a).abs() < 1e-9);
     v
 }
 

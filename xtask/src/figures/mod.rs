@@ -15,6 +15,7 @@
 //! | [`polygons`] | 3.7–3.12, 3.15–3.18: polygons by METAPOST, B-spline and harmonic interpolation, curvature plots; the fairness table |
 //! | [`nonuniform`] | 3.20–3.23, non-uniform harmonic interpolation (§3.10) |
 //! | [`theorems`] | 5.2, 5.6: subdivision, rotation and insertion (chapter 5) |
+//! | [`bezier`] | 5.27–5.30: harmonic surfaces as Bézier patches (§5.7); the tables of the schemes |
 //! | [`sections`] | 5.7–5.9: surfaces fitted from cross-sections (algorithm 1), once well and twice badly |
 //! | [`fitting`] | 5.12: a surface fitted to scattered points through a geometry image |
 //! | [`surfaces`] | 4.1, 5.1, 5.3–5.5, 5.31–5.43: surfaces as glTF models; the §5.9 curvature tables |
@@ -30,6 +31,7 @@
 //! the test `committed_figures_are_current`.
 
 mod basis;
+mod bezier;
 mod bspline;
 mod chapter2;
 mod curves;
@@ -146,6 +148,7 @@ impl Figure {
 fn registry() -> Vec<Figure> {
     let mut all = [
         basis::FIGURES,
+        bezier::FIGURES,
         bspline::FIGURES,
         chapter2::FIGURES,
         curves::FIGURES,
@@ -164,7 +167,8 @@ fn registry() -> Vec<Figure> {
 
 /// Every table, in the order of the index page.
 fn tables() -> Vec<Table> {
-    let all: [&[Table]; 3] = [polygons::TABLES, subdivision::TABLES, surfaces::TABLES];
+    let all: [&[Table]; 4] =
+        [polygons::TABLES, subdivision::TABLES, surfaces::TABLES, bezier::TABLES];
     all.concat()
 }
 

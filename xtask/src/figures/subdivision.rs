@@ -124,6 +124,12 @@ fn head_stage(scheme: Option<Scheme>) -> Result<Vec<u8>> {
 /// (288 triangles) on an egg-shaped head, facing +y, with a nose, brows, eye sockets, ears,
 /// a narrower jaw and chin. Coarse, like the thesis's control mesh, so that the schemes differ.
 fn head() -> Result<PolyMesh> {
+    head_with(false)
+}
+
+/// [`head`], or with `pointed` ears: narrow bumps raised towards the crown (a stand-in for the
+/// thesis's Spock, figure 5.30).
+pub(crate) fn head_with(pointed: bool) -> Result<PolyMesh> {
     const MERIDIANS: usize = 16;
     const RINGS: usize = 9;
     /// A smooth bump of height `h` and angular radius `w` about direction `d` (unit).
@@ -139,7 +145,11 @@ fn head() -> Result<PolyMesh> {
         r += bump(dir, DVec3::new(0.0, 0.9, 0.44).normalize(), 0.08, 0.45); // brow
         for side in [-1.0, 1.0] {
             r -= bump(dir, DVec3::new(0.38 * side, 0.88, 0.22).normalize(), 0.1, 0.18); // eye
-            r += bump(dir, DVec3::new(side, -0.1, 0.0).normalize(), 0.12, 0.2); // ear
+            if pointed {
+                r += bump(dir, DVec3::new(side, -0.1, 0.45).normalize(), 0.45, 0.28); // ear
+            } else {
+                r += bump(dir, DVec3::new(side, -0.1, 0.0).normalize(), 0.12, 0.2); // ear
+            }
         }
         r += bump(dir, DVec3::new(0.0, 0.75, -0.66).normalize(), 0.1, 0.25); // chin
         // A narrower jaw, an egg-shaped skull.
