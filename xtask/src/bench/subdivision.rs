@@ -142,6 +142,67 @@ fn inputs() -> Result<[(String, PolyMesh); 2]> {
     Ok([(format!("{} triangles", tri.n_faces()), tri), (format!("{} quads", quad.n_faces()), quad)])
 }
 
+/// The two extra rows of Table 4.1, without peers: one step of harmonic tensor-product
+/// subdivision (§5.2) of a 256×256 grid (to 512×512, by FFT along both axes) and the B-spline
+/// fit (§4.4) of 256 closed slices of 256 points with uniform parameters, and of 64 slices of 64
+/// points with chord-length parameters (whose merged knot vectors grow with the slices).
+fn extra_rows() -> Result<Vec<Vec<String>>> {
+    use glam::DVec3;
+    use hi_surface::HarmonicSurface;
+    use hi_surface::bspline_fit::{BSplineFit, BSplineFitOptions, Parameters};
+    let m = 256;
+    let point = |j: usize, k: usize| {
+        let (u, v) = (j as f64 / m as f64, k as f64 / m as f64);
+        let (tu, tv) = (std::f64::consts::TAU * u, std::f64::consts::TAU * v);
+        let r = 1.0 + 0.2 * (5.0 * tu).sin() * (3.0 * tv).cos();
+        DVec3::new((3.0 + r * tv.cos()) * tu.cos(), (3.0 + r * tv.cos()) * tu.sin(), r * tv.sin())
+    };
+    let rows: Vec<Vec<DVec3>> = (0..m).map(|j| (0..m).map(|k| point(j, k)).collect()).collect();
+    let surface = HarmonicSurface::new(rows.clone());
+    let harmonic = median_time(OUR_RUNS, || {
+        std::hint::black_box(surface.subdivide(1)?);
+        Ok(())
+    })?;
+    // Uniform parameters: one knot vector for every slice. With chord length every slice
+    // brings its own knots and the merged U-knot vector (§4.4, step 2) holds them all: a
+    // smaller case shows that cost.
+    let uniform = BSplineFitOptions {
+        closed_u: true,
+        closed_v: true,
+        u_params: Parameters::Uniform,
+        v_params: Parameters::Uniform,
+        ..Default::default()
+    };
+    let bspline = median_time(OUR_RUNS, || {
+        std::hint::black_box(BSplineFit::try_new(rows.clone(), &uniform)?);
+        Ok(())
+    })?;
+    let small: Vec<Vec<DVec3>> =
+        (0..m).step_by(4).map(|j| (0..m).step_by(4).map(|k| point(j, k)).collect()).collect();
+    let chord = BSplineFitOptions { closed_u: true, closed_v: true, ..Default::default() };
+    let merged = BSplineFit::try_new(small.clone(), &chord)?.surface().n_control();
+    let bspline_chord = median_time(OUR_RUNS, || {
+        std::hint::black_box(BSplineFit::try_new(small.clone(), &chord)?);
+        Ok(())
+    })?;
+    let none = || ["–".to_owned(), "–".to_owned(), "–".to_owned(), "–".to_owned()];
+    let row = |name: &str, input: &str, t: Duration| {
+        let mut r =
+            vec![name.to_owned(), input.to_owned(), ms(t), format!("{:.1}", 1.0 / t.as_secs_f64())];
+        r.extend(none());
+        r
+    };
+    Ok(vec![
+        row("harmonic subdivision (§5.2)", "256×256 grid → 512×512", harmonic),
+        row("B-spline fit (§4.4), uniform parameters", "256 closed slices of 256 points", bspline),
+        row(
+            "B-spline fit (§4.4), chord length",
+            &format!("64 closed slices of 64 points → {}×{} control net", merged.0, merged.1),
+            bspline_chord,
+        ),
+    ])
+}
+
 /// Measures every scheme and returns the report's section.
 pub(super) fn run(root: &Path) -> Result<String> {
     let dir = root.join("target/xtask-bench/subdivision");
@@ -201,6 +262,8 @@ pub(super) fn run(root: &Path) -> Result<String> {
         rows.push(row);
         bar.inc(1);
     }
+    bar.set_message("harmonic subdivision and the B-spline fit");
+    rows.extend(extra_rows()?);
     bar.finish_and_clear();
     if rows.is_empty() {
         bail!("nothing was measured");
@@ -224,7 +287,10 @@ pub(super) fn run(root: &Path) -> Result<String> {
          the time they print for the subdivision call alone: `OpenMesh-commandlineSubdivider` \
          (OpenMesh {}), CGAL `Subdivision_method_3` (CGAL {}) through \
          `fixtures/subdivision/cgal_subdiv.cpp` built with `g++ -O2 -DNDEBUG`. \"–\": the peer \
-         has no such scheme. The thesis gives no timings for subdivision.\n\n\
+         has no such scheme. The last three rows are the extra rows of Table 4.1 \
+         (`docs/figures/README.md`), which has the counts and interpolation errors of every \
+         scheme; their time is one step or one fit (rayon may use every core here). The thesis \
+         gives no timings for subdivision.\n\n\
          Machine: {}.\n\n{}",
         openmesh_version.as_deref().unwrap_or("not installed"),
         cgal_version.as_deref().unwrap_or("not installed"),
