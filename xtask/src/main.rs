@@ -6,7 +6,7 @@
 //! - `figures [--check]`: regenerate the thesis figures into `docs/figures/` (with `--check`,
 //!   fail instead if a committed file is stale);
 //! - `bench <topic>`: time our code and the peer programs side by side and write the topic's
-//!   section of `docs/performance.md` (topics: `subdivision`);
+//!   section of `docs/performance.md` (topics: `subdivision`, `fit`);
 //! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
 
 mod bench;

@@ -11,7 +11,9 @@
 //! | topic | what |
 //! |---|---|
 //! | [`subdivision`] | one step of each scheme of §4.5 on ≥ 100 000 faces, against `OpenMesh` and CGAL |
+//! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab) |
 
+mod fit;
 mod subdivision;
 
 use std::fmt::Write as _;
@@ -25,7 +27,7 @@ use anyhow::{Context, Result, bail};
 const REPORT: &str = "docs/performance.md";
 
 /// The topics, in the order of the report.
-const TOPICS: &[&str] = &["subdivision"];
+const TOPICS: &[&str] = &["subdivision", "fit"];
 
 /// Runs the benchmarks of `topic` and rewrites its section of the report.
 ///
@@ -41,6 +43,7 @@ pub(crate) fn run(root: &Path, topic: Option<&str>) -> Result<()> {
     };
     let body = match topic {
         "subdivision" => subdivision::run(root)?,
+        "fit" => fit::run(root)?,
         _ => unreachable!("checked against TOPICS"),
     };
     let path = root.join(REPORT);

@@ -11,7 +11,24 @@ use hi_geomimage::{FitOptions, Layout, fit};
 use hi_surface::{MeshOptions, TriangleMesh};
 
 use super::glb::glb;
-use super::{Figure, Format, Panel};
+use super::{Figure, Format, Panel, Table};
+
+/// Table 5.1 holds timings, which differ from run to run: it lives in the benchmark report, and
+/// this page points to it.
+pub(crate) const TABLES: &[Table] = &[Table {
+    anchor: "table-5-1",
+    title: "Table 5.1: Time to fit the models",
+    about: "Regenerated on this machine by `cargo xtask bench fit` (points, time for the geometry image, time for \
+        harmonic interpolation at 4× the image, the whole fit and its error, for built-in scans and the real models \
+        of `shared/data/models` when present), beside screened Poisson reconstruction and scipy's resampling. \
+        Timings change from run to run, so they are in the benchmark report rather than on this page, which is \
+        regenerated bit for bit.",
+    make: || {
+        Ok("| table | where |\n|---|---|\n| Table 5.1, regenerated | \
+            [docs/performance.md](../performance.md#table-51-regenerated) |\n"
+            .to_owned())
+    },
+}];
 
 /// Points of the built-in scan.
 const SCAN_POINTS: usize = 5000;

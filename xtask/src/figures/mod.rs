@@ -167,8 +167,8 @@ fn registry() -> Vec<Figure> {
 
 /// Every table, in the order of the index page.
 fn tables() -> Vec<Table> {
-    let all: [&[Table]; 4] =
-        [polygons::TABLES, subdivision::TABLES, surfaces::TABLES, bezier::TABLES];
+    let all: [&[Table]; 5] =
+        [polygons::TABLES, subdivision::TABLES, surfaces::TABLES, bezier::TABLES, fitting::TABLES];
     all.concat()
 }
 

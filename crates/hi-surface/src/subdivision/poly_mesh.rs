@@ -147,8 +147,17 @@ impl PolyMesh {
         // then a sort on max inside each vertex's small bucket. Edges are numbered in
         // (min, max) order.
         let n_vertices = mesh.positions.len();
+        // The head of every half-edge, in one pass over the faces.
+        let mut head = vec![0_u32; n_he];
+        for f in 0..n_faces {
+            let (start, end) = (mesh.face_start[f] as usize, mesh.face_start[f + 1] as usize);
+            for (i, out) in head[start..end].iter_mut().enumerate() {
+                let next = if start + i + 1 == end { start } else { start + i + 1 };
+                *out = mesh.corners[next];
+            }
+        }
         let ends = |h: u32| {
-            let (a, b) = (mesh.from(h), mesh.to(h));
+            let (a, b) = (mesh.corners[h as usize], head[h as usize]);
             (a.min(b), a.max(b))
         };
         let mut bucket_start = vec![0_u32; n_vertices + 1];
@@ -159,20 +168,21 @@ impl PolyMesh {
             bucket_start[v + 1] += bucket_start[v];
         }
         let mut fill = bucket_start[..n_vertices].to_vec();
-        let mut order = vec![0_u32; n_he];
+        // (other end, half-edge) in buckets by the lower end, so that the small sorts inside
+        // the buckets read contiguous memory.
+        let mut order = vec![(0_u32, 0_u32); n_he];
         for h in 0..n_he as u32 {
-            let lo = ends(h).0 as usize;
-            order[fill[lo] as usize] = h;
-            fill[lo] += 1;
+            let (lo, hi) = ends(h);
+            order[fill[lo as usize] as usize] = (hi, h);
+            fill[lo as usize] += 1;
         }
         let mut keys: Vec<(u64, u32)> = Vec::with_capacity(n_he);
         for v in 0..n_vertices {
             let bucket = &mut order[bucket_start[v] as usize..bucket_start[v + 1] as usize];
-            bucket.sort_unstable_by_key(|&h| (ends(h).1, h));
-            keys.extend(bucket.iter().map(|&h| {
-                let (a, b) = ends(h);
-                ((u64::from(a) << 32) | u64::from(b), h)
-            }));
+            if bucket.len() > 1 {
+                bucket.sort_unstable();
+            }
+            keys.extend(bucket.iter().map(|&(hi, h)| (((v as u64) << 32) | u64::from(hi), h)));
         }
         let mut i = 0;
         let mut n_edges = 0_u32;
