@@ -34,7 +34,7 @@
 //! (The thesis quintic approximates each σₖ on its own pieces; its bound is σ's bound on its
 //! pieces times Σₖ ‖xₖ‖, as the approximated basis does not sum to one.)
 
-use hi_bezier::{BezierCurve, ControlPoint, PiecewiseBezier};
+use hi_bezier::{Aabb, BezierCurve, ControlPoint, PiecewiseBezier};
 use hi_interval::{Interval, RootConfig};
 
 use crate::{Error, Fourier, HarmonicCurve, Sigma};
@@ -82,6 +82,29 @@ impl BezierScheme {
             BezierScheme::ThesisQuintic => "thesis-quintic",
             BezierScheme::Hermite(HermiteDegree::Cubic) => "hermite",
             BezierScheme::Hermite(HermiteDegree::Quintic) => "hermite-quintic",
+        }
+    }
+
+    /// The remainder of the scheme's interpolation on a piece of width h, (c, r) with
+    /// |x − p| ≤ c·hʳ·max‖x⁽ʳ⁾‖: 4 equally spaced nodes (thesis cubic) c = 1/1944, r = 4
+    /// ((h/3)⁴·max|s(s−1)(s−2)(s−3)|/4!, the max being 1); cubic Hermite 1/384, r = 4
+    /// ((h/2)⁴/4!); quintic Hermite, also for each σₖ of the thesis quintic, 1/46080, r = 6
+    /// ((h/2)⁶/6!).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_curve::bezier::{BezierScheme, HermiteDegree};
+    /// assert_eq!(BezierScheme::Hermite(HermiteDegree::Cubic).remainder(), (1.0 / 384.0, 4));
+    /// ```
+    #[must_use]
+    pub fn remainder(self) -> (f64, usize) {
+        match self {
+            BezierScheme::ThesisCubic => (1.0 / 1944.0, 4),
+            BezierScheme::Hermite(HermiteDegree::Cubic) => (1.0 / 384.0, 4),
+            BezierScheme::ThesisQuintic | BezierScheme::Hermite(HermiteDegree::Quintic) => {
+                (1.0 / 46080.0, 6)
+            }
         }
     }
 
@@ -536,22 +559,10 @@ pub(crate) fn deriv_bound<P: ControlPoint>(f: &Fourier<P>, t0: f64, t1: f64, ord
     sq.sqrt().hi()
 }
 
-/// The remainder constant of a scheme's interpolation on a piece of width h: (c, p) with
-/// |x − p| ≤ c·hᵖ·max‖x⁽ᵖ⁾‖.
-fn remainder(scheme: BezierScheme) -> (f64, usize) {
-    match scheme {
-        BezierScheme::ThesisCubic => (1.0 / 1944.0, 4),
-        BezierScheme::Hermite(HermiteDegree::Cubic) => (1.0 / 384.0, 4),
-        BezierScheme::ThesisQuintic | BezierScheme::Hermite(HermiteDegree::Quintic) => {
-            (1.0 / 46080.0, 6)
-        }
-    }
-}
-
 /// The guaranteed bound of one piece [t0, t1], with a relative margin of 1e-9 for the rounding
 /// of the control points.
 fn piece_bound<P: ControlPoint>(f: &Fourier<P>, scheme: BezierScheme, t0: f64, t1: f64) -> f64 {
-    let (c, p) = remainder(scheme);
+    let (c, p) = scheme.remainder();
     let h = t1 - t0;
     c * h.powi(p as i32) * deriv_bound(f, t0, t1, p) * (1.0 + 1e-9)
 }
@@ -650,17 +661,9 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     }
 }
 
-/// The diagonal of the bounding box of `points`.
+/// The diagonal of the bounding box of `points` (0 for none).
 fn bounding_diagonal<P: ControlPoint>(points: &[P]) -> f64 {
-    (0..P::DIM)
-        .map(|d| {
-            let (lo, hi) = points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p.coord(d)), hi.max(p.coord(d)))
-            });
-            (hi - lo).powi(2)
-        })
-        .sum::<f64>()
-        .sqrt()
+    Aabb::from_points(points).map_or(0.0, |b| b.size().norm())
 }
 
 /// The adaptive Hermite pieces and the largest piece bound.

@@ -28,7 +28,7 @@
 use std::io::Write;
 
 use glam::{DVec2, DVec3};
-use hi_bezier::{BezierPatch, ControlPoint};
+use hi_bezier::{Aabb, BezierPatch, ControlPoint};
 use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree};
 
 use crate::{Error, HarmonicSurface, TriangleMesh, srgb_to_linear};
@@ -274,15 +274,6 @@ fn locate(breaks: &[f64], x: f64) -> (usize, f64) {
     (a, ((x - breaks[a]) / (breaks[a + 1] - breaks[a])).clamp(0.0, 1.0))
 }
 
-/// The remainder constant and order of a scheme (as for curves).
-fn remainder(scheme: BezierScheme) -> (f64, usize) {
-    match scheme {
-        BezierScheme::ThesisCubic => (1.0 / 1944.0, 4),
-        BezierScheme::Hermite(HermiteDegree::Cubic) => (1.0 / 384.0, 4),
-        _ => (1.0 / 46080.0, 6),
-    }
-}
-
 /// Weights of the one-dimensional Hermite control points on a piece of width h: control point
 /// i is Σ over d of `w[i][d]`·f⁽ᵈ⁾(end), the end being the left one for i < (degree + 1)/2.
 fn hermite_weights(degree: HermiteDegree, h: f64) -> Vec<Vec<f64>> {
@@ -441,7 +432,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
 
     /// The guaranteed bound of a tensor-product interpolation scheme on patches hᵤ × hᵥ.
     fn tensor_bound(&self, scheme: BezierScheme, hu: f64, hv: f64) -> f64 {
-        let (c, r) = remainder(scheme);
+        let (c, r) = scheme.remainder();
         let (mu, mv, muv) =
             (self.deriv_bound(r, 0), self.deriv_bound(0, r), self.deriv_bound(r, r));
         let (eu, ev) = (c * hu.powi(r as i32), c * hv.powi(r as i32));
@@ -456,7 +447,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         tolerance: f64,
     ) -> Result<(Vec<f64>, Vec<f64>, Vec<BezierPatch<P>>, f64), Error> {
         let scheme = BezierScheme::Hermite(degree);
-        let (c, r) = remainder(scheme);
+        let (c, r) = scheme.remainder();
         let (mu, mv) = (self.deriv_bound(r, 0), self.deriv_bound(0, r));
         let (mut nu, mut nv) = (self.m(), self.n());
         let mut bound = self.tensor_bound(scheme, 1.0 / nu as f64, 1.0 / nv as f64);
@@ -599,15 +590,7 @@ fn max_normal_jump<P: ControlPoint>(b: &SurfaceBezier<P>) -> f64 {
     worst
 }
 
-/// The diagonal of the bounding box of `points`.
+/// The diagonal of the bounding box of `points` (0 for none).
 fn bounding_diagonal<P: ControlPoint>(points: &[P]) -> f64 {
-    (0..P::DIM)
-        .map(|d| {
-            let (lo, hi) = points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p.coord(d)), hi.max(p.coord(d)))
-            });
-            (hi - lo).powi(2)
-        })
-        .sum::<f64>()
-        .sqrt()
+    Aabb::from_points(points).map_or(0.0, |b| b.size().norm())
 }
