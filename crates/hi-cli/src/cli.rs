@@ -345,9 +345,9 @@ pub(crate) struct FitArgs {
     /// .glb/.gltf mesh with one colour per patch (geometry-image layouts only).
     #[arg(long)]
     pub(crate) bezier: bool,
-    /// With --bezier: thesis-cubic, thesis-quintic, hermite (C1, default) or hermite-quintic.
-    #[arg(long, value_name = "SCHEME", default_value = "hermite", value_parser = parse_bezier_scheme)]
-    pub(crate) bezier_scheme: BezierScheme,
+    /// With --bezier: thesis-cubic, thesis-quintic, hermite (C1, the default) or hermite-quintic.
+    #[arg(long, value_name = "SCHEME", value_parser = parse_bezier_scheme)]
+    pub(crate) bezier_scheme: Option<BezierScheme>,
     /// With --bezier and a Hermite scheme: the largest deviation of the patches from the surface
     /// (default 1e-4 of the diagonal of the image's bounding box).
     #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]

@@ -174,13 +174,14 @@ fn bezier_output_meets_its_tolerance_and_covers_the_object_once() {
         .into_rgb_f32()
         .collect();
     assert_eq!(colors.len(), 128 * 25, "the 128 patches of one cover, 5×5 vertices each");
-    bad(
-        &["fit", scan.path(), "-o", "x.glb", "--tolerance", "1e-3"],
-        "--tolerance applies with --bezier",
-    );
+    bad(&["fit", scan.path(), "-o", "x.glb", "--tolerance", "1e-3"], "apply with --bezier only");
     bad(
         &["fit", scan.path(), "-o", "x.glb", "--param", "sections", "--bezier"],
         "geometry-image layouts",
     );
     bad(&["fit", scan.path(), "-o", "x.glb", "--bezier", "--tolerance", "0"], "tolerance");
+    bad(
+        &["fit", scan.path(), "-o", "x.glb", "--bezier-scheme", "hermite"],
+        "apply with --bezier only",
+    );
 }

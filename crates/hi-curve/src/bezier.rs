@@ -576,9 +576,9 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     /// # Errors
     ///
     /// [`Error::NonFiniteParameter`] or [`Error::ParameterOutOfBounds`] for a tolerance that is
-    /// not finite and positive; [`Error::InvalidCount`] for the quintic thesis scheme with
-    /// n ≤ 2; [`Error::InvalidCount`] if the Hermite scheme needs more than [`MAX_PIECES`]
-    /// pieces.
+    /// not finite and positive, or too small to reach with pieces wider than 1e-9;
+    /// [`Error::InvalidCount`] for the quintic thesis scheme with n ≤ 2, or if the Hermite
+    /// scheme needs more than [`MAX_PIECES`] pieces.
     ///
     /// # Examples
     ///
@@ -683,7 +683,14 @@ fn hermite<P: ControlPoint>(
     let mut worst: f64 = 0.0;
     while let Some((t0, t1)) = todo.pop() {
         let bound = piece_bound(fourier, scheme, t0, t1);
-        if bound > tolerance && t1 - t0 > 1e-9 {
+        if bound > tolerance {
+            if t1 - t0 <= 1e-9 {
+                return Err(Error::ParameterOutOfBounds {
+                    name: "tolerance",
+                    value: tolerance,
+                    expected: "one the pieces can reach (pieces narrower than 1e-9 would be needed)",
+                });
+            }
             if segments.len() + todo.len() + 2 > MAX_PIECES {
                 return Err(Error::InvalidCount {
                     what: "Bézier pieces needed for the tolerance",

@@ -7,6 +7,7 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use glam::DVec3;
+use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::scan::read_scan;
 use hi_geomimage::{FitOptions, Layout, Smoothing, fit};
 use hi_surface::export::{self, MeshFormat};
@@ -32,6 +33,9 @@ const BEZIER_SAMPLES: usize = 4;
 /// [`Failure::Input`] for an unreadable or malformed scan (with its line or byte), bad
 /// options, an unknown output extension, or an output that cannot be written.
 pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
+    if !args.bezier && (args.tolerance.is_some() || args.bezier_scheme.is_some()) {
+        return Err(Failure::input("--tolerance and --bezier-scheme apply with --bezier only"));
+    }
     let layout = match args.param {
         ParamName::Sphere => Layout::Sphere,
         ParamName::Octahedron => Layout::Octahedron,
@@ -43,9 +47,6 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         }
         ParamName::Sections => return super::fit_sections::run(args),
     };
-    if !args.bezier && args.tolerance.is_some() {
-        return Err(Failure::input("--tolerance applies with --bezier only"));
-    }
     let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let as_grid = ext.as_deref() == Some("json");
     if !as_grid {
@@ -97,14 +98,15 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     let mut bezier_report = None;
     let files: Vec<PathBuf> = if args.bezier {
         let start = std::time::Instant::now();
+        let scheme = args.bezier_scheme.unwrap_or(BezierScheme::Hermite(HermiteDegree::Cubic));
         let patches = fitted
             .surface
-            .to_bezier(args.bezier_scheme, args.tolerance)
+            .to_bezier(scheme, args.tolerance)
             .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
         let seconds = start.elapsed().as_secs_f64();
         let (u0, u1) = options.layout.covering_window();
         let once = patches.patches_in([u0, u1]);
-        let name = args.bezier_scheme.name();
+        let name = scheme.name();
         let mut report = surface_bezier::report_json(name, &patches.report);
         if let Json::Object(fields) = &mut report {
             fields.push(("seconds".to_owned(), Json::Number(seconds)));
