@@ -419,8 +419,22 @@ fn dedup_sorted(mut v: Vec<f64>) -> Vec<f64> {
     v
 }
 
-/// The piece of `breaks` holding t modulo 1 and the local parameter.
-fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
+/// The piece of the breaks 0 = b₀ < … < bₖ = 1 holding t (taken modulo 1), and the local
+/// parameter (t − bₐ)/(bₐ₊₁ − bₐ) in it: how [`BezierSpline`] (and the patches of `hi-surface`,
+/// per direction) find their piece.
+///
+/// # Panics
+///
+/// If `breaks` has fewer than two values.
+///
+/// # Examples
+///
+/// ```
+/// let (a, s) = hi_curve::bezier::locate(&[0.0, 0.25, 1.0], 1.625);
+/// assert_eq!((a, s), (1, 0.5));
+/// ```
+#[must_use]
+pub fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
     let t = t.rem_euclid(1.0);
     let pieces = breaks.len() - 1;
     let a = breaks.partition_point(|&b| b <= t).saturating_sub(1).min(pieces - 1);
@@ -681,6 +695,15 @@ fn hermite<P: ControlPoint>(
     let mut breaks = vec![0.0];
     let mut segments = Vec::new();
     let mut worst: f64 = 0.0;
+    // The value and derivatives at t that the pieces need (the cubic has no use for the second).
+    let data = |t: f64| {
+        let second = match degree {
+            HermiteDegree::Cubic => P::ZERO,
+            HermiteDegree::Quintic => fourier.eval_deriv(t, 2),
+        };
+        [curve.eval(t), fourier.eval_deriv(t, 1), second]
+    };
+    let mut end: Option<(f64, [P; 3])> = None;
     while let Some((t0, t1)) = todo.pop() {
         let bound = piece_bound(fourier, scheme, t0, t1);
         if bound > tolerance {
@@ -704,18 +727,21 @@ fn hermite<P: ControlPoint>(
             continue;
         }
         worst = worst.max(bound);
+        // Pieces are accepted in order, so each join's data serves the piece ending there and
+        // the next one.
+        let start = match end.take() {
+            Some((t, data)) if t == t0 => data,
+            _ => data(t0),
+        };
+        let stop = data(t1);
         let h = t1 - t0;
         let control = match degree {
             HermiteDegree::Cubic => {
-                let d = |t: f64| [curve.eval(t), fourier.eval_deriv(t, 1)];
-                cubic_hermite(d(t0), d(t1), h).to_vec()
+                cubic_hermite([start[0], start[1]], [stop[0], stop[1]], h).to_vec()
             }
-            HermiteDegree::Quintic => {
-                let d =
-                    |t: f64| [curve.eval(t), fourier.eval_deriv(t, 1), fourier.eval_deriv(t, 2)];
-                quintic_hermite(d(t0), d(t1), h).to_vec()
-            }
+            HermiteDegree::Quintic => quintic_hermite(start, stop, h).to_vec(),
         };
+        end = Some((t1, stop));
         segments.push(BezierCurve::new(control));
         breaks.push(t1);
     }

@@ -29,7 +29,7 @@ use std::io::Write;
 
 use glam::{DVec2, DVec3};
 use hi_bezier::{Aabb, BezierPatch, ControlPoint};
-use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree};
+use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree, locate};
 
 use crate::{Error, HarmonicSurface, TriangleMesh, srgb_to_linear};
 
@@ -266,12 +266,33 @@ impl SurfaceBezier<DVec3> {
     }
 }
 
-/// The piece of `breaks` holding x modulo 1 and the local parameter.
-fn locate(breaks: &[f64], x: f64) -> (usize, f64) {
-    let x = x.rem_euclid(1.0);
-    let pieces = breaks.len() - 1;
-    let a = breaks.partition_point(|&b| b <= x).saturating_sub(1).min(pieces - 1);
-    (a, ((x - breaks[a]) / (breaks[a + 1] - breaks[a])).clamp(0.0, 1.0))
+/// The tensor-product bound of a scheme on a surface (see the module documentation): the
+/// scheme's remainder (c, r) and the spectral bounds Mᵤ, Mᵥ, Mᵤᵥ of ‖∂ᵤʳp‖, ‖∂ᵥʳp‖, ‖∂ᵤʳ∂ᵥʳp‖,
+/// computed once.
+struct TensorBound {
+    c: f64,
+    r: i32,
+    mu: f64,
+    mv: f64,
+    muv: f64,
+}
+
+impl TensorBound {
+    fn new<P: ControlPoint>(surface: &HarmonicSurface<P>, scheme: BezierScheme) -> Self {
+        let (c, r) = scheme.remainder();
+        let (mu, mv, muv) =
+            (surface.deriv_bound(r, 0), surface.deriv_bound(0, r), surface.deriv_bound(r, r));
+        Self { c, r: r as i32, mu, mv, muv }
+    }
+
+    /// On patches of 1/nᵤ × 1/nᵥ: the u term c·hᵤʳ·Mᵤ, the v term, and the whole bound (with a
+    /// relative margin of 1e-9 for rounding).
+    fn on(&self, nu: usize, nv: usize) -> (f64, f64, f64) {
+        let (hu, hv) = ((nu as f64).recip().powi(self.r), (nv as f64).recip().powi(self.r));
+        let (eu, ev) = (self.c * hu, self.c * hv);
+        let (tu, tv) = (eu * self.mu, ev * self.mv);
+        (tu, tv, (tu + tv + eu * ev * self.muv) * (1.0 + 1e-9))
+    }
 }
 
 /// Weights of the one-dimensional Hermite control points on a piece of width h: control point
@@ -413,9 +434,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             }
         }
         let bound = if scheme == BezierScheme::ThesisCubic {
-            let hu = 1.0 / self.m() as f64;
-            let hv = 1.0 / self.n() as f64;
-            self.tensor_bound(scheme, hu, hv)
+            TensorBound::new(self, scheme).on(self.m(), self.n()).2
         } else {
             // Basis bounds of σ on its own pieces, from the curve conversion of one σ.
             let basis = |k: usize| -> Result<f64, Error> {
@@ -430,15 +449,6 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         Ok((bu.breaks().to_vec(), bv.breaks().to_vec(), patches, bound))
     }
 
-    /// The guaranteed bound of a tensor-product interpolation scheme on patches hᵤ × hᵥ.
-    fn tensor_bound(&self, scheme: BezierScheme, hu: f64, hv: f64) -> f64 {
-        let (c, r) = scheme.remainder();
-        let (mu, mv, muv) =
-            (self.deriv_bound(r, 0), self.deriv_bound(0, r), self.deriv_bound(r, r));
-        let (eu, ev) = (c * hu.powi(r as i32), c * hv.powi(r as i32));
-        (eu * mu + ev * mv + eu * ev * muv) * (1.0 + 1e-9)
-    }
-
     /// Hermite patches on the data grid refined per direction until the bound is met.
     #[allow(clippy::type_complexity, reason = "a private tuple of the conversion's parts")]
     fn hermite(
@@ -446,11 +456,9 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         degree: HermiteDegree,
         tolerance: f64,
     ) -> Result<(Vec<f64>, Vec<f64>, Vec<BezierPatch<P>>, f64), Error> {
-        let scheme = BezierScheme::Hermite(degree);
-        let (c, r) = scheme.remainder();
-        let (mu, mv) = (self.deriv_bound(r, 0), self.deriv_bound(0, r));
+        let tensor = TensorBound::new(self, BezierScheme::Hermite(degree));
         let (mut nu, mut nv) = (self.m(), self.n());
-        let mut bound = self.tensor_bound(scheme, 1.0 / nu as f64, 1.0 / nv as f64);
+        let (mut eu, mut ev, mut bound) = tensor.on(nu, nv);
         while bound > tolerance {
             if nu.saturating_mul(nv).saturating_mul(2) > MAX_PATCHES {
                 return Err(Error::InvalidCount {
@@ -460,14 +468,12 @@ impl<P: ControlPoint> HarmonicSurface<P> {
                 });
             }
             // Halve the direction whose term is larger.
-            let eu = c * (1.0 / nu as f64).powi(r as i32) * mu;
-            let ev = c * (1.0 / nv as f64).powi(r as i32) * mv;
             if eu >= ev {
                 nu *= 2;
             } else {
                 nv *= 2;
             }
-            bound = self.tensor_bound(scheme, 1.0 / nu as f64, 1.0 / nv as f64);
+            (eu, ev, bound) = tensor.on(nu, nv);
         }
         let u_breaks: Vec<f64> = (0..=nu).map(|a| a as f64 / nu as f64).collect();
         let v_breaks: Vec<f64> = (0..=nv).map(|b| b as f64 / nv as f64).collect();

@@ -16,7 +16,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::cli::{FitArgs, ParamName};
 use crate::commands::surface_bezier;
-use crate::commands::surface_example::write_file;
+use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
 use crate::output::{Json, Object};
 
@@ -126,11 +126,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
             export::save(&mesh, &args.output)?
         }
     } else if as_grid {
-        let grid = fitted.surface.rows();
-        let json = Object::new()
-            .field("grid", Json::Array(grid.iter().map(|row| Json::points(row)).collect()))
-            .build();
-        write_file(&args.output, &json, false)?;
+        write_file(&args.output, &grid_json(&fitted.surface.rows()), false)?;
         vec![args.output.clone()]
     } else {
         let (u0, u1) = options.layout.covering_window();

@@ -13,7 +13,7 @@ use hi_surface::export::{self, MeshFormat};
 use hi_surface::{MeshOptions, TriangleMesh};
 
 use crate::cli::{AxisName, FitArgs, OrderName};
-use crate::commands::surface_example::write_file;
+use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
 use crate::output::{Json, Object};
 
@@ -65,11 +65,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         eprintln!("{}", stderr_line(&format!("warning: {problem}")));
     }
     let files: Vec<PathBuf> = if as_grid {
-        let grid = fitted.surface.rows();
-        let json = Object::new()
-            .field("grid", Json::Array(grid.iter().map(|row| Json::points(row)).collect()))
-            .build();
-        write_file(&args.output, &json, false)?;
+        write_file(&args.output, &grid_json(&fitted.surface.rows()), false)?;
         vec![args.output.clone()]
     } else {
         let (u0, u1) = fitted.covering_window();

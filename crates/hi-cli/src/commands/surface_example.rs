@@ -28,9 +28,7 @@ const TORUS_RADII: (f64, f64) = (2.0, 1.0);
 pub(crate) fn run(args: &SurfaceExampleArgs, pretty: bool) -> Result<Json, Failure> {
     let grid = example_grid(&args.name, args.samples)?;
     let (m, n) = (grid.len(), grid.first().map_or(0, Vec::len));
-    let json = Object::new()
-        .field("grid", Json::Array(grid.iter().map(|row| Json::points(row)).collect()))
-        .build();
+    let json = grid_json(&grid);
     match &args.output {
         None => Ok(json),
         Some(path) => {
@@ -92,6 +90,14 @@ fn find_test_surface(name: &str) -> Result<ParametricSurface, Failure> {
                 names.join(", ")
             ))
         })
+}
+
+/// The grid file `{"grid": [[[x, y, z], ...], ...]}` of the rows of a grid, as the surface
+/// commands read it.
+pub(crate) fn grid_json(rows: &[Vec<DVec3>]) -> Json {
+    Object::new()
+        .field("grid", Json::Array(rows.iter().map(|row| Json::points(row)).collect()))
+        .build()
 }
 
 /// Writes `json` to the file at `path`.

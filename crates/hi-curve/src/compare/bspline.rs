@@ -535,41 +535,14 @@ impl<P: ControlPoint> BSplineCurve<P> {
             &mut heap
         };
         d.copy_from_slice(&c[j - p..=j]);
-        // Differentiate: after level l, d[i] is the coefficient of N_{g, p−l} with
-        // g = j − p + l + i, Q⁽ˡ⁾_g = (p − l + 1)(Q⁽ˡ⁻¹⁾_g − Q⁽ˡ⁻¹⁾_{g−1})/(u_{g+p−l+1} − u_g).
-        for l in 1..=order {
-            for i in 0..=p - l {
-                let g = j - p + l + i;
-                let scale = (p - l + 1) as f64 / (k[g + p - l + 1] - k[g]);
-                d[i] = (d[i + 1] - d[i]) * scale;
-            }
-        }
-        // de Boor on degree q = p − order; d[i] belongs to N_{j−q+i, q}.
-        let q = p - order;
-        for r in 1..=q {
-            for i in (r..=q).rev() {
-                let g = j - q + i;
-                let alpha = (u - k[g]) / (k[g + q + 1 - r] - k[g]);
-                d[i] = d[i - 1] * (1.0 - alpha) + d[i] * alpha;
-            }
-        }
-        d[q]
+        de_boor(k, j, d, u, order)
     }
 
     /// The blossom (polar form) of the polynomial piece on interval j at `args` (p values).
     fn blossom(&self, j: usize, args: &[f64]) -> P {
         let p = self.degree;
-        let (k, c) = (&self.ext_knots, &self.ext_control);
-        let mut d: Vec<P> = c[j - p..=j].to_vec();
-        for r in 1..=p {
-            let x = args[r - 1];
-            for i in (r..=p).rev() {
-                let g = j - p + i;
-                let alpha = (x - k[g]) / (k[g + p + 1 - r] - k[g]);
-                d[i] = d[i - 1] * (1.0 - alpha) + d[i] * alpha;
-            }
-        }
-        d[p]
+        let mut d: Vec<P> = self.ext_control[j - p..=j].to_vec();
+        blossom(&self.ext_knots, j, &mut d, args)
     }
 
     /// The weight of every control point at t: X(t) = Σᵢ wᵢ(t)·xᵢ. The weights are the basis
@@ -655,6 +628,86 @@ impl<P: ControlPoint> ParamCurve<P> for BSplineCurve<P> {
     fn is_periodic(&self) -> bool {
         self.periodic
     }
+}
+
+/// The derivative of order `order` (0: the value) at u, with respect to u, of the polynomial
+/// piece on interval j (`knots[j] ≤ u < knots[j + 1]`) of a B-spline of degree p = `d.len() − 1`
+/// with the (extended) knot vector `knots`, given the piece's p + 1 active control points `d`
+/// (overwritten): the control points are differenced `order` times, then de Boor's algorithm
+/// runs on degree p − `order`. Zero above the degree.
+///
+/// After difference level l, `d[i]` is the coefficient of N with index g = j − p + l + i,
+/// `Q⁽ˡ⁾[g] = (p − l + 1)(Q⁽ˡ⁻¹⁾[g] − Q⁽ˡ⁻¹⁾[g−1])/(u[g+p−l+1] − u[g])`.
+///
+/// # Panics
+///
+/// If `d` is empty or the knots do not reach p + 1 past j on either side.
+///
+/// # Examples
+///
+/// ```
+/// use hi_curve::compare::bspline::de_boor;
+/// // The uniform cubic on knots 0..8, interval 3: the control points 0, 1, 2, 3 give the line u − 2.
+/// let knots: Vec<f64> = (0..8).map(f64::from).collect();
+/// let mut d = [0.0, 1.0, 2.0, 3.0];
+/// assert!((de_boor(&knots, 3, &mut d, 3.5, 0) - 1.5).abs() < 1e-15);
+/// let mut d = [0.0, 1.0, 2.0, 3.0];
+/// assert!((de_boor(&knots, 3, &mut d, 3.5, 1) - 1.0).abs() < 1e-15);
+/// ```
+pub fn de_boor<P: ControlPoint>(knots: &[f64], j: usize, d: &mut [P], u: f64, order: usize) -> P {
+    let p = d.len() - 1;
+    if order > p {
+        return P::ZERO;
+    }
+    let k = knots;
+    for l in 1..=order {
+        for i in 0..=p - l {
+            let g = j - p + l + i;
+            let scale = (p - l + 1) as f64 / (k[g + p - l + 1] - k[g]);
+            d[i] = (d[i + 1] - d[i]) * scale;
+        }
+    }
+    // de Boor on degree q = p − order; d[i] belongs to N_{j−q+i, q}.
+    let q = p - order;
+    for r in 1..=q {
+        for i in (r..=q).rev() {
+            let g = j - q + i;
+            let alpha = (u - k[g]) / (k[g + q + 1 - r] - k[g]);
+            d[i] = d[i - 1] * (1.0 - alpha) + d[i] * alpha;
+        }
+    }
+    d[q]
+}
+
+/// The blossom (polar form) f(x₁, …, xₚ) at `args` of the polynomial piece on interval j of a
+/// B-spline of degree p = `d.len() − 1` with the (extended) knot vector `knots`, given the
+/// piece's active control points `d` (overwritten). With every xᵢ = u it is the point at u;
+/// at the knots it gives the control points of knot insertion and of the Bézier pieces.
+///
+/// # Panics
+///
+/// If `d` is empty, `args` has fewer than p values, or the knots do not reach around j.
+///
+/// # Examples
+///
+/// ```
+/// use hi_curve::compare::bspline::blossom;
+/// let knots: Vec<f64> = (0..8).map(f64::from).collect();
+/// let mut d = [0.0, 1.0, 2.0, 3.0]; // the line u − 2 on interval 3
+/// assert!((blossom(&knots, 3, &mut d, &[3.5, 3.5, 3.5]) - 1.5).abs() < 1e-15);
+/// ```
+pub fn blossom<P: ControlPoint>(knots: &[f64], j: usize, d: &mut [P], args: &[f64]) -> P {
+    let p = d.len() - 1;
+    let k = knots;
+    for r in 1..=p {
+        let x = args[r - 1];
+        for i in (r..=p).rev() {
+            let g = j - p + i;
+            let alpha = (x - k[g]) / (k[g + p + 1 - r] - k[g]);
+            d[i] = d[i - 1] * (1.0 - alpha) + d[i] * alpha;
+        }
+    }
+    d[p]
 }
 
 #[cfg(test)]

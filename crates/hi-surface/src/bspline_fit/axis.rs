@@ -9,6 +9,7 @@
 //! with τⱼ₊ₙ = τⱼ + L) and the n + 3 control points are cᵢ₋₁ mod n.
 
 use glam::DVec3;
+use hi_curve::compare::bspline::{blossom, de_boor};
 
 use crate::Error;
 
@@ -176,43 +177,13 @@ impl Axis {
     /// `d` active on interval j, with respect to u: the control points are differenced first,
     /// then de Boor's algorithm runs on the lower degree (as `BSplineCurve` does).
     pub(crate) fn eval_span(&self, j: usize, mut d: [DVec3; 4], u: f64, order: usize) -> DVec3 {
-        let p = DEGREE;
-        if order > p {
-            return DVec3::ZERO;
-        }
-        let k = &self.ext;
-        for l in 1..=order {
-            for i in 0..=p - l {
-                let g = j - p + l + i;
-                let scale = (p - l + 1) as f64 / (k[g + p - l + 1] - k[g]);
-                d[i] = (d[i + 1] - d[i]) * scale;
-            }
-        }
-        let q = p - order;
-        for r in 1..=q {
-            for i in (r..=q).rev() {
-                let g = j - q + i;
-                let alpha = (u - k[g]) / (k[g + q + 1 - r] - k[g]);
-                d[i] = d[i - 1] * (1.0 - alpha) + d[i] * alpha;
-            }
-        }
-        d[q]
+        de_boor(&self.ext, j, &mut d, u, order)
     }
 
     /// The blossom (polar form) f(x₁, x₂, x₃) of the cubic piece on interval j with active
     /// control points `d`.
     pub(crate) fn blossom(&self, j: usize, mut d: [DVec3; 4], args: [f64; 3]) -> DVec3 {
-        let p = DEGREE;
-        let k = &self.ext;
-        for r in 1..=p {
-            let x = args[r - 1];
-            for i in (r..=p).rev() {
-                let g = j - p + i;
-                let alpha = (x - k[g]) / (k[g + p + 1 - r] - k[g]);
-                d[i] = d[i - 1] * (1.0 - alpha) + d[i] * alpha;
-            }
-        }
-        d[p]
+        blossom(&self.ext, j, &mut d, &args)
     }
 
     /// The four Bézier control points of the piece on interval j (the blossoms at (a, a, a),
