@@ -294,6 +294,15 @@ pub(crate) enum ParamName {
     Sections,
 }
 
+/// What a texel of `hi fit`'s geometry image holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum TexelsName {
+    /// The distance along the ray, averaged over the points about it (algorithm 2).
+    Radial,
+    /// The located scan point; rows made into contours by Theorem 5.3 (§5.8).
+    Contours,
+}
+
 /// The slicing axes of `hi fit --param sections`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub(crate) enum AxisName {
@@ -328,6 +337,11 @@ pub(crate) struct FitArgs {
     /// The geometry image's parameterisation.
     #[arg(long, value_enum, default_value = "sphere")]
     pub(crate) param: ParamName,
+    /// What a texel holds: the distance along its ray averaged over the points about it
+    /// (algorithm 2), or the scan point it located, each row then a contour resampled by
+    /// Theorem 5.3 (§5.8 "combined results").
+    #[arg(long, value_enum, default_value = "radial")]
+    pub(crate) texels: TexelsName,
     /// Geometry image size, rows×columns (rows even).
     #[arg(long, value_name = "RxC", default_value = "128x128", value_parser = parse_size)]
     pub(crate) resolution: Size,
@@ -340,7 +354,6 @@ pub(crate) struct FitArgs {
     /// The centre of the rays, x,y,z (default: the mean of the points).
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = parse_float_list)]
     pub(crate) centre: Option<FloatList>,
-    /// Also write the summary as JSON to this file.
     /// Write the surface as Bézier patches (§5.7): .json patches, .obj free-form surfaces, or a
     /// .glb/.gltf mesh with one colour per patch (geometry-image layouts only).
     #[arg(long)]
@@ -352,6 +365,7 @@ pub(crate) struct FitArgs {
     /// (default 1e-4 of the diagonal of the image's bounding box).
     #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]
     pub(crate) tolerance: Option<f64>,
+    /// Also write the summary as JSON to this file.
     #[arg(long, value_name = "R.json")]
     pub(crate) report: Option<PathBuf>,
     /// --param sections: K sections of equal thickness (default: the thesis's recursive subdivision).

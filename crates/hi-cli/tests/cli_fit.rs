@@ -185,3 +185,44 @@ fn bezier_output_meets_its_tolerance_and_covers_the_object_once() {
         "apply with --bezier only",
     );
 }
+
+#[test]
+fn contours_of_located_points_give_the_combined_pipeline_of_section_5_8() {
+    let axes = [1.5, 1.0, 0.7];
+    let scan = scan_file(&ellipsoid_xyz(40_000, axes), "xyz");
+    let glb = TempFile::path_with("glb");
+    // §5.8: a flattened octahedron sampled finer than needed, smoothed, reduced to a quarter,
+    // then Bézier patches.
+    let out = ok(&[
+        "fit",
+        scan.path(),
+        "-o",
+        glb.path(),
+        "--param",
+        "flat-octahedron",
+        "--texels",
+        "contours",
+        "--resolution",
+        "64x64",
+        "--smooth",
+        "0.7",
+        "--reduce",
+        "0.25",
+        "--bezier",
+    ]);
+    assert_eq!(out["surface"], serde_json::json!([32, 32]));
+    let rows = &out["row_points"];
+    assert!(rows["min"].as_u64().expect("min") >= 16, "{rows}");
+    assert!(rows["max"].as_u64().expect("max") <= 64, "{rows}");
+    assert_eq!(rows["empty_rows"].as_u64(), Some(0));
+    let relative = out["errors"]["relative"].as_array().expect("errors");
+    assert!(num(&relative[0]) < 3e-3, "mean distance {}", relative[0]);
+    assert!(out["bezier"]["max_deviation"].is_number(), "{out}");
+    // The radial image has no row counts.
+    let plain = ok(&["fit", scan.path(), "-o", glb.path(), "--resolution", "16x16"]);
+    assert!(plain["row_points"].is_null());
+    bad(
+        &["fit", scan.path(), "-o", glb.path(), "--param", "sections", "--texels", "contours"],
+        "--texels applies to the geometry-image layouts",
+    );
+}

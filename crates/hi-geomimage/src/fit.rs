@@ -9,6 +9,7 @@ use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_surface::HarmonicSurface;
 
+use crate::contours::{ContourImage, contour_image};
 use crate::distance::{Distances, Hausdorff, distances_to_surface, hausdorff};
 use crate::scan::Scan;
 use crate::spherical::{Layout, SphericalImage, SphericalOptions, spherical_image};
@@ -20,6 +21,9 @@ pub struct FitOptions {
     /// The parameterisation of the geometry image: spherical (algorithm 2), octahedral or
     /// flattened octahedral (§5.3).
     pub layout: Layout,
+    /// What a texel holds: the distance along its ray (algorithm 2) or the scan point it
+    /// located, rows made into contours (§5.8). Default [`Texels::Radial`].
+    pub texels: Texels,
     /// Geometry image rows (even). Default 128.
     pub rows: usize,
     /// Geometry image columns. Default 128.
@@ -44,6 +48,7 @@ impl Default for FitOptions {
     fn default() -> Self {
         Self {
             layout: Layout::Sphere,
+            texels: Texels::Radial,
             rows: 128,
             cols: 128,
             centre: None,
@@ -53,6 +58,70 @@ impl Default for FitOptions {
             error_oversample: 4,
         }
     }
+}
+
+/// What each texel of the geometry image holds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Texels {
+    /// The point at the distance along the ray averaged over the points about it (algorithm 2,
+    /// [`spherical_image`]).
+    #[default]
+    Radial,
+    /// The scan point the ray located; each row a contour through its distinct located points,
+    /// resampled to the columns by Theorem 5.3 (§5.8 "combined results",
+    /// [`contour_image`]).
+    Contours,
+}
+
+/// The ray-cast geometry image a fit started from, with its diagnostics.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SourceImage {
+    /// Algorithm 2's image.
+    Radial(SphericalImage),
+    /// §5.8's image of contours.
+    Contours(ContourImage),
+}
+
+impl SourceImage {
+    /// The image, before smoothing and reduction.
+    #[must_use]
+    pub const fn image(&self) -> &GeometryImage {
+        match self {
+            Self::Radial(s) => &s.image,
+            Self::Contours(c) => &c.image,
+        }
+    }
+
+    /// The fraction of the rays that met several shells.
+    #[must_use]
+    pub const fn non_star_fraction(&self) -> f64 {
+        match self {
+            Self::Radial(s) => s.non_star_fraction,
+            Self::Contours(c) => c.non_star_fraction,
+        }
+    }
+
+    /// The fraction of the rays that found too few points.
+    #[must_use]
+    pub const fn hole_fraction(&self) -> f64 {
+        match self {
+            Self::Radial(s) => s.hole_fraction,
+            Self::Contours(c) => c.hole_fraction,
+        }
+    }
+}
+
+/// How many distinct located points the rows of a §5.8 image had.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowPoints {
+    /// The fewest in a row.
+    pub min: usize,
+    /// The mean over the rows.
+    pub mean: f64,
+    /// The most in a row (at most the number of columns).
+    pub max: usize,
+    /// Rows that located no point (filled from their neighbours).
+    pub empty_rows: usize,
 }
 
 /// The time one stage took.
@@ -82,6 +151,8 @@ pub struct FitReport {
     pub non_star_fraction: f64,
     /// The fraction of rays that found too few points (filled from their neighbours).
     pub hole_fraction: f64,
+    /// For [`Texels::Contours`], the distinct located points per row.
+    pub row_points: Option<RowPoints>,
     /// The grid of the final surface (rows, columns).
     pub surface_size: (usize, usize),
     /// The error of the reduction, if one was made.
@@ -98,7 +169,7 @@ pub struct Fit {
     /// The harmonic surface; [`Layout::covering_window`] says which u cover the object once.
     pub surface: HarmonicSurface<DVec3>,
     /// The raw ray-cast image with its diagnostic maps (before smoothing and reduction).
-    pub spherical: SphericalImage,
+    pub source: SourceImage,
     /// The geometry image the surface interpolates (after smoothing and reduction).
     pub image: GeometryImage,
     /// Stage times, diagnostics and errors.
@@ -135,18 +206,19 @@ pub fn fit(
     on_stage("geometry image");
     let start = Instant::now();
     let points = crate::sampling::densify(scan, options.densify);
-    let spherical = spherical_image(
-        &points,
-        &SphericalOptions {
-            layout: options.layout,
-            rows: options.rows,
-            cols: options.cols,
-            centre: options.centre,
-            ..SphericalOptions::default()
-        },
-    )?;
+    let rays = SphericalOptions {
+        layout: options.layout,
+        rows: options.rows,
+        cols: options.cols,
+        centre: options.centre,
+        ..SphericalOptions::default()
+    };
+    let source = match options.texels {
+        Texels::Radial => SourceImage::Radial(spherical_image(&points, &rays)?),
+        Texels::Contours => SourceImage::Contours(contour_image(&points, &rays)?),
+    };
     timed("geometry image", &mut stages, start);
-    let mut image = spherical.image.clone();
+    let mut image = source.image().clone();
     if let Some(filter) = options.smoothing {
         on_stage("smoothing");
         let start = Instant::now();
@@ -200,12 +272,21 @@ pub fn fit(
         image_points: points.len(),
         dropped_points: scan.dropped_points,
         stages,
-        non_star_fraction: spherical.non_star_fraction,
-        hole_fraction: spherical.hole_fraction,
+        non_star_fraction: source.non_star_fraction(),
+        hole_fraction: source.hole_fraction(),
+        row_points: match &source {
+            SourceImage::Radial(_) => None,
+            SourceImage::Contours(c) => Some(RowPoints {
+                min: c.row_points.iter().copied().min().unwrap_or(0),
+                mean: c.row_points.iter().sum::<usize>() as f64 / c.row_points.len().max(1) as f64,
+                max: c.row_points.iter().copied().max().unwrap_or(0),
+                empty_rows: c.empty_rows.len(),
+            }),
+        },
         surface_size: (surface.m(), surface.n()),
         reduction,
         errors,
         hausdorff: both_ways,
     };
-    Ok(Fit { surface, spherical, image, report })
+    Ok(Fit { surface, source, image, report })
 }

@@ -17,6 +17,7 @@
 //! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
 //! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
 
+pub mod contours;
 pub mod distance;
 mod error;
 mod filter;
@@ -29,7 +30,7 @@ pub mod spherical;
 
 pub use error::Error;
 pub use filter::Smoothing;
-pub use fit::{Fit, FitOptions, FitReport, Stage, fit};
+pub use fit::{Fit, FitOptions, FitReport, RowPoints, SourceImage, Stage, Texels, fit};
 pub use image::{GeometryImage, MAX_TEXELS};
 pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};
 pub use spherical::Layout;

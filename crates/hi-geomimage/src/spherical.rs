@@ -168,7 +168,11 @@ impl Layout {
     /// first half of the rows (i ≤ rows/2) that looks along the same direction as texel
     /// (i, j) — (rows − i, j + cols/2) on the sphere, (rows − i, cols/2 − j) on the flattened
     /// octahedron. `None` for the plain octahedron or odd sizes.
-    fn mirror(self, rows: usize, cols: usize) -> Option<impl Fn(usize, usize) -> (usize, usize)> {
+    pub(crate) fn mirror(
+        self,
+        rows: usize,
+        cols: usize,
+    ) -> Option<impl Fn(usize, usize) -> (usize, usize)> {
         let doubled = matches!(self, Self::Sphere | Self::FlatOctahedron);
         (doubled && rows.is_multiple_of(2) && cols.is_multiple_of(2)).then_some(
             move |i: usize, j: usize| match self {
@@ -208,6 +212,146 @@ enum Hit {
     Hole,
 }
 
+/// The rays of algorithm 2: the points' directions from the centre in a kd-tree, and the
+/// search for the points about one ray with a growing angle (shared by [`spherical_image`] and
+/// [`crate::contours::contour_image`]).
+pub(crate) struct Caster {
+    tree: ImmutableKdTree<f64, 3>,
+    /// Distance from the centre of each point in the tree.
+    pub(crate) distances: Vec<f64>,
+    /// The index in the input of each point in the tree.
+    pub(crate) index: Vec<usize>,
+    pub(crate) centre: DVec3,
+    pub(crate) radius_max: f64,
+    /// Distances that differ by more than this belong to different shells.
+    pub(crate) gap: f64,
+    first: f64,
+    max_angle: f64,
+    k: NonZero<usize>,
+    min_neighbours: usize,
+}
+
+impl Caster {
+    /// Checks `options` (see [`spherical_image`]'s errors) and builds the tree.
+    pub(crate) fn new(points: &[DVec3], options: &SphericalOptions) -> Result<Self, Error> {
+        let &SphericalOptions {
+            layout,
+            rows,
+            cols,
+            centre,
+            neighbours,
+            min_neighbours,
+            max_angle,
+            shell_gap,
+        } = options;
+        check_resolution(rows, cols)?;
+        if rows % 2 != 0 && layout != Layout::Octahedron {
+            return Err(Error::InvalidResolution {
+                rows,
+                cols,
+                expected: "an even number of rows (both poles are texels)",
+            });
+        }
+        if !(max_angle > 0.0 && max_angle <= std::f64::consts::PI) {
+            return Err(Error::InvalidOption {
+                name: "max_angle",
+                value: max_angle,
+                expected: "0 < angle ≤ π radians",
+            });
+        }
+        if !(shell_gap > 0.0 && shell_gap <= 1.0) {
+            return Err(Error::InvalidOption {
+                name: "shell_gap",
+                value: shell_gap,
+                expected: "0 < gap ≤ 1",
+            });
+        }
+        if neighbours == 0 || min_neighbours == 0 || min_neighbours > neighbours {
+            return Err(Error::InvalidOption {
+                name: "min_neighbours",
+                value: min_neighbours as f64,
+                expected: "1 ≤ min_neighbours ≤ neighbours",
+            });
+        }
+        if let Some(k) = points.iter().position(|p| !p.is_finite()) {
+            return Err(Error::NonFinite { what: format!("point {k}") });
+        }
+        let centre = match centre {
+            Some(c) if !c.is_finite() => {
+                return Err(Error::NonFinite { what: "the centre".into() });
+            }
+            Some(c) => c,
+            None if points.is_empty() => {
+                return Err(Error::TooFewPoints { found: 0, needed: min_neighbours });
+            }
+            None => points.iter().copied().sum::<DVec3>() / points.len() as f64,
+        };
+        let radius_max = points.iter().map(|p| (*p - centre).length()).fold(0.0, f64::max);
+        // Directions and distances of the points that are not at the centre.
+        let mut directions: Vec<[f64; 3]> = Vec::with_capacity(points.len());
+        let mut distances = Vec::with_capacity(points.len());
+        let mut index = Vec::with_capacity(points.len());
+        for (t, p) in points.iter().enumerate() {
+            let r = (*p - centre).length();
+            if r > 1e-12 * radius_max {
+                directions.push(((*p - centre) / r).to_array());
+                distances.push(r);
+                index.push(t);
+            }
+        }
+        if directions.len() < min_neighbours {
+            return Err(Error::TooFewPoints { found: directions.len(), needed: min_neighbours });
+        }
+        let tree: ImmutableKdTree<f64, 3> =
+            ImmutableKdTree::new_from_slice(&directions).map_err(|_| Error::Degenerate {
+                what: "the point directions do not form a kd-tree",
+            })?;
+        // Half the larger angular texel spacing: the first search angle.
+        let first = 0.5 * TAU / rows.min(cols) as f64;
+        let gap = shell_gap * radius_max;
+        let k = NonZero::new(neighbours).unwrap_or(NonZero::<usize>::MIN);
+        Ok(Self {
+            tree,
+            distances,
+            index,
+            centre,
+            radius_max,
+            gap,
+            first,
+            max_angle,
+            k,
+            min_neighbours,
+        })
+    }
+
+    /// The points about the ray along the unit vector `d`: the nearest (at most `neighbours`)
+    /// within the first angle that holds `min_neighbours` of them, as (squared chord, index in
+    /// the tree), with the squared chord of that angle; `None` if even the widest angle holds
+    /// too few (a hole).
+    pub(crate) fn gather(&self, d: DVec3) -> Option<(f64, Vec<(f64, usize)>)> {
+        let q = d.to_array();
+        let mut angle = self.first.min(self.max_angle);
+        loop {
+            let chord2 = 2.0 - 2.0 * angle.cos();
+            let found = self
+                .tree
+                .query(&q)
+                .nearest_n::<SquaredEuclidean<f64>>(self.k)
+                .within(chord2)
+                .execute();
+            if found.len() >= self.min_neighbours {
+                return Some((
+                    chord2,
+                    found.iter().map(|f| (f.distance, f.item as usize)).collect(),
+                ));
+            }
+            if angle >= self.max_angle {
+                return None;
+            }
+            angle = (angle * 1.5).min(self.max_angle);
+        }
+    }
+}
 /// Builds the spherical geometry image of `points` (algorithm 2 of §5.3).
 ///
 /// # Errors
@@ -243,96 +387,24 @@ pub fn spherical_image(
     points: &[DVec3],
     options: &SphericalOptions,
 ) -> Result<SphericalImage, Error> {
-    let &SphericalOptions {
-        layout,
-        rows,
-        cols,
-        centre,
-        neighbours,
-        min_neighbours,
-        max_angle,
-        shell_gap,
-    } = options;
-    check_resolution(rows, cols)?;
-    if rows % 2 != 0 && layout != Layout::Octahedron {
-        return Err(Error::InvalidResolution {
-            rows,
-            cols,
-            expected: "an even number of rows (both poles are texels)",
-        });
-    }
-    if !(max_angle > 0.0 && max_angle <= std::f64::consts::PI) {
-        return Err(Error::InvalidOption {
-            name: "max_angle",
-            value: max_angle,
-            expected: "0 < angle ≤ π radians",
-        });
-    }
-    if !(shell_gap > 0.0 && shell_gap <= 1.0) {
-        return Err(Error::InvalidOption {
-            name: "shell_gap",
-            value: shell_gap,
-            expected: "0 < gap ≤ 1",
-        });
-    }
-    if neighbours == 0 || min_neighbours == 0 || min_neighbours > neighbours {
-        return Err(Error::InvalidOption {
-            name: "min_neighbours",
-            value: min_neighbours as f64,
-            expected: "1 ≤ min_neighbours ≤ neighbours",
-        });
-    }
-    if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: format!("point {k}") });
-    }
-    let centre = match centre {
-        Some(c) if !c.is_finite() => return Err(Error::NonFinite { what: "the centre".into() }),
-        Some(c) => c,
-        None if points.is_empty() => {
-            return Err(Error::TooFewPoints { found: 0, needed: min_neighbours });
-        }
-        None => points.iter().copied().sum::<DVec3>() / points.len() as f64,
-    };
-    let radius_max = points.iter().map(|p| (*p - centre).length()).fold(0.0, f64::max);
-    // Directions and distances of the points that are not at the centre.
-    let (directions, distances): (Vec<[f64; 3]>, Vec<f64>) = points
-        .iter()
-        .filter_map(|p| {
-            let r = (*p - centre).length();
-            (r > 1e-12 * radius_max).then(|| (((*p - centre) / r).to_array(), r))
-        })
-        .unzip();
-    if directions.len() < min_neighbours {
-        return Err(Error::TooFewPoints { found: directions.len(), needed: min_neighbours });
-    }
-    let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(&directions)
-        .map_err(|_| Error::Degenerate { what: "the point directions do not form a kd-tree" })?;
-    // Half the larger angular texel spacing: the first search angle.
-    let first = 0.5 * TAU / rows.min(cols) as f64;
-    let gap = shell_gap * radius_max;
-    let k = NonZero::new(neighbours).unwrap_or(NonZero::<usize>::MIN);
+    let &SphericalOptions { layout, rows, cols, .. } = options;
+    let caster = Caster::new(points, options)?;
+    let centre = caster.centre;
+    let radius_max = caster.radius_max;
     let cast = |d: DVec3| -> Hit {
-        let q = d.to_array();
-        let mut angle = first.min(max_angle);
-        loop {
-            let chord2 = 2.0 - 2.0 * angle.cos();
-            let found =
-                tree.query(&q).nearest_n::<SquaredEuclidean<f64>>(k).within(chord2).execute();
-            if found.len() >= min_neighbours {
+        match caster.gather(d) {
+            Some((chord2, found)) => {
                 let (r, several) = estimate(
                     &found
                         .iter()
-                        .map(|f| (f.distance, distances[f.item as usize]))
+                        .map(|&(c2, item)| (c2, caster.distances[item]))
                         .collect::<Vec<_>>(),
                     chord2,
-                    gap,
+                    caster.gap,
                 );
-                return Hit::Found(r, several);
+                Hit::Found(r, several)
             }
-            if angle >= max_angle {
-                return Hit::Hole;
-            }
-            angle = (angle * 1.5).min(max_angle);
+            None => Hit::Hole,
         }
     };
     // Half the rows by casting; with an even number of columns the rest are copies (the
@@ -394,7 +466,7 @@ pub fn spherical_image(
 /// Completes a doubled image from its first rows/2 + 1 rows: the rest are copies of their
 /// mirror texels, and within the two rows that map to themselves (0 and rows/2) the second
 /// texel of each mirrored pair is made a copy of the first, so the symmetry holds exactly.
-fn complete_by_symmetry<T: Copy>(
+pub(crate) fn complete_by_symmetry<T: Copy>(
     values: &mut Vec<T>,
     rows: usize,
     cols: usize,
@@ -417,7 +489,7 @@ fn complete_by_symmetry<T: Copy>(
 }
 
 /// The groups of `distances` (sorted) separated by gaps larger than `gap`.
-fn shells(distances: &[f64], gap: f64) -> Vec<Vec<f64>> {
+pub(crate) fn shells(distances: &[f64], gap: f64) -> Vec<Vec<f64>> {
     let mut sorted = distances.to_vec();
     sorted.sort_by(f64::total_cmp);
     let mut groups: Vec<Vec<f64>> = Vec::new();

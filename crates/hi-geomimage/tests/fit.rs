@@ -83,8 +83,11 @@ fn resampling_up_is_exact_and_down_reports_its_error() {
     assert!(e.max_deviation < 1e-13, "degree 2 fits in 6 × 4 with room: {e:?}");
     assert!(down.get(1, 1).distance(f(1.0 / 6.0, 0.25)) < 1e-13);
     // Too small for degree 2 in u: a real reduction error, within its bound.
+    // Too small for degree 2 in u: 4 rows keep cos 4πu (the Nyquist term) but lose
+    // ½·sin 4πu, so D = (0, 0, ½ sin 4πu) and max|D| = ½, met on the grid at u = 1/8.
     let (_, e) = image.resampled(4, 4).unwrap();
-    assert!(e.max_deviation > 0.1 && e.max_deviation <= e.upper_bound, "{e:?}");
+    assert!((e.max_deviation - 0.5).abs() < 1e-12, "{e:?}");
+    assert!(e.max_deviation <= e.upper_bound, "{e:?}");
     assert!(image.resampled(1, 4).is_err());
 }
 

@@ -6,8 +6,10 @@
 //!   Bᵥ[l][k] = σⁿₖ⁽q⁾(vₗ), the samples are Bᵤ·X·Bᵥᵀ, O(m·n·V + U·m·V) instead of
 //!   O(U·V·m·n);
 //! * the 2-D FFT for the uniform grid over the whole period, p(i/U, l/V): Theorem 5.3 on both
-//!   axes, an inverse FFT along v for every row, then along u for every column
-//!   (O(U·V·log(U·V)), Nyquist terms split for even sizes, MATH.md §7).
+//!   axes (O(U·V·log(U·V)), Nyquist terms split for even sizes, MATH.md §7). When both axes
+//!   grow past the grid's highest frequency the padded 2-D spectrum is transformed directly
+//!   (`fft2`, the work of `scipy.signal.resample` on both axes); otherwise the frequencies fold
+//!   and each row, then each column, is sampled by its own FFT.
 //!
 //! Rows and columns are processed in parallel with rayon.
 
@@ -138,6 +140,11 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     ) -> Result<GridSamples<P>, Error> {
         check_sizes(n_u, n_v)?;
         let (m, n) = (self.m(), self.n());
+        if n_u > 2 * (m / 2) && n_v > 2 * (n / 2) {
+            // No frequency folds: the 2-D spectrum, padded.
+            let values = crate::fft2::upsample(self.points(), (m, n), (n_u, n_v), (p, q));
+            return Ok(GridSamples { n_u, n_v, values });
+        }
         // Along v, every grid row: m rows of V samples.
         let rows: Vec<Vec<P>> = self
             .points()

@@ -44,6 +44,7 @@ mod colormap;
 mod error;
 mod examples;
 pub mod export;
+mod fft2;
 mod geometry;
 mod grid;
 mod mesh;

@@ -260,3 +260,38 @@ fn bad_grids_are_rejected() {
     assert!(s.sample_params(&[0.1, f64::NAN], &[0.2], 0, 0).is_err());
     assert!(s.rotate(Axis::U, f64::INFINITY).is_err());
 }
+
+/// The FFT grid against the separable basis sums (a different method) for odd and even grids,
+/// folding and growing sample counts on either axis, and mixed derivative orders.
+#[test]
+fn uniform_fft_grid_equals_separable_sums_for_every_size() {
+    for (m, n) in [(2, 3), (3, 2), (4, 4), (5, 8), (8, 5), (6, 7)] {
+        let g: Vec<Vec<DVec3>> = (0..m)
+            .map(|j| {
+                (0..n)
+                    .map(|k| {
+                        let (a, b) = (j as f64, k as f64);
+                        DVec3::new((1.3 * a + b).sin(), (a * b * 0.7).cos(), 0.3 * a - b)
+                    })
+                    .collect()
+            })
+            .collect();
+        let s = HarmonicSurface::new(g);
+        let scale = s.points().iter().map(|p| p.length()).fold(1.0, f64::max);
+        for (n_u, n_v) in [(m, n), (m + 1, n + 1), (2 * m, 3 * n), (m - 1, 4 * n), (3 * m, n - 1)] {
+            let us: Vec<f64> = (0..n_u).map(|i| i as f64 / n_u as f64).collect();
+            let vs: Vec<f64> = (0..n_v).map(|l| l as f64 / n_v as f64).collect();
+            for (p, q) in [(0, 0), (1, 0), (0, 1), (2, 1), (1, 3)] {
+                let fft = s.sample_uniform(n_u, n_v, p, q).unwrap();
+                let sums = s.sample_params(&us, &vs, p, q).unwrap();
+                let tol = 1e-12 * scale * (2.0 * PI * (m.max(n) as f64)).powi((p + q) as i32);
+                for (a, b) in fft.values.iter().zip(&sums.values) {
+                    assert!(
+                        (*a - *b).length() < tol,
+                        "{m}×{n} → {n_u}×{n_v}, order ({p}, {q}): {a} vs {b}"
+                    );
+                }
+            }
+        }
+    }
+}

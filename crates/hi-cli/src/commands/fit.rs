@@ -9,12 +9,12 @@ use std::path::PathBuf;
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::scan::read_scan;
-use hi_geomimage::{FitOptions, Layout, Smoothing, fit};
+use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
 use hi_surface::export::{self, MeshFormat};
 use hi_surface::{MeshOptions, TriangleMesh};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::cli::{FitArgs, ParamName};
+use crate::cli::{FitArgs, ParamName, TexelsName};
 use crate::commands::surface_bezier;
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
@@ -45,6 +45,11 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
                 "--bezier applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
             ));
         }
+        ParamName::Sections if args.texels != TexelsName::Radial => {
+            return Err(Failure::input(
+                "--texels applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
+            ));
+        }
         ParamName::Sections => return super::fit_sections::run(args),
     };
     let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
@@ -64,6 +69,10 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
     let options = FitOptions {
         layout,
+        texels: match args.texels {
+            TexelsName::Radial => Texels::Radial,
+            TexelsName::Contours => Texels::Contours,
+        },
         rows: args.resolution.0,
         cols: args.resolution.1,
         centre,
@@ -197,6 +206,14 @@ fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Jso
             .field("surface_to_scan_max", Json::Number(h.surface_to_scan.max))
             .build()
     });
+    let row_points = r.row_points.map_or(Json::Null, |rp| {
+        Object::new()
+            .field("min", Json::Count(rp.min))
+            .field("mean", Json::Number(rp.mean))
+            .field("max", Json::Count(rp.max))
+            .field("empty_rows", Json::Count(rp.empty_rows))
+            .build()
+    });
     Object::new()
         .field("scan", Json::String(args.scan.display().to_string()))
         .field("points", Json::Count(r.points))
@@ -205,8 +222,8 @@ fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Jso
         .field(
             "image",
             Json::Array(vec![
-                Json::Count(fitted.spherical.image.rows()),
-                Json::Count(fitted.spherical.image.cols()),
+                Json::Count(fitted.source.image().rows()),
+                Json::Count(fitted.source.image().cols()),
             ]),
         )
         .field(
@@ -215,6 +232,7 @@ fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Jso
         )
         .field("non_star_fraction", Json::Number(r.non_star_fraction))
         .field("hole_fraction", Json::Number(r.hole_fraction))
+        .field("row_points", row_points)
         .field("stages", Json::Array(stages))
         .field("reduction", reduction)
         .field("errors", errors)
