@@ -123,8 +123,13 @@ pub fn ray_direction(i: usize, j: usize, rows: usize, cols: usize) -> DVec3 {
 /// (figure 5.20) avoids them: the square's map to the sphere is invariant under half-turns
 /// about the midpoints of its edges, so it extends to the whole plane with the periods
 /// (2, 2) and (2, −2); the image samples one such period along the diagonals,
-/// (s, t) = (a + b + ½, a − b + ½) for a = 2i/rows, b = 2j/cols, and neighbouring texels are
+/// (s, t) = (a − b + ½, a + b + ½) for a = 2i/rows, b = 2j/cols, and neighbouring texels are
 /// neighbours on the object everywhere.
+///
+/// In every layout ∂d/∂u × ∂d/∂v points away from the centre, so the harmonic surface of a
+/// star-shaped object has outward normals pᵤ × pᵥ (and a mesh of it with default
+/// [`hi_surface::MeshOptions`] is wound outwards); for the flattened octahedron this is why
+/// s and t run as they do.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Layout {
     /// Latitude–longitude rays over a doubled meridian (algorithm 2 as in the thesis).
@@ -149,7 +154,7 @@ impl Layout {
             ),
             Self::FlatOctahedron => {
                 let (a, b) = (2.0 * i as f64 / rows as f64, 2.0 * j as f64 / cols as f64);
-                octahedral_direction(a + b + 0.5, a - b + 0.5)
+                octahedral_direction(a - b + 0.5, a + b + 0.5)
             }
         }
     }

@@ -9,14 +9,12 @@ use anyhow::{Result, ensure};
 use glam::DVec3;
 use hi_curve::HarmonicCurve;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_geomimage::scan::Scan;
-use hi_geomimage::{FitOptions, Layout, fit};
+use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
 use hi_surface::bezier::SurfaceBezier;
-use hi_surface::subdivision::{LoopWeights, Scheme};
 use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh, torus};
 
 use super::glb::glb;
-use super::subdivision::head_with;
+use super::scans::{head_scan, outward_fraction};
 use super::{Figure, Format, Panel, Table};
 
 /// Samples per patch side in the meshes.
@@ -25,7 +23,7 @@ const SAMPLES: usize = 6;
 /// Samples per patch side in the meshes of the heads (more patches).
 const HEAD_SAMPLES: usize = 3;
 
-/// The geometry image of the heads: rows × columns.
+/// The reduced geometry image of the heads, rows × columns (sampled at twice this, §5.8).
 const HEAD_IMAGE: usize = 24;
 
 /// The torus of figures 5.27–5.28: the thesis's 4×4 torus grid.
@@ -81,26 +79,28 @@ fn torus_figure(scheme: BezierScheme, colored: bool) -> Result<Vec<u8>> {
     glb(&patch_mesh(&b, SAMPLES, &all, colored)?)
 }
 
-/// A head stand-in fitted through a spherical geometry image (algorithm 2) and converted to
-/// the thesis's cubic patches; the patches of one cover.
+/// A head stand-in through §5.8's pipeline ("combined results"): its scan, a flattened
+/// octahedron image of contours of located points (Theorem 5.3 to the columns), Gaussian
+/// smoothing, a reduction to a quarter by Theorem 5.3, and the thesis's cubic patches; the
+/// patches of one cover.
 fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
-    let mesh = Scheme::Loop(LoopWeights::Loop).steps(&head_with(pointed)?, 2)?;
-    let points = mesh.positions().to_vec();
-    let centre = points.iter().sum::<DVec3>() / points.len() as f64;
-    let scan = Scan { points, ..Scan::default() };
+    let scan = head_scan(pointed)?;
     let options = FitOptions {
-        layout: Layout::Sphere,
-        rows: HEAD_IMAGE,
-        cols: HEAD_IMAGE,
-        centre: Some(centre),
+        layout: Layout::FlatOctahedron,
+        texels: Texels::Contours,
+        rows: 2 * HEAD_IMAGE,
+        cols: 2 * HEAD_IMAGE,
+        smoothing: Some(Smoothing::Gaussian { sigma: 1.0 }),
+        reduce: Some(0.25),
         error_oversample: 0,
         ..FitOptions::default()
     };
     let fitted = fit(&scan, &options, &mut |_| {})?;
     ensure!(fitted.report.non_star_fraction < 0.05, "the head is not star-shaped about its centre");
+    ensure!(fitted.report.surface_size == (HEAD_IMAGE, HEAD_IMAGE), "reduced to a quarter");
     let b = fitted.surface.to_bezier(BezierScheme::ThesisCubic, None)?;
     ensure!(b.report.max_deviation <= b.report.bound, "deviation above its bound");
-    let (u0, u1) = Layout::Sphere.covering_window();
+    let (u0, u1) = Layout::FlatOctahedron.covering_window();
     let once = b.patches_in([u0, u1]);
     Ok((b, once))
 }
@@ -108,14 +108,20 @@ fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
 /// A head figure panel.
 fn head_figure(pointed: bool, colored: bool) -> Result<Vec<u8>> {
     let (b, once) = head_patches(pointed)?;
-    glb(&patch_mesh(&b, HEAD_SAMPLES, &once, colored)?)
+    let mesh = patch_mesh(&b, HEAD_SAMPLES, &once, colored)?;
+    let p = mesh.positions();
+    let centre = p.iter().sum::<DVec3>() / p.len() as f64;
+    let outward = outward_fraction(&mesh, centre);
+    ensure!(outward > 0.99, "only {:.1}% of the head's triangles face outwards", 100.0 * outward);
+    glb(&mesh)
 }
 
 /// What the head figures draw.
-const HEAD_DRAWN: &str = "The head's points (its control mesh after two Loop steps) fitted by a harmonic surface through a 24×24 \
-    spherical geometry image (algorithm 2, centred at the points' centroid), converted to the thesis's bicubic patches \
-    (§5.7, 576 in all, the 288 of one cover drawn): (a) shaded, (b) one colour per patch. Each patch is sampled 4×4 \
-    with its own vertices; the thesis's smoothing and 25% reduction are left out (the stand-in has no noise).";
+const HEAD_DRAWN: &str = "§5.8's combined pipeline on the head's scan: a 48×48 flattened-octahedron image whose rows are \
+    contours through the scan points the rays located, made rectangular by Theorem 5.3 (`hi fit --texels contours`), \
+    smoothed by a Gaussian of σ = 1 texel, reduced to 24×24 by Theorem 5.3, and converted to the thesis's bicubic \
+    patches (§5.7, 576 in all, the 288 of one cover drawn): (a) shaded, (b) one colour per patch. Each patch is \
+    sampled 4×4 with its own vertices.";
 
 /// The figures of this module.
 pub(crate) const FIGURES: &[Figure] = &[
@@ -162,7 +168,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 29),
         caption: "Final rendering of mannequin head formed from Bézier patches",
         drawn: HEAD_DRAWN,
-        data: "stand-in for the thesis's mannequin scan (not available): the closed head of figure 4.35 built in code.",
+        data: "stand-in for the thesis's mannequin scan (not available): the scan of figure 5.10 (60 000 points on the \
+               head of figure 4.35, ±0.3% noise).",
         format: Format::Glb,
         panels: &[
             Panel {
@@ -175,8 +182,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 30),
         caption: "Final rendering of Spock formed from Bézier patches",
         drawn: HEAD_DRAWN,
-        data: "stand-in for the thesis's Spock scan (not available): the head of figure 4.35 with pointed ears, built in \
-               code.",
+        data: "stand-in for the thesis's Spock scan (not available): the scan of figure 5.11 (60 000 points on the head \
+               of figure 4.35 with pointed ears, ±0.3% noise).",
         format: Format::Glb,
         panels: &[
             Panel { suffix: "a", title: "(a) Bézier patches", draw: |_| head_figure(true, false) },
