@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+//! `docs/figures/index.html`: the figures as a static gallery in the thesis's order — number,
+//! caption, what is drawn, the data, the images inline (SVG plots, PNG images) and the glTF
+//! models as links, then the tables — generated with the index page from the same registry.
+//!
+//! The page needs no network and no script library. A few lines of script count the images
+//! that loaded once the page has: `#status` then reads "loaded N of M images". The test
+//! `gallery_loads_in_headless_chromium` opens the committed page in headless Chromium (Debian
+//! `chromium`) and asserts that every image loaded; without Chromium it says so and passes,
+//! unless `HI_REQUIRE_PEERS=1`, when it fails.
+
+use std::fmt::Write as _;
+
+use super::{Figure, Format, Table};
+
+/// The file name of the gallery inside `docs/figures/`.
+pub(crate) const GALLERY: &str = "index.html";
+
+/// `text` with `&`, `<`, `>` and `"` escaped.
+fn escape(text: &str) -> String {
+    let mut s = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => s.push_str("&amp;"),
+            '<' => s.push_str("&lt;"),
+            '>' => s.push_str("&gt;"),
+            '"' => s.push_str("&quot;"),
+            _ => s.push(c),
+        }
+    }
+    s
+}
+
+/// The inline markdown of the captions and tables as HTML: `code`, **bold**, *emphasis* and
+/// [links](target), everything else escaped.
+fn inline(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(c) = rest.chars().next() {
+        let after = &rest[c.len_utf8()..];
+        let closing = |marker: &str| after.find(marker).map(|end| (&after[..end], end));
+        match c {
+            '`' => {
+                if let Some((code, end)) = closing("`") {
+                    let _ = write!(out, "<code>{}</code>", escape(code));
+                    rest = &after[end + 1..];
+                    continue;
+                }
+            }
+            '*' if after.starts_with('*') => {
+                let after = &after[1..];
+                if let Some(end) = after.find("**") {
+                    let _ = write!(out, "<strong>{}</strong>", inline(&after[..end]));
+                    rest = &after[end + 2..];
+                    continue;
+                }
+            }
+            '*' => {
+                if let Some((em, end)) = closing("*").filter(|(em, _)| !em.is_empty()) {
+                    let _ = write!(out, "<em>{}</em>", inline(em));
+                    rest = &after[end + 1..];
+                    continue;
+                }
+            }
+            '[' => {
+                if let Some((label, end)) = closing("](")
+                    && let Some(close) = after[end + 2..].find(')')
+                {
+                    let target = &after[end + 2..end + 2 + close];
+                    let _ = write!(out, "<a href=\"{}\">{}</a>", escape(target), inline(label));
+                    rest = &after[end + 2 + close + 1..];
+                    continue;
+                }
+            }
+            _ => {}
+        }
+        out.push_str(&escape(&rest[..c.len_utf8()]));
+        rest = after;
+    }
+    out
+}
+
+/// A markdown table (a header line, a separator, rows; cells between `|`) as an HTML table.
+fn table(markdown: &str) -> String {
+    let mut s = String::from("<table>\n");
+    let cells = |line: &str| -> Vec<String> {
+        line.trim().trim_matches('|').split('|').map(|c| inline(c.trim())).collect()
+    };
+    for (k, line) in markdown.lines().filter(|l| l.trim_start().starts_with('|')).enumerate() {
+        match k {
+            0 => {
+                let _ = writeln!(s, "<tr><th>{}</th></tr>", cells(line).join("</th><th>"));
+            }
+            1 => {}
+            _ => {
+                let _ = writeln!(s, "<tr><td>{}</td></tr>", cells(line).join("</td><td>"));
+            }
+        }
+    }
+    s.push_str("</table>\n");
+    s
+}
+
+/// The style of the page.
+const STYLE: &str = "body{font-family:sans-serif;max-width:72rem;margin:auto;padding:1rem;line-height:1.4}\
+section{border-top:1px solid #ccc;padding:0.5rem 0}\
+figure{display:inline-block;margin:0.5rem;vertical-align:top;text-align:center}\
+figure img{max-width:34rem;max-height:26rem;border:1px solid #eee}\
+figcaption{font-size:0.9rem;color:#444}\
+table{border-collapse:collapse;font-size:0.85rem;margin:0.5rem 0}\
+td,th{border:1px solid #ccc;padding:0.2rem 0.4rem}\
+code{background:#f4f4f4;padding:0 0.2rem}\
+.data,.drawn{font-size:0.92rem}\
+#status{font-weight:bold}";
+
+/// Counts the images that loaded, once the page has.
+const SCRIPT: &str = "window.addEventListener('load',function(){\
+var all=document.images,ok=0;\
+for(var i=0;i<all.length;i++){if(all[i].complete&&all[i].naturalWidth>0){ok++;}}\
+document.getElementById('status').textContent='loaded '+ok+' of '+all.length+' images';});";
+
+/// The gallery page.
+pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <title>Figures of the thesis — harmonic</title>\n<style>{STYLE}</style>\n\
+         <script>{SCRIPT}</script>\n</head>\n<body>\n<h1>Figures of the thesis</h1>\n\
+         <p>Figures of A. Hardy, <em>Harmonic interpolation for smooth curves and surfaces</em> (2005), \
+         regenerated by <code>cargo xtask figures</code>: plots as SVG, geometry images as PNG, surfaces as \
+         binary glTF models (linked: open them in any glTF viewer). The notes, the stand-in data and the \
+         tables are also on the <a href=\"README.md\">index page</a>.</p>\n\
+         <p id=\"status\">images not counted yet</p>"
+    );
+    let _ = writeln!(s, "<nav><p>");
+    for f in figures {
+        let label = f.label();
+        let _ = write!(s, "<a href=\"#figure-{}\">{label}</a> ", label.replace('.', "-"));
+    }
+    let _ = writeln!(s, "</p></nav>");
+    for f in figures {
+        let label = f.label();
+        let _ = writeln!(
+            s,
+            "<section id=\"figure-{}\">\n<h2>Figure {label}</h2>\n<p><em>{}</em></p>\n\
+             <p class=\"drawn\">{}</p>\n<p class=\"data\">Data: {}</p>",
+            label.replace('.', "-"),
+            inline(f.caption),
+            inline(f.drawn),
+            inline(f.data)
+        );
+        for p in f.panels {
+            let file = f.file(p);
+            let title = escape(&f.title(p));
+            match f.format {
+                Format::Svg | Format::Png => {
+                    let _ = writeln!(
+                        s,
+                        "<figure><img src=\"{file}\" alt=\"{title}\"><figcaption>{title}</figcaption></figure>"
+                    );
+                }
+                Format::Glb => {
+                    let _ = writeln!(s, "<p>{title}: glTF model <a href=\"{file}\">{file}</a></p>");
+                }
+            }
+        }
+        let _ = writeln!(s, "</section>");
+    }
+    if !tables.is_empty() {
+        let _ = writeln!(s, "<section id=\"tables\">\n<h2>Tables</h2>");
+        for (t, body) in tables {
+            let _ = writeln!(
+                s,
+                "<h3 id=\"{}\">{}</h3>\n<p>{}</p>\n{}",
+                t.anchor,
+                inline(t.title),
+                inline(t.about),
+                table(body)
+            );
+        }
+        let _ = writeln!(s, "</section>");
+    }
+    let _ = writeln!(s, "</body>\n</html>");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use std::process::Command;
+
+    use super::*;
+
+    #[test]
+    fn inline_markdown_becomes_html() {
+        assert_eq!(inline("a `x<y` b"), "a <code>x&lt;y</code> b");
+        assert_eq!(inline("*It* and **bold**"), "<em>It</em> and <strong>bold</strong>");
+        assert_eq!(inline("[t](u.md#a) & c"), "<a href=\"u.md#a\">t</a> &amp; c");
+        assert_eq!(inline("2 * 3 = 6"), "2 * 3 = 6");
+        assert_eq!(
+            table("| a | b |\n|---|---|\n| `1` | 2 |\n"),
+            "<table>\n<tr><th>a</th><th>b</th></tr>\n<tr><td><code>1</code></td><td>2</td></tr>\n</table>\n"
+        );
+    }
+
+    /// The Chromium binary, if there is one.
+    fn chromium() -> Option<&'static str> {
+        ["chromium", "chromium-browser", "google-chrome"].into_iter().find(|name| {
+            Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success())
+        })
+    }
+
+    #[test]
+    fn gallery_loads_in_headless_chromium() {
+        let required = std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1");
+        let Some(browser) = chromium() else {
+            assert!(!required, "HI_REQUIRE_PEERS=1 but Chromium is not installed");
+            eprintln!("gallery check skipped: Chromium is not installed");
+            return;
+        };
+        let page = crate::project_root().join(super::super::OUT_DIR).join(GALLERY);
+        let html = std::fs::read_to_string(&page).expect("the gallery is committed");
+        let images = html.matches("<img ").count();
+        let panels: usize = super::super::registry()
+            .iter()
+            .filter(|f| matches!(f.format, Format::Svg | Format::Png))
+            .map(|f| f.panels.len())
+            .sum();
+        assert_eq!(images, panels, "one image per SVG or PNG panel");
+        let profile =
+            std::env::temp_dir().join(format!("harmonic-chromium-{}", std::process::id()));
+        let output = Command::new(browser)
+            .args([
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--allow-file-access-from-files",
+                "--virtual-time-budget=20000",
+            ])
+            .arg(format!("--user-data-dir={}", profile.display()))
+            .arg("--dump-dom")
+            .arg(format!("file://{}", page.display()))
+            .output()
+            .expect("Chromium runs");
+        let _ = std::fs::remove_dir_all(&profile);
+        let dom = String::from_utf8_lossy(&output.stdout);
+        let want = format!("loaded {images} of {images} images");
+        assert!(
+            dom.contains(&want),
+            "expected '{want}' in the page; status: {:?}; stderr: {}",
+            dom.split("id=\"status\">").nth(1).and_then(|t| t.split('<').next()),
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+}
