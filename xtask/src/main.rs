@@ -7,9 +7,12 @@
 //!   fail instead if a committed file is stale);
 //! - `bench <topic>`: time our code and the peer programs side by side and write the topic's
 //!   section of `docs/performance.md` (topics: `subdivision`, `fit`);
+//! - `crosscheck`: read back every model the figures emit with other programs (tobj, trimesh,
+//!   the Khronos validator, Blender) and run every peer comparison, into `docs/crosscheck.md`;
 //! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
 
 mod bench;
+mod crosscheck;
 mod figures;
 mod layers;
 
@@ -23,12 +26,13 @@ fn main() -> Result<()> {
     match args.first().map(String::as_str) {
         Some("figures") => figures::run(&root, args.iter().any(|a| a == "--check")),
         Some("bench") => bench::run(&root, args.get(1).map(String::as_str)),
+        Some("crosscheck") => crosscheck::run(&root),
         Some("layers") => {
             layers::check(&root)?;
             println!("layers: every crate depends only on crates below it");
             Ok(())
         }
-        _ => bail!("usage: cargo xtask <figures [--check] | bench <topic> | layers>"),
+        _ => bail!("usage: cargo xtask <figures [--check] | bench <topic> | crosscheck | layers>"),
     }
 }
 

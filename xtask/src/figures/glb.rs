@@ -12,6 +12,8 @@
 //! and 0 warnings. Without node or the validator it says so and passes, unless
 //! `HI_REQUIRE_PEERS=1`, when it fails.
 
+use std::path::PathBuf;
+
 use anyhow::{Context, Result, bail, ensure};
 use hi_surface::TriangleMesh;
 
@@ -104,6 +106,23 @@ pub(crate) fn check_read_back(mesh: &TriangleMesh, bytes: &[u8]) -> Result<()> {
     Ok(())
 }
 
+/// The validator's directory, or why it cannot run.
+pub(crate) fn validator() -> Result<PathBuf, String> {
+    let dir = crate::project_root().join("xtask/peers/gltf-validator");
+    if !dir.join("node_modules/gltf-validator").is_dir() {
+        return Err(
+            "gltf-validator is not installed (run `npm ci` in xtask/peers/gltf-validator)".into()
+        );
+    }
+    match std::process::Command::new("node").arg("--version").output() {
+        Ok(o) if o.status.success() => Ok(dir),
+        Ok(o) => {
+            Err(format!("node --version failed: {}", String::from_utf8_lossy(&o.stderr).trim()))
+        }
+        Err(e) => Err(format!("node is not usable: {e}")),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use std::path::Path;
@@ -129,24 +148,6 @@ mod tests {
         assert!(error.to_string().contains("position"), "{error}");
         let error = check_read_back(&mesh, &bytes[..bytes.len() - 8]).expect_err("truncated");
         assert!(error.to_string().contains("parsing"), "{error}");
-    }
-
-    /// The validator's directory, or why it cannot run.
-    fn validator() -> Result<std::path::PathBuf, String> {
-        let dir = crate::project_root().join("xtask/peers/gltf-validator");
-        if !dir.join("node_modules/gltf-validator").is_dir() {
-            return Err(
-                "gltf-validator is not installed (run `npm ci` in xtask/peers/gltf-validator)"
-                    .into(),
-            );
-        }
-        match Command::new("node").arg("--version").output() {
-            Ok(o) if o.status.success() => Ok(dir),
-            Ok(o) => {
-                Err(format!("node --version failed: {}", String::from_utf8_lossy(&o.stderr).trim()))
-            }
-            Err(e) => Err(format!("node is not usable: {e}")),
-        }
     }
 
     #[test]

@@ -39,7 +39,7 @@ mod chapter2;
 mod curves;
 mod data;
 mod fitting;
-mod glb;
+pub(crate) mod glb;
 mod html;
 mod nonuniform;
 mod plot;
@@ -187,11 +187,11 @@ fn tables() -> Vec<Table> {
 }
 
 /// A generated file: its name inside [`OUT_DIR`] and its bytes.
-type Output = (String, Vec<u8>);
+pub(crate) type Output = (String, Vec<u8>);
 
 /// Draws every figure and the index page, in memory, with a progress bar if `progress` and
 /// standard error is a terminal.
-fn generate(progress: bool) -> Result<Vec<Output>> {
+pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
     let figures = registry();
     let count: usize = figures.iter().map(|f| f.panels.len()).sum();
     let bar = if progress && std::io::stderr().is_terminal() {
@@ -318,7 +318,7 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
 
 /// The names of the files in `dir` that differ from `outputs`, are missing, or are figures
 /// (`fig-*`) that nothing generates any more.
-fn stale_files(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
+pub(crate) fn stale_files(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
     let mut stale = Vec::new();
     for (name, bytes) in outputs {
         match std::fs::read(dir.join(name)) {
