@@ -43,6 +43,13 @@ use crate::ray::{Ray, gamma};
 
 const TAU: f64 = std::f64::consts::TAU;
 
+/// How far past its cell (as a fraction of the cell's width) a cell's derivative bounds hold.
+const CELL_MARGIN: f64 = 0.05;
+
+/// Krawczyk boxes are inflated by this fraction of their radius before each step (ε-inflation),
+/// so that K ⊂ int X can hold when the root sits on a face of the box.
+const INFLATION: f64 = 0.1;
+
 /// The root finder of [`HarmonicObject`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum IntervalMethod {
@@ -104,6 +111,10 @@ pub enum SurfaceColor {
 struct Cell {
     u: [f64; 2],
     v: [f64; 2],
+    /// The cell widened by [`CELL_MARGIN`] of its width on each side: the derivative bounds
+    /// hold there, so Krawczyk boxes may be inflated a little past the cell.
+    ext_u: [f64; 2],
+    ext_v: [f64; 2],
     /// |pᵤ|, |pᵥ| bounds per coordinate.
     d1: [DVec3; 2],
     /// |pᵤᵤ|, |pᵤᵥ|, |pᵥᵥ| bounds per coordinate.
@@ -388,13 +399,15 @@ impl HarmonicObject {
     /// The bounds of one cell and the box of its enclosure.
     fn cell(&self, u: [f64; 2], v: [f64; 2]) -> (Cell, DVec3, DVec3) {
         let mag = |x: [Interval; 3]| DVec3::new(x[0].mag(), x[1].mag(), x[2].mag());
-        let d1 = [mag(self.enclose_deriv(u, v, 1, 0)), mag(self.enclose_deriv(u, v, 0, 1))];
+        let (mu, mv) = (CELL_MARGIN * (u[1] - u[0]), CELL_MARGIN * (v[1] - v[0]));
+        let (eu, ev) = ([u[0] - mu, u[1] + mu], [v[0] - mv, v[1] + mv]);
+        let d1 = [mag(self.enclose_deriv(eu, ev, 1, 0)), mag(self.enclose_deriv(eu, ev, 0, 1))];
         let d2 = [
-            mag(self.enclose_deriv(u, v, 2, 0)),
-            mag(self.enclose_deriv(u, v, 1, 1)),
-            mag(self.enclose_deriv(u, v, 0, 2)),
+            mag(self.enclose_deriv(eu, ev, 2, 0)),
+            mag(self.enclose_deriv(eu, ev, 1, 1)),
+            mag(self.enclose_deriv(eu, ev, 0, 2)),
         ];
-        let cell = Cell { u, v, d1, d2 };
+        let cell = Cell { u, v, ext_u: eu, ext_v: ev, d1, d2 };
         let naive = self.enclose_deriv(u, v, 0, 0);
         let e = self.enclosure(&cell, u, v);
         let lo = DVec3::new(naive[0].lo(), naive[1].lo(), naive[2].lo()).max(e.center - e.radius);
@@ -446,8 +459,25 @@ impl HarmonicObject {
             }
             n_boxes += 1;
             if n_boxes > self.settings.max_boxes {
+                // The cap: where no root was found, the nearest box still open counts as an
+                // unproven hit (its enclosure meets the ray; typically a pole, where a whole
+                // interval of v maps to one point and boxes cannot be excluded).
+                if best.is_none() {
+                    let t = node.t[0];
+                    let extent = (node.enc.radius * 2.0).max_element();
+                    best = Some(HarmonicHit {
+                        t,
+                        u: 0.5 * (node.u[0] + node.u[1]),
+                        v: 0.5 * (node.v[0] + node.v[1]),
+                        error: DVec3::splat(2.0 * extent) + ray.dir.abs() * (t.abs() * gamma(2)),
+                        proven: false,
+                    });
+                }
                 break;
             }
+            // A box reaching the nearest hit so far may hold that same root (a surface that
+            // covers itself twice, like the sphere grid): an unproven hit there is no better.
+            let reaches_limit = node.t[1] >= limit;
             node.t[1] = node.t[1].min(limit);
             let narrow = (node.u[1] - node.u[0]).max(node.v[1] - node.v[0]) <= par_tol;
             match self.settings.method {
@@ -473,6 +503,9 @@ impl HarmonicObject {
                         continue;
                     }
                     Newton::Undecided(contracted) => {
+                        if narrow && reaches_limit {
+                            continue;
+                        }
                         if narrow {
                             let t = 0.5 * (node.t[0] + node.t[1]);
                             let extent = (node.enc.radius * 2.0).max_element();
@@ -538,21 +571,29 @@ impl HarmonicObject {
             Interval::new(node.t[0], node.t[1]),
         ];
         let mut proven = false;
-        let mut enc = node.enc;
-        for iteration in 0..24 {
-            let y = [x[0].mid(), x[1].mid(), x[2].mid()];
-            if iteration > 0 {
-                enc = self.enclosure(cell, [x[0].lo(), x[0].hi()], [x[1].lo(), x[1].hi()]);
-            }
+        let t_range = Interval::new(ray.t_min, t_max);
+        for _ in 0..40 {
+            // ε-inflation, within the window where the cell's bounds hold.
+            let grow = |i: Interval, lo: f64, hi: f64| {
+                let r = INFLATION * i.rad() + 4.0 * f64::EPSILON * i.mag();
+                Interval::new((i.lo() - r).max(lo), (i.hi() + r).min(hi))
+            };
+            let xi = [
+                grow(x[0], cell.ext_u[0], cell.ext_u[1]),
+                grow(x[1], cell.ext_v[0], cell.ext_v[1]),
+                grow(x[2], ray.t_min, t_max),
+            ];
+            let y = [xi[0].mid(), xi[1].mid(), xi[2].mid()];
             let (p, pu, pv) = self.eval_with_partials(y[0], y[1]);
             let [e0, e1, _] = self.eval_err;
-            let (hu, hv) = (x[0].rad().next_up(), x[1].rad().next_up());
+            let (hu, hv) = (xi[0].rad().next_up(), xi[1].rad().next_up());
             // f(y) = p(y) − o − t·d, enclosed.
             let mut fy = [Interval::ZERO; 3];
             for k in 0..3 {
-                let pk = Interval::new(p[k] - e0, p[k] + e0)
-                    + Interval::new(-gamma(2) * p[k].abs(), gamma(2) * p[k].abs());
-                fy[k] = pk - ray.origin[k] - Interval::point(y[2]) * ray.dir[k];
+                let r = e0 + gamma(2) * p[k].abs();
+                fy[k] = Interval::new(p[k] - r, p[k] + r)
+                    - ray.origin[k]
+                    - Interval::point(y[2]) * ray.dir[k];
             }
             // F′(X) = [pᵤ(X), pᵥ(X), −d].
             let ru = cell.d2[0] * hu + cell.d2[1] * hv + DVec3::splat(e1);
@@ -567,10 +608,10 @@ impl HarmonicObject {
                 jac[k][2] = Interval::point(-ray.dir[k]);
             }
             if jac.iter().flatten().any(|j| j.is_empty()) {
-                return Newton::Undecided(None);
+                break;
             }
             let Some(yinv) = inverse3([pu, pv, -ray.dir]) else {
-                return Newton::Undecided(None);
+                break;
             };
             // K = y − Y f(y) + (I − Y F′(X))(X − y).
             let mut k_box = [Interval::ZERO; 3];
@@ -584,43 +625,39 @@ impl HarmonicObject {
                     for j in 0..3 {
                         m -= jac[j][l] * yinv[i][j];
                     }
-                    acc += m * (x[l] - y[l]);
+                    acc += m * (xi[l] - y[l]);
                 }
                 k_box[i] = acc;
             }
-            let interior = (0..3).all(|i| k_box[i].is_interior(x[i]));
+            let interior = (0..3).all(|i| k_box[i].is_interior(xi[i]));
+
             let next = [
-                k_box[0].intersection(x[0]),
-                k_box[1].intersection(x[1]),
-                k_box[2].intersection(x[2]).intersection(Interval::new(ray.t_min, t_max)),
+                k_box[0].intersection(xi[0]),
+                k_box[1].intersection(xi[1]),
+                k_box[2].intersection(xi[2]).intersection(t_range),
             ];
             if next.iter().any(|i| i.is_empty()) {
+                // No root in the inflated box, so none in the box.
                 return Newton::Excluded;
             }
             proven = proven || interior;
-            let shrunk = (0..3).any(|i| next[i].width() < 0.9 * x[i].width());
+            let shrunk = (0..3).any(|i| next[i].width() < 0.5 * x[i].width());
             let done = next[0].width().max(next[1].width()) <= self.settings.parameter_tolerance
                 && next[2].width() <= 1e-3 * self.settings.distance_tolerance * self.scale;
-            x = next;
-            if proven && (done || !shrunk) {
-                let t = x[2].mid();
-                let error = enc.radius.min(ray.dir.abs() * x[2].rad())
-                    + ray.dir.abs() * (t.abs() * gamma(2));
-                return Newton::Unique(HarmonicHit {
-                    t,
-                    u: x[0].mid(),
-                    v: x[1].mid(),
-                    error,
-                    proven: true,
-                });
-            }
             if !proven && !shrunk {
+                break;
+            }
+            let stalled = next == x;
+            x = next;
+            if proven && (done || stalled) {
                 break;
             }
         }
         if proven {
+            let enc = self.enclosure(cell, [x[0].lo(), x[0].hi()], [x[1].lo(), x[1].hi()]);
             let t = x[2].mid();
-            let error = enc.radius + ray.dir.abs() * (t.abs() * gamma(2));
+            let error = enc.radius.min(ray.dir.abs() * x[2].rad().max(f64::EPSILON * t.abs()))
+                + ray.dir.abs() * (t.abs() * gamma(2));
             return Newton::Unique(HarmonicHit {
                 t,
                 u: x[0].mid(),
@@ -629,8 +666,13 @@ impl HarmonicObject {
                 proven: true,
             });
         }
-        let u = [x[0].lo(), x[0].hi()];
-        let v = [x[1].lo(), x[1].hi()];
+        // Not decided: the roots in the node's box lie in x ∩ box.
+        let u = x[0].intersection(Interval::new(node.u[0], node.u[1]));
+        let v = x[1].intersection(Interval::new(node.v[0], node.v[1]));
+        if u.is_empty() || v.is_empty() {
+            return Newton::Excluded;
+        }
+        let (u, v) = ([u.lo(), u.hi()], [v.lo(), v.hi()]);
         let same = u == node.u && v == node.v;
         Newton::Undecided(if same { None } else { Some((u, v)) })
     }

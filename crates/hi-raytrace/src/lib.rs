@@ -23,8 +23,8 @@
 //!
 //! // The exact harmonic sphere of radius 1 (a 4×4 grid), hit from z = 3.
 //! let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicSettings::default())?;
-//! let hit = sphere.intersect(&Ray::new(DVec3::new(0.0, 0.0, 3.0), -DVec3::Z)).unwrap();
-//! assert!((hit.t - 2.0).abs() < 1e-9);
+//! let hit = sphere.intersect(&Ray::new(DVec3::new(0.6, 0.0, 3.0), -DVec3::Z)).unwrap();
+//! assert!((hit.t - (3.0 - 0.8)).abs() < 1e-9); // z = √(1 − 0.6²) = 0.8
 //! assert!(hit.proven); // Krawczyk's test proved the root unique in its box
 //! # Ok::<(), hi_raytrace::Error>(())
 //! ```

@@ -103,8 +103,8 @@ pub enum Light {
 /// let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicSettings::default())?;
 /// let light = Light::Directional { direction: DVec3::Z, intensity: [1.0; 3] };
 /// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(sphere))], vec![light], [0.0; 3])?;
-/// let hit = scene.intersect(&Ray::new(DVec3::new(0.0, 0.0, 3.0), -DVec3::Z)).unwrap();
-/// assert!((hit.t - 2.0).abs() < 1e-9);
+/// let hit = scene.intersect(&Ray::new(DVec3::new(0.6, 0.0, 3.0), -DVec3::Z)).unwrap();
+/// assert!((hit.t - (3.0 - 0.8)).abs() < 1e-9); // z = √(1 − 0.6²) = 0.8
 /// assert!(Scene::try_new(vec![], vec![], [0.0; 3]).is_err()); // no objects
 /// # Ok::<(), hi_raytrace::Error>(())
 /// ```
