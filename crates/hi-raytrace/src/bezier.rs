@@ -367,7 +367,7 @@ pub struct BezierHit {
     pub point: DVec3,
     /// Error bound of `point`, per coordinate.
     pub error: DVec3,
-    /// (S_u, S_v) at the hit.
+    /// (Sᵤ, Sᵥ) at the hit.
     pub tangents: (DVec3, DVec3),
 }
 
@@ -450,7 +450,7 @@ fn bernstein(n: usize, t: f64, b: &mut [f64], db: &mut [f64]) {
     }
 }
 
-/// S(u, v), S_u, S_v of a patch.
+/// S(u, v), Sᵤ, Sᵥ of a patch.
 pub(crate) fn eval(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
     let (m, n) = (p.degree_u(), p.degree_v());
     if m > MAX_FAST_DEGREE || n > MAX_FAST_DEGREE {

@@ -92,9 +92,7 @@ impl Bvh {
         ray: &Ray,
         mut test: impl FnMut(usize, f64) -> Option<(f64, T)>,
     ) -> Option<(f64, T)> {
-        let Some((t0, t1)) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max) else {
-            return None;
-        };
+        let (t0, t1) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max)?;
         // Start the f32 ray where it enters the object's box.
         let shift = t0;
         let o = ray.point_at(shift);

@@ -123,7 +123,7 @@ fn check_settings(settings: &RenderSettings) -> Result<(), Error> {
     Ok(())
 }
 
-/// SplitMix64: a fixed, well-mixed hash.
+/// `SplitMix64`: a fixed, well-mixed hash.
 fn mix(mut z: u64) -> u64 {
     z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
