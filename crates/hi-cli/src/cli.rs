@@ -20,6 +20,7 @@ Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivid
 Surface commands: hi surface eval|mesh|example|bspline-fit|bezier (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
 Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron|sections] ...
+Rendering (§5.6): hi render SCENE.json -o OUT.png, or hi render --quick FILE -o OUT.png.
 Bézier forms (§5.7): hi bezier basis --n N --scheme thesis-cubic|thesis-quintic;
   hi curve to-bezier --kind harmonic --scheme thesis-cubic|thesis-quintic|hermite|hermite-quintic.
 
@@ -243,6 +244,79 @@ pub(crate) enum Command {
     /// Bézier forms of the harmonic basis (§5.7).
     #[command(subcommand)]
     Bezier(BezierCommand),
+    /// Ray-trace a scene, or one surface or mesh file, to a PNG image (§5.5, §5.6).
+    #[command(after_help = RENDER_HELP)]
+    Render(RenderArgs),
+}
+
+/// The scene format and output of `hi render`.
+const RENDER_HELP: &str = "\
+Scene (JSON; file names relative to the scene file):
+  {\"camera\": {\"eye\": [x, y, z], \"target\": [x, y, z], \"up\": [0, 0, 1], \"fov\": 40},
+   \"image\": {\"width\": 512, \"height\": 512, \"spp\": 4},
+   \"background\": [r, g, b], \"ambient\": [r, g, b],
+   \"lights\": [{\"type\": \"directional\", \"direction\": [x, y, z], \"intensity\": 1},
+              {\"type\": \"point\", \"position\": [x, y, z], \"intensity\": [r, g, b]}],
+   \"objects\": [{\"type\": \"harmonic\", \"file\": \"torus.json\", \"method\": \"interval\"},
+               {\"type\": \"mesh\", \"file\": \"head.glb\", \"color\": [r, g, b]},
+               {\"type\": \"bezier\", \"file\": \"patches.json\"}]}
+  camera: fov is the vertical field of view in degrees (default 40); up defaults to [0, 0, 1];
+    without a camera the scene is framed from the front, above and to the side.
+  Colours are sRGB in [0, 1]; intensities linear (a number or [r, g, b]); the direction of a
+    directional light points towards the light; point lights fall off with the squared distance.
+  harmonic: a grid file (as 'hi surface example' writes) drawn by \"method\": interval (interval
+    Newton, the default), bisection (interval bisection), bezier (C1 Hermite patches) or mesh
+    (256x256 quads); \"curvature\": \"gaussian\" or \"mean\" colours it by K or H.
+  mesh: .obj, .gltf or .glb (vertex colours are used if the file has them).
+  bezier: the patches file of 'hi surface bezier -o patches.json', one colour per patch.
+  Every object may have \"color\" (sRGB) and \"specular\" (0 to 1).
+--quick FILE frames one grid, patches or mesh file by itself (--method picks how a grid file
+  is drawn: bezier, the default, interval, bisection or mesh).
+Output: the PNG in OUT (sRGB, anti-aliased by SPP samples per pixel in a fixed pattern: the same
+  bytes on every run); stdout gets {\"files\": [OUT], \"width\": W, \"height\": H, \"spp\": S,
+  \"rays\": {\"camera\", \"shadow\", \"hits\"}, \"seconds\": T}. A progress bar is shown on a terminal.
+Example: hi surface example torus -o torus.json && hi render --quick torus.json --method interval -o torus.png";
+
+/// How `hi render` draws a harmonic grid.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum RenderMethod {
+    /// C1 Hermite Bézier patches within 1e-4 of the grid's size, Newton on the patches.
+    Bezier,
+    /// The surface itself by interval Newton (Krawczyk).
+    Interval,
+    /// The surface itself by interval bisection.
+    Bisection,
+    /// A 256×256 triangle mesh of the surface.
+    Mesh,
+}
+
+/// Options of `hi render`.
+#[derive(Debug, Args)]
+pub(crate) struct RenderArgs {
+    /// The scene file (JSON; see below).
+    #[arg(value_name = "SCENE", required_unless_present = "quick", conflicts_with = "quick")]
+    pub(crate) scene: Option<PathBuf>,
+    /// Render this grid, patches or mesh file alone, framed automatically.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) quick: Option<PathBuf>,
+    /// With --quick: how a harmonic grid is drawn.
+    #[arg(long, value_enum, default_value = "bezier")]
+    pub(crate) method: RenderMethod,
+    /// With --quick: colour a harmonic grid (interval, bisection, mesh) by this curvature.
+    #[arg(long, value_enum, value_name = "CURVATURE")]
+    pub(crate) curvature: Option<ColorBy>,
+    /// Image width in pixels [default: the scene's, else 512].
+    #[arg(long, value_name = "W", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) width: Option<usize>,
+    /// Image height in pixels [default: the scene's, else 512].
+    #[arg(long, value_name = "H", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) height: Option<usize>,
+    /// Samples per pixel [default: the scene's, else 4].
+    #[arg(long, value_name = "S", allow_negative_numbers = true, value_parser = parse_whole)]
+    pub(crate) spp: Option<usize>,
+    /// The PNG file to write.
+    #[arg(short = 'o', long = "output", value_name = "OUT.png")]
+    pub(crate) output: PathBuf,
 }
 
 /// The subcommands of `hi bezier`.

@@ -16,6 +16,8 @@
 //! hi surface mesh     --input GRID [--resolution UxV] [--window u0,u1,v0,v1]
 //!                     [--color gaussian|mean] -o OUT.obj|OUT.gltf|OUT.glb
 //! hi surface example  sphere|torus|<a §5.9 surface> [--samples MxN] [-o FILE]
+//! hi render           SCENE.json -o OUT.png [--width W --height H --spp S]
+//! hi render           --quick FILE [--method bezier|interval|bisection|mesh] -o OUT.png
 //! ```
 //!
 //! The input is `{"points": [...]}` or a bare array of points, or for surfaces

@@ -1,8 +1,55 @@
 // SPDX-License-Identifier: MIT
-//! Ray tracing of harmonic surfaces (Hardy 2005, §5.5, §5.6).
+//! Ray tracing of harmonic surfaces (A. Hardy, *Harmonic interpolation for smooth curves and
+//! surfaces*, 2005, §5.5 "Rendering", §5.6 "Ray tracing").
 //!
-//! This crate will hold a small renderer: interval Newton and bisection ray tracing of harmonic
-//! surfaces, Bézier patches in a bounding volume hierarchy, triangle meshes, shading, and
-//! curvature colour maps. It builds on `hi-surface`.
+//! A small renderer with three kinds of object:
 //!
-//! Nothing is implemented yet.
+//! | object | intersection | where |
+//! |---|---|---|
+//! | harmonic surface | interval bisection or interval Newton (Krawczyk) on p(u, v) − (o + t·d) = 0, within cells found by a BVH over their interval enclosures (§5.6) | [`HarmonicObject`], [`IntervalMethod`] |
+//! | Bézier patches | flat pieces (subdivision) in a BVH over their control boxes, Newton in (u, v, t) on the exact patch (§5.6, §5.7) | [`BezierObject`] |
+//! | triangle mesh | BVH, watertight f64 ray–triangle test (§5.5) | [`MeshObject`] |
+//!
+//! and a [`Camera`] (look-at, vertical field of view), a [`Scene`] with directional and point
+//! [`Light`]s, Blinn–Phong shading with shadow rays whose origins are offset by the error bound
+//! of the hit ([`offset_ray_origin`]), colours from curvature ([`SurfaceColor`]), vertex colours
+//! or per-patch colours, supersampling and parallel tiles ([`render`]), and sRGB PNG output.
+//!
+//! # Examples
+//!
+//! ```
+//! use glam::DVec3;
+//! use hi_raytrace::{HarmonicObject, HarmonicSettings, Ray};
+//!
+//! // The exact harmonic sphere of radius 1 (a 4×4 grid), hit from z = 3.
+//! let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicSettings::default())?;
+//! let hit = sphere.intersect(&Ray::new(DVec3::new(0.6, 0.0, 3.0), -DVec3::Z)).unwrap();
+//! assert!((hit.t - (3.0 - 0.8)).abs() < 1e-9); // z = √(1 − 0.6²) = 0.8
+//! assert!(hit.proven); // Krawczyk's test proved the root unique in its box
+//! # Ok::<(), hi_raytrace::Error>(())
+//! ```
+//!
+//! # Feature flags
+//!
+//! None: the crate has no optional features.
+
+mod bezier;
+mod bvh;
+mod camera;
+mod error;
+mod harmonic;
+mod mesh;
+mod ray;
+mod render;
+mod scene;
+mod timing;
+
+pub use bezier::{BezierHit, BezierObject, BezierSettings};
+pub use camera::Camera;
+pub use error::Error;
+pub use harmonic::{HarmonicHit, HarmonicObject, HarmonicSettings, IntervalMethod, SurfaceColor};
+pub use mesh::{MeshObject, TriangleHit, intersect_triangle};
+pub use ray::{Hit, Ray, offset_ray_origin};
+pub use render::{MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderSettings, Rendering, render};
+pub use scene::{Geometry, Light, Material, Scene, SceneObject};
+pub use timing::{TorusMethod, render_torus, torus_scene};

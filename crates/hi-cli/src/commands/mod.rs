@@ -9,6 +9,7 @@ mod fairness;
 mod fit;
 mod fit_sections;
 mod nonuniform;
+mod render;
 mod resample;
 mod rotate;
 mod sample;
@@ -37,6 +38,7 @@ pub(crate) fn run(command: &Command, pretty: bool) -> Result<Json, Failure> {
         Command::Subdivide(args) => subdivide_mesh::run(args),
         Command::Fit(args) => fit::run(args),
         Command::Bezier(BezierCommand::Basis(args)) => bezier_basis::run(args),
+        Command::Render(args) => render::run(args),
         Command::Curve(CurveCommand::Eval(args)) => eval::run(args),
         Command::Curve(CurveCommand::Sample(args)) => sample::run(args),
         Command::Curve(CurveCommand::Fairness(args)) => fairness::run(args),

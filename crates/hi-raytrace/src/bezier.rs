@@ -1,0 +1,500 @@
+// SPDX-License-Identifier: MIT
+//! Bézier patches in a BVH (Hardy 2005, §5.6 and §5.7: "the convex hull property … a bounding
+//! volume hierarchy … the majority of the algorithms presented rely on Newton's method,
+//! subdivision and the convex hull property").
+//!
+//! At build time each patch is subdivided (de Casteljau) until its pieces are flat: every control
+//! point lies within a fraction [`BezierSettings::flatness`] of the piece's size from the bilinear
+//! patch of its corners. The control boxes of the pieces (which hold them, by the convex hull
+//! property) go into a BVH. A ray then runs Newton's method in (u, v, t) on the exact patch,
+//! S(u, v) − (o + t·d) = 0, from the centre of each piece whose box it meets; a root that lands
+//! outside the piece (or no convergence) sends the piece back to subdivision at ray time, a few
+//! levels deep, with Newton from each sub-piece the ray meets.
+
+use glam::DVec3;
+use hi_bezier::BezierPatch;
+use hi_surface::bezier::{SurfaceBezier, patch_color};
+
+use crate::bvh::{Bvh, slab};
+use crate::error::{Error, check_positive};
+use crate::ray::{Ray, gamma};
+
+/// Largest patch degree with the allocation-free evaluation (higher degrees use `hi-bezier`).
+const MAX_FAST_DEGREE: usize = 15;
+
+/// How Bézier patches are prepared and intersected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BezierSettings {
+    /// A piece is flat when its control points lie within this fraction of its diagonal from the
+    /// bilinear patch of its corners.
+    pub flatness: f64,
+    /// Most subdivision levels at build time (each level splits a piece in four).
+    pub max_depth: u32,
+    /// Extra subdivision levels at ray time for a piece where Newton's method fails.
+    pub max_ray_depth: u32,
+    /// Newton stops when |S(u, v) − (o + t·d)| is below this fraction of the size of the object.
+    pub tolerance: f64,
+}
+
+impl Default for BezierSettings {
+    /// `flatness = 0.05`, `max_depth = 6`, `max_ray_depth = 4`, `tolerance = 1e-11`.
+    fn default() -> Self {
+        BezierSettings { flatness: 0.05, max_depth: 6, max_ray_depth: 4, tolerance: 1e-11 }
+    }
+}
+
+/// A flat piece of a patch: the patch and its parameter window.
+#[derive(Clone, Copy, Debug)]
+struct Piece {
+    patch: usize,
+    u: [f64; 2],
+    v: [f64; 2],
+}
+
+/// Bézier patches ready for ray tracing: flat pieces in a BVH, Newton on the exact patches.
+#[derive(Clone, Debug)]
+pub struct BezierObject {
+    patches: Vec<BezierPatch<DVec3>>,
+    /// Global (u, v) window of each patch (for a harmonic surface's patches), else [0, 1]².
+    windows: Vec<([f64; 2], [f64; 2])>,
+    colors: Vec<[f32; 3]>,
+    pieces: Vec<Piece>,
+    /// Control boxes of the pieces.
+    boxes: Vec<(DVec3, DVec3)>,
+    /// Normal cones of the pieces (`None` where a normal is undefined or the cone is too wide).
+    cones: Vec<Option<Cone>>,
+    bvh: Bvh,
+    settings: BezierSettings,
+    /// The absolute Newton tolerance.
+    tolerance: f64,
+    /// Bound on the coordinates, for the evaluation error.
+    magnitude: f64,
+}
+
+impl BezierObject {
+    /// The patches, coloured one colour each by [`patch_color`], with their own parameters.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::EmptyScene`] for no patches, [`Error::InvalidValue`] or [`Error::NonFinite`] for
+    /// bad settings.
+    pub fn try_new(
+        patches: Vec<BezierPatch<DVec3>>,
+        settings: &BezierSettings,
+    ) -> Result<Self, Error> {
+        let windows = vec![([0.0, 1.0], [0.0, 1.0]); patches.len()];
+        Self::build(patches, windows, settings)
+    }
+
+    /// The patches of a harmonic surface (§5.7), coloured by [`patch_color`]; hits report the
+    /// surface's (u, v).
+    ///
+    /// # Errors
+    ///
+    /// As [`BezierObject::try_new`].
+    pub fn from_surface(
+        surface: &SurfaceBezier<DVec3>,
+        settings: &BezierSettings,
+    ) -> Result<Self, Error> {
+        let windows = (0..surface.patches.len()).map(|i| surface.window(i)).collect();
+        Self::build(surface.patches.clone(), windows, settings)
+    }
+
+    fn build(
+        patches: Vec<BezierPatch<DVec3>>,
+        windows: Vec<([f64; 2], [f64; 2])>,
+        settings: &BezierSettings,
+    ) -> Result<Self, Error> {
+        if patches.is_empty() {
+            return Err(Error::EmptyScene);
+        }
+        check_positive("Bézier flatness", settings.flatness)?;
+        check_positive("Bézier tolerance", settings.tolerance)?;
+        if settings.max_depth > 12 || settings.max_ray_depth > 12 {
+            return Err(Error::InvalidValue {
+                what: "Bézier subdivision depth",
+                value: f64::from(settings.max_depth.max(settings.max_ray_depth)),
+                expected: "at most 12",
+            });
+        }
+        let mut pieces = Vec::new();
+        let mut boxes = Vec::new();
+        let mut magnitude: f64 = 0.0;
+        for (i, patch) in patches.iter().enumerate() {
+            for p in patch.control_points() {
+                magnitude = magnitude.max(p.abs().max_element());
+            }
+            split_flat(patch, i, [0.0, 1.0], [0.0, 1.0], 0, settings, &mut pieces, &mut boxes);
+        }
+        let bvh = Bvh::build(&boxes);
+        let cones = pieces.iter().map(|p| normal_cone(&patches[p.patch], p.u, p.v)).collect();
+        let (lo, hi) = bvh.bounds();
+        let tolerance = settings.tolerance * ((hi - lo).length() + magnitude);
+        let colors = (0..patches.len()).map(patch_color).collect();
+        Ok(BezierObject {
+            patches,
+            windows,
+            colors,
+            pieces,
+            boxes,
+            cones,
+            bvh,
+            settings: *settings,
+            tolerance,
+            magnitude,
+        })
+    }
+
+    /// The same patches with one colour (linear RGB) for all of them.
+    #[must_use]
+    pub fn with_uniform_color(mut self, color: [f32; 3]) -> Self {
+        self.colors = vec![color; self.patches.len()];
+        self
+    }
+
+    /// Number of patches.
+    #[must_use]
+    pub fn n_patches(&self) -> usize {
+        self.patches.len()
+    }
+
+    /// Number of flat pieces in the BVH.
+    #[must_use]
+    pub fn n_pieces(&self) -> usize {
+        self.pieces.len()
+    }
+
+    /// The box of the patches (padded).
+    #[must_use]
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        self.bvh.bounds()
+    }
+
+    /// The nearest hit: (patch, local u, local v, t).
+    #[must_use]
+    pub fn intersect(&self, ray: &Ray) -> Option<BezierHit> {
+        self.bvh
+            .traverse(ray, |i, t_max| {
+                let r = ray.with_t_max(t_max);
+                self.intersect_piece(&r, self.pieces[i], Some(self.boxes[i]), self.cones[i], 0)
+                    .map(|h| (h.t, h))
+            })
+            .map(|(_, h)| h)
+    }
+
+    /// The nearest hit in `piece`. If the ray is transversal to the piece's normal cone it meets
+    /// the piece at most once, and Newton from the centre finds that root; otherwise (a grazing
+    /// ray, which may cross the piece twice), or if Newton fails, the sub-pieces are searched.
+    fn intersect_piece(
+        &self,
+        ray: &Ray,
+        piece: Piece,
+        bounds: Option<(DVec3, DVec3)>,
+        cone: Option<Cone>,
+        depth: u32,
+    ) -> Option<BezierHit> {
+        let patch = &self.patches[piece.patch];
+        let (lo, hi) = bounds.unwrap_or_else(|| {
+            let bb = patch
+                .subpatch(piece.u[0], piece.u[1], piece.v[0], piece.v[1])
+                .control_bounding_box();
+            (bb.min, bb.max)
+        });
+        let pad = self.tolerance * 4.0;
+        let (t0, t1) = slab(ray, lo - pad, hi + pad, ray.t_min, ray.t_max)?;
+        let dir = ray.dir.normalize();
+        let transversal = cone.is_some_and(|c| c.axis.dot(dir).abs() > c.sin_half);
+        let first = self.newton(ray, piece, 0.5 * (t0 + t1));
+        let mut best = match first {
+            Newton::Hit(h) => Some(h),
+            Newton::Outside if transversal => return None,
+            _ => None,
+        };
+        if (transversal && best.is_some()) || depth >= self.settings.max_ray_depth {
+            return best;
+        }
+        let (um, vm) = (0.5 * (piece.u[0] + piece.u[1]), 0.5 * (piece.v[0] + piece.v[1]));
+        for (u, v) in [
+            ([piece.u[0], um], [piece.v[0], vm]),
+            ([um, piece.u[1]], [piece.v[0], vm]),
+            ([piece.u[0], um], [vm, piece.v[1]]),
+            ([um, piece.u[1]], [vm, piece.v[1]]),
+        ] {
+            let t_max = best.map_or(ray.t_max, |b| b.t);
+            let sub = Piece { patch: piece.patch, u, v };
+            let cone = normal_cone(patch, u, v);
+            if let Some(h) =
+                self.intersect_piece(&ray.with_t_max(t_max), sub, None, cone, depth + 1)
+            {
+                best = Some(h);
+            }
+        }
+        best
+    }
+
+    /// Newton's method in (u, v, t) from the centre of `piece`, accepted if it converges inside
+    /// the piece (to 1e-9 of its width) with t in range.
+    fn newton(&self, ray: &Ray, piece: Piece, t_start: f64) -> Newton {
+        let patch = &self.patches[piece.patch];
+        let (wu, wv) = (piece.u[1] - piece.u[0], piece.v[1] - piece.v[0]);
+        let (mut u, mut v, mut t) =
+            (0.5 * (piece.u[0] + piece.u[1]), 0.5 * (piece.v[0] + piece.v[1]), t_start);
+        // Iterations after the residual first fell below the tolerance: Newton converges
+        // quadratically there, so these bring it to rounding level, and the hit's error bound
+        // (which offsets shadow rays) can be that small.
+        let mut polish = 0;
+        let mut last = f64::INFINITY;
+        for _ in 0..32 {
+            let (s, su, sv) = eval(patch, u, v);
+            let f = s - ray.point_at(t);
+            let residual = f.length();
+            if residual <= self.tolerance {
+                polish += 1;
+            }
+            if residual <= self.tolerance
+                && (polish > 3 || residual >= 0.5 * last || residual == 0.0)
+            {
+                let slack_u = 1e-9 * wu;
+                let slack_v = 1e-9 * wv;
+                let inside = u >= piece.u[0] - slack_u
+                    && u <= piece.u[1] + slack_u
+                    && v >= piece.v[0] - slack_v
+                    && v <= piece.v[1] + slack_v;
+                if !inside || t < ray.t_min || t > ray.t_max {
+                    return Newton::Outside;
+                }
+                let error = DVec3::splat(f.length())
+                    + DVec3::splat(gamma(64) * self.magnitude)
+                    + ray.dir.abs() * (t.abs() * gamma(2));
+                return Newton::Hit(BezierHit {
+                    patch: piece.patch,
+                    u: u.clamp(0.0, 1.0),
+                    v: v.clamp(0.0, 1.0),
+                    t,
+                    point: s,
+                    error,
+                    tangents: (su, sv),
+                });
+            }
+            last = residual;
+            // J·(du, dv, dt) = −F with J = [S_u, S_v, −d], by Cramer's rule.
+            let nd = -ray.dir;
+            let det = su.dot(sv.cross(nd));
+            if det == 0.0 || !det.is_finite() {
+                return Newton::Failed;
+            }
+            let rhs = -f;
+            let du = rhs.dot(sv.cross(nd)) / det;
+            let dv = su.dot(rhs.cross(nd)) / det;
+            let dt = su.dot(sv.cross(rhs)) / det;
+            u += du;
+            v += dv;
+            t += dt;
+            // Far outside the piece: this piece's Newton has failed.
+            if u < piece.u[0] - wu
+                || u > piece.u[1] + wu
+                || v < piece.v[0] - wv
+                || v > piece.v[1] + wv
+            {
+                return Newton::Outside;
+            }
+        }
+        Newton::Failed
+    }
+
+    /// Shading data of a hit: point, error, normal (geometric = shading), global (u, v), colour.
+    pub(crate) fn surface_at(&self, h: &BezierHit) -> (DVec3, DVec3, DVec3, (f64, f64), [f32; 3]) {
+        let (su, sv) = h.tangents;
+        let patch = &self.patches[h.patch];
+        let normal = su.cross(sv).try_normalize().unwrap_or_else(|| {
+            // A collapsed edge or corner: the normal a little inside the patch.
+            let (u, v) = (0.5 + 0.999 * (h.u - 0.5), 0.5 + 0.999 * (h.v - 0.5));
+            let (_, a, b) = eval(patch, u, v);
+            a.cross(b).try_normalize().unwrap_or(DVec3::Z)
+        });
+        let (wu, wv) = self.windows[h.patch];
+        let uv = (wu[0] + h.u * (wu[1] - wu[0]), wv[0] + h.v * (wv[1] - wv[0]));
+        (h.point, h.error, normal, uv, self.colors[h.patch])
+    }
+}
+
+/// What Newton's method found from the centre of a piece.
+enum Newton {
+    /// A root inside the piece.
+    Hit(BezierHit),
+    /// A root outside the piece, or the iteration left it.
+    Outside,
+    /// No convergence (or a singular Jacobian).
+    Failed,
+}
+
+/// A cone holding the unit normals of a piece: its axis and the sine of its half-angle.
+#[derive(Clone, Copy, Debug)]
+struct Cone {
+    axis: DVec3,
+    sin_half: f64,
+}
+
+/// The normal cone of the piece (`u`, `v`) of `patch`, from its normals on a 5 × 5 grid, the
+/// half-angle widened by half and by 0.05 rad for the normals between the samples; `None` where
+/// a normal is undefined or the cone reaches a half-angle of 80°.
+fn normal_cone(patch: &BezierPatch<DVec3>, u: [f64; 2], v: [f64; 2]) -> Option<Cone> {
+    let mut normals = [DVec3::ZERO; 25];
+    for (i, n) in normals.iter_mut().enumerate() {
+        let s = u[0] + (u[1] - u[0]) * (i / 5) as f64 / 4.0;
+        let t = v[0] + (v[1] - v[0]) * (i % 5) as f64 / 4.0;
+        let (_, su, sv) = eval(patch, s, t);
+        *n = su.cross(sv).try_normalize()?;
+    }
+    let axis = normals.iter().copied().sum::<DVec3>().try_normalize()?;
+    let half = normals.iter().map(|n| n.dot(axis).clamp(-1.0, 1.0).acos()).fold(0.0, f64::max);
+    let widened = 1.5 * half + 0.05;
+    (widened < 80f64.to_radians()).then(|| Cone { axis, sin_half: widened.sin() })
+}
+
+/// A hit on a Bézier patch.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BezierHit {
+    /// Index of the patch.
+    pub patch: usize,
+    /// Local parameter u in [0, 1].
+    pub u: f64,
+    /// Local parameter v in [0, 1].
+    pub v: f64,
+    /// Ray parameter.
+    pub t: f64,
+    /// The point S(u, v).
+    pub point: DVec3,
+    /// Error bound of `point`, per coordinate.
+    pub error: DVec3,
+    /// (Sᵤ, Sᵥ) at the hit.
+    pub tangents: (DVec3, DVec3),
+}
+
+/// Splits `patch` over the window (`u`, `v`) until flat, collecting the pieces and their control
+/// boxes.
+#[expect(clippy::too_many_arguments, reason = "a private recursive helper")]
+fn split_flat(
+    patch: &BezierPatch<DVec3>,
+    index: usize,
+    u: [f64; 2],
+    v: [f64; 2],
+    depth: u32,
+    settings: &BezierSettings,
+    pieces: &mut Vec<Piece>,
+    boxes: &mut Vec<(DVec3, DVec3)>,
+) {
+    let sub = patch.subpatch(u[0], u[1], v[0], v[1]);
+    let bb = sub.control_bounding_box();
+    if depth >= settings.max_depth || is_flat(&sub, settings.flatness) {
+        pieces.push(Piece { patch: index, u, v });
+        boxes.push((bb.min, bb.max));
+        return;
+    }
+    let (um, vm) = (0.5 * (u[0] + u[1]), 0.5 * (v[0] + v[1]));
+    for (a, b) in [
+        ([u[0], um], [v[0], vm]),
+        ([um, u[1]], [v[0], vm]),
+        ([u[0], um], [vm, v[1]]),
+        ([um, u[1]], [vm, v[1]]),
+    ] {
+        split_flat(patch, index, a, b, depth + 1, settings, pieces, boxes);
+    }
+}
+
+/// Whether every control point lies within `flatness`·diagonal of the bilinear patch of the
+/// corners at its Greville parameters.
+fn is_flat(p: &BezierPatch<DVec3>, flatness: f64) -> bool {
+    let (m, n) = (p.degree_u(), p.degree_v());
+    let pts = p.control_points();
+    let at = |j: usize, k: usize| pts[j * (n + 1) + k];
+    let (c00, c01, c10, c11) = (at(0, 0), at(0, n), at(m, 0), at(m, n));
+    let bb = p.control_bounding_box();
+    let diag = (bb.max - bb.min).length();
+    let limit = flatness * diag;
+    for j in 0..=m {
+        let s = if m == 0 { 0.0 } else { j as f64 / m as f64 };
+        for k in 0..=n {
+            let t = if n == 0 { 0.0 } else { k as f64 / n as f64 };
+            let bilinear =
+                (c00 * (1.0 - t) + c01 * t) * (1.0 - s) + (c10 * (1.0 - t) + c11 * t) * s;
+            if (at(j, k) - bilinear).length() > limit {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Bernstein values and derivatives of degree `n` at `t`, into `b` and `db` (n + 1 entries).
+fn bernstein(n: usize, t: f64, b: &mut [f64], db: &mut [f64]) {
+    let s = 1.0 - t;
+    b[0] = 1.0;
+    for k in 1..=n {
+        if k == n {
+            // Derivative from degree n − 1: n·(B_{i−1} − B_i).
+            for i in 0..=n {
+                let left = if i > 0 { b[i - 1] } else { 0.0 };
+                let right = if i < n { b[i] } else { 0.0 };
+                db[i] = n as f64 * (left - right);
+            }
+        }
+        b[k] = t * b[k - 1];
+        for i in (1..k).rev() {
+            b[i] = s * b[i] + t * b[i - 1];
+        }
+        b[0] *= s;
+    }
+    if n == 0 {
+        db[0] = 0.0;
+    }
+}
+
+/// S(u, v), Sᵤ, Sᵥ of a patch.
+pub(crate) fn eval(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
+    let (m, n) = (p.degree_u(), p.degree_v());
+    if m > MAX_FAST_DEGREE || n > MAX_FAST_DEGREE {
+        return p.eval_with_partials(u, v);
+    }
+    let mut bu = [0.0; MAX_FAST_DEGREE + 1];
+    let mut dbu = [0.0; MAX_FAST_DEGREE + 1];
+    let mut bv = [0.0; MAX_FAST_DEGREE + 1];
+    let mut dbv = [0.0; MAX_FAST_DEGREE + 1];
+    bernstein(m, u, &mut bu, &mut dbu);
+    bernstein(n, v, &mut bv, &mut dbv);
+    let pts = p.control_points();
+    let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+    for j in 0..=m {
+        let row = &pts[j * (n + 1)..(j + 1) * (n + 1)];
+        let (mut r, mut rv) = (DVec3::ZERO, DVec3::ZERO);
+        for (k, x) in row.iter().enumerate() {
+            r += *x * bv[k];
+            rv += *x * dbv[k];
+        }
+        s += r * bu[j];
+        su += r * dbu[j];
+        sv += rv * bu[j];
+    }
+    (s, su, sv)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fast_evaluation_matches_hi_bezier() {
+        let rows: Vec<Vec<DVec3>> = (0..4)
+            .map(|j| {
+                (0..3).map(|k| DVec3::new(j as f64, k as f64, ((j * 3 + k) as f64).sin())).collect()
+            })
+            .collect();
+        let p = BezierPatch::new(rows);
+        for (u, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 0.5), (0.9, 1.0)] {
+            let (a, b, c) = eval(&p, u, v);
+            let (x, y, z) = p.eval_with_partials(u, v);
+            assert!((a - x).length() < 1e-13 && (b - y).length() < 1e-13, "{u} {v}");
+            assert!((c - z).length() < 1e-13, "{u} {v}");
+        }
+    }
+}

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+//! The bounding volume hierarchy every object uses to find candidate primitives along a ray
+//! (Hardy 2005, §5.6: "a bounding volume hierarchy … can also be used"): an `obvhs` BVH over
+//! f32 boxes, with f64 geometry on both sides of it.
+//!
+//! The f64 boxes are rounded outward to f32 and padded by a small fraction of the size of the
+//! whole object, which covers the error of the f32 traversal: before traversal the ray's origin is
+//! moved (in f64) to where it enters the object's box, so the f32 origin is near the object and
+//! its rounding is relative to the object's size, not to the camera's distance.
+
+use std::time::Duration;
+
+use glam::{DVec3, Vec3A};
+use obvhs::BvhBuildParams;
+use obvhs::aabb::Aabb;
+use obvhs::bvh2::Bvh2;
+use obvhs::bvh2::builder::build_bvh2;
+use obvhs::ray::{Ray as BvhRay, RayHit};
+
+use crate::ray::Ray;
+
+/// Boxes are padded by this fraction of the object's size (its box diagonal plus its largest
+/// coordinate magnitude).
+const PAD: f64 = 1e-6;
+
+/// A BVH over f64 boxes of primitives.
+#[derive(Clone)]
+pub(crate) struct Bvh {
+    bvh: Bvh2,
+    /// The box of all primitives (f64, padded).
+    lo: DVec3,
+    hi: DVec3,
+}
+
+impl std::fmt::Debug for Bvh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Bvh")
+            .field("n_primitives", &self.bvh.primitive_indices.len())
+            .field("lo", &self.lo)
+            .field("hi", &self.hi)
+            .finish()
+    }
+}
+
+/// f32 below (or at) `x`.
+fn down(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) > x { f.next_down() } else { f }
+}
+
+/// f32 above (or at) `x`.
+fn up(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) < x { f.next_up() } else { f }
+}
+
+impl Bvh {
+    /// The BVH over the boxes (`lo`, `hi`), given in f64; `boxes` must not be empty.
+    pub(crate) fn build(boxes: &[(DVec3, DVec3)]) -> Self {
+        let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+        for (a, b) in boxes {
+            lo = lo.min(*a);
+            hi = hi.max(*b);
+        }
+        let size = (hi - lo).length() + lo.abs().max(hi.abs()).max_element();
+        let pad = PAD * size;
+        let f32_boxes: Vec<Aabb> = boxes
+            .iter()
+            .map(|(a, b)| {
+                let (a, b) = (*a - pad, *b + pad);
+                Aabb::new(
+                    Vec3A::new(down(a.x), down(a.y), down(a.z)),
+                    Vec3A::new(up(b.x), up(b.y), up(b.z)),
+                )
+            })
+            .collect();
+        let bvh = build_bvh2(&f32_boxes, BvhBuildParams::fast_build(), &mut Duration::default());
+        Bvh { bvh, lo: lo - 2.0 * pad, hi: hi + 2.0 * pad }
+    }
+
+    /// The f64 box of everything, padded.
+    pub(crate) fn bounds(&self) -> (DVec3, DVec3) {
+        (self.lo, self.hi)
+    }
+
+    /// Calls `test(primitive, t_max)` for the primitives whose boxes the ray may meet, nearest
+    /// boxes first as far as the traversal orders them, where `t_max` is the nearest hit so far
+    /// (or the ray's `t_max`); `test` returns the parameter of its hit, if any, below `t_max`.
+    /// Returns the nearest hit parameter and what `test` attached to it.
+    pub(crate) fn traverse<T>(
+        &self,
+        ray: &Ray,
+        mut test: impl FnMut(usize, f64) -> Option<(f64, T)>,
+    ) -> Option<(f64, T)> {
+        let (t0, t1) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max)?;
+        // Start the f32 ray where it enters the object's box.
+        let shift = t0;
+        let o = ray.point_at(shift);
+        let d = ray.dir;
+        let bray = BvhRay::new(
+            Vec3A::new(o.x as f32, o.y as f32, o.z as f32),
+            Vec3A::new(d.x as f32, d.y as f32, d.z as f32),
+            0.0,
+            up(t1 - shift),
+        );
+        let mut best: Option<(f64, T)> = None;
+        let indices = &self.bvh.primitive_indices;
+        let mut hit = RayHit::none();
+        self.bvh.ray_traverse(bray, &mut hit, |_, id| {
+            let t_max = best.as_ref().map_or(ray.t_max, |b| b.0);
+            match test(indices[id] as usize, t_max) {
+                Some((t, data)) if t < t_max => {
+                    best = Some((t, data));
+                    up(t - shift).next_up()
+                }
+                _ => f32::INFINITY,
+            }
+        });
+        best
+    }
+}
+
+/// The parameter range [t0, t1] ∩ [`t_min`, `t_max`] where the ray is inside the box, by the
+/// slab method in f64, widened by a relative 1e-12 against rounding; `None` if empty.
+pub(crate) fn slab(ray: &Ray, lo: DVec3, hi: DVec3, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
+    let (mut t0, mut t1) = (t_min, t_max);
+    for i in 0..3 {
+        let (o, d) = (ray.origin[i], ray.dir[i]);
+        if d == 0.0 {
+            if o < lo[i] || o > hi[i] {
+                return None;
+            }
+            continue;
+        }
+        let inv = 1.0 / d;
+        let (mut a, mut b) = ((lo[i] - o) * inv, (hi[i] - o) * inv);
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        let slack = 1e-12 * (a.abs().max(b.abs()) + (hi[i] - lo[i]).abs() * inv.abs());
+        t0 = t0.max(a - slack);
+        t1 = t1.min(b + slack);
+        if t0 > t1 {
+            return None;
+        }
+    }
+    Some((t0, t1))
+}

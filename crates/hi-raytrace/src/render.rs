@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: MIT
+//! The renderer (Hardy 2005, §5.5, §5.6): rays through the pixels, supersampled, shaded in linear
+//! light and written as sRGB PNG; tiles in parallel.
+//!
+//! **Determinism.** Every pixel's samples come from a fixed pattern — the pixel centre for one
+//! sample, otherwise a Hammersley set rotated per pixel by a hash of the pixel's position (a
+//! fixed seed) — and each pixel is computed by one thread from its own samples, so a render is
+//! the same, byte for byte, whatever the number of threads and the order they run in.
+
+use std::io::Write;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use hi_surface::linear_to_srgb;
+use image::{ImageFormat, RgbImage};
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::error::Error;
+use crate::scene::Scene;
+
+/// Largest width or height accepted.
+pub const MAX_SIZE: u32 = 1 << 14;
+
+/// Most samples per pixel accepted.
+pub const MAX_SAMPLES: u32 = 1024;
+
+/// Image size and sampling.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RenderSettings {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Samples per pixel (1 = the pixel centre).
+    pub samples_per_pixel: u32,
+    /// Side of the square tiles rendered in parallel.
+    pub tile_size: u32,
+}
+
+impl Default for RenderSettings {
+    /// 512 × 512, 4 samples per pixel, 16-pixel tiles.
+    fn default() -> Self {
+        RenderSettings { width: 512, height: 512, samples_per_pixel: 4, tile_size: 16 }
+    }
+}
+
+/// How many rays a render cast.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RayCounts {
+    /// Rays from the eye.
+    pub camera: usize,
+    /// Rays towards lights.
+    pub shadow: usize,
+    /// Camera rays that met an object.
+    pub hits: usize,
+    /// Camera-ray hits where a light in front of the surface was blocked.
+    pub shadowed: usize,
+}
+
+/// A finished render: the sRGB image, ray counts and the time taken.
+#[derive(Clone, Debug)]
+pub struct Rendering {
+    /// The image, 8-bit sRGB.
+    pub image: RgbImage,
+    /// The rays cast.
+    pub counts: RayCounts,
+    /// Wall-clock time of the render.
+    pub elapsed: Duration,
+}
+
+impl Rendering {
+    /// The image as PNG bytes.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Image`] if encoding fails.
+    pub fn png_bytes(&self) -> Result<Vec<u8>, Error> {
+        let mut out = std::io::Cursor::new(Vec::new());
+        self.image.write_to(&mut out, ImageFormat::Png).map_err(|e| Error::Image(e.to_string()))?;
+        Ok(out.into_inner())
+    }
+
+    /// Writes the image as PNG to `w`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Image`] if encoding or writing fails.
+    pub fn write_png<W: Write>(&self, mut w: W) -> Result<(), Error> {
+        let bytes = self.png_bytes()?;
+        w.write_all(&bytes).map_err(|e| Error::Image(e.to_string()))
+    }
+}
+
+/// A progress report: tiles finished and tiles in all.
+pub type Progress<'a> = &'a (dyn Fn(usize, usize) + Sync);
+
+/// Checks the settings against the limits.
+fn check_settings(settings: &RenderSettings) -> Result<(), Error> {
+    let (w, h) = (settings.width, settings.height);
+    if w == 0 || h == 0 {
+        return Err(Error::ZeroSizeImage { width: w, height: h });
+    }
+    for (what, value) in [("image width", w), ("image height", h)] {
+        if value > MAX_SIZE {
+            return Err(Error::InvalidValue {
+                what,
+                value: f64::from(value),
+                expected: "at most 16384",
+            });
+        }
+    }
+    if !(1..=MAX_SAMPLES).contains(&settings.samples_per_pixel) {
+        return Err(Error::InvalidValue {
+            what: "samples per pixel",
+            value: f64::from(settings.samples_per_pixel),
+            expected: "1 to 1024",
+        });
+    }
+    if settings.tile_size == 0 {
+        return Err(Error::InvalidValue { what: "tile size", value: 0.0, expected: "at least 1" });
+    }
+    Ok(())
+}
+
+/// `SplitMix64`: a fixed, well-mixed hash.
+fn mix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// The base-2 radical inverse of `i` (van der Corput).
+fn radical_inverse(i: u32) -> f64 {
+    f64::from(i.reverse_bits()) / 4_294_967_296.0
+}
+
+/// Sample `s` of `n` in pixel (`x`, `y`), as an offset in [0, 1)² within the pixel.
+fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
+    if n == 1 {
+        return (0.5, 0.5);
+    }
+    let h = mix((u64::from(x) << 32) ^ u64::from(y) ^ 0x5EED_2005);
+    let (rx, ry) =
+        ((h >> 11) as f64 / (1u64 << 53) as f64, (mix(h) >> 11) as f64 / (1u64 << 53) as f64);
+    let a = ((f64::from(s) + 0.5) / f64::from(n) + rx).fract();
+    let b = (radical_inverse(s) + ry).fract();
+    (a, b)
+}
+
+/// Renders `scene` through `camera`. `progress`, if given, is called after each tile with the
+/// tiles finished and the total.
+///
+/// # Errors
+///
+/// [`Error::ZeroSizeImage`] for a width or height of 0; [`Error::InvalidValue`] for a size above
+/// [`MAX_SIZE`], samples per pixel outside 1..=[`MAX_SAMPLES`] or a zero tile size.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_raytrace::*;
+///
+/// let torus = HarmonicObject::try_new(hi_surface::torus(2.0, 0.5), &HarmonicSettings::default())?;
+/// let light = Light::Directional { direction: DVec3::new(1.0, 1.0, 2.0), intensity: [1.0; 3] };
+/// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(torus))], vec![light], [0.1; 3])?;
+/// let camera = Camera::try_new(DVec3::new(0.0, -6.0, 4.0), DVec3::ZERO, DVec3::Z, 0.7)?;
+/// let settings = RenderSettings { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8 };
+/// let out = render(&scene, &camera, &settings, None)?;
+/// assert_eq!(out.image.dimensions(), (24, 16));
+/// assert_eq!(out.counts.camera, 24 * 16);
+/// assert!(out.counts.hits > 0);
+/// # Ok::<(), hi_raytrace::Error>(())
+/// ```
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &RenderSettings,
+    progress: Option<Progress<'_>>,
+) -> Result<Rendering, Error> {
+    check_settings(settings)?;
+    let start = Instant::now();
+    let (w, h, ts) = (settings.width, settings.height, settings.tile_size);
+    let (nx, ny) = (w.div_ceil(ts), h.div_ceil(ts));
+    let n_tiles = (nx * ny) as usize;
+    let done = AtomicUsize::new(0);
+    let aspect = f64::from(w) / f64::from(h);
+    let spp = settings.samples_per_pixel;
+    let background = scene.background();
+    let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = (0..n_tiles)
+        .into_par_iter()
+        .map(|tile| {
+            let (tx, ty) = (tile as u32 % nx, tile as u32 / nx);
+            let (x0, y0) = (tx * ts, ty * ts);
+            let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
+            let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+            let mut counts = RayCounts::default();
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    let mut sum = [0.0f64; 3];
+                    for s in 0..spp {
+                        let (ox, oy) = sample_offset(x, y, s, spp);
+                        let ray = camera.ray(
+                            (f64::from(x) + ox) / f64::from(w),
+                            (f64::from(y) + oy) / f64::from(h),
+                            aspect,
+                        );
+                        counts.camera += 1;
+                        let color = match scene.intersect(&ray) {
+                            Some(hit) => {
+                                counts.hits += 1;
+                                let (c, n_shadow, blocked) = scene.shade(&ray, &hit);
+                                counts.shadow += n_shadow;
+                                counts.shadowed += usize::from(blocked);
+                                c
+                            }
+                            None => background,
+                        };
+                        for k in 0..3 {
+                            sum[k] += f64::from(color[k]);
+                        }
+                    }
+                    let px = sum.map(|c| {
+                        let linear = (c / f64::from(spp)).clamp(0.0, 1.0) as f32;
+                        (linear_to_srgb(linear) * 255.0).round().clamp(0.0, 255.0) as u8
+                    });
+                    pixels.push(px);
+                }
+            }
+            let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
+            if let Some(report) = progress {
+                report(finished, n_tiles);
+            }
+            (x0, y0, pixels, counts)
+        })
+        .collect();
+    let mut image = RgbImage::new(w, h);
+    let mut counts = RayCounts::default();
+    for (x0, y0, pixels, c) in tiles {
+        let tw = (x0 + ts).min(w) - x0;
+        for (i, px) in pixels.into_iter().enumerate() {
+            let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
+            image.put_pixel(x, y, image::Rgb(px));
+        }
+        counts.camera += c.camera;
+        counts.shadow += c.shadow;
+        counts.hits += c.hits;
+        counts.shadowed += c.shadowed;
+    }
+    Ok(Rendering { image, counts, elapsed: start.elapsed() })
+}

@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: MIT
+//! Scenes (Hardy 2005, §5.6, figure 5.26: "the torus … was raytraced along with a few other
+//! objects"): objects of three kinds — triangle meshes, Bézier patches, harmonic surfaces —
+//! with materials, directional and point lights, Blinn–Phong shading and shadow rays.
+
+use glam::DVec3;
+
+use crate::bezier::BezierObject;
+use crate::error::{Error, check_finite};
+use crate::harmonic::HarmonicObject;
+use crate::mesh::MeshObject;
+use crate::ray::{Hit, Ray, offset_ray_origin};
+
+/// The geometry of an object.
+#[derive(Clone, Debug)]
+pub enum Geometry {
+    /// A triangle mesh in a BVH.
+    Mesh(MeshObject),
+    /// Bézier patches in a BVH.
+    Bezier(BezierObject),
+    /// A harmonic surface, intersected by interval methods.
+    Harmonic(HarmonicObject),
+}
+
+impl Geometry {
+    /// The box of the geometry.
+    #[must_use]
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        match self {
+            Geometry::Mesh(m) => m.bounds(),
+            Geometry::Bezier(b) => b.bounds(),
+            Geometry::Harmonic(h) => h.bounds(),
+        }
+    }
+}
+
+/// How a surface reflects light (Blinn–Phong): the colour of a mesh without vertex colours,
+/// and the diffuse and specular weights.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// Colour (linear RGB) of meshes without vertex colours; Bézier patches and harmonic surfaces
+    /// carry their own colours.
+    pub color: [f32; 3],
+    /// Weight of the Lambert term.
+    pub diffuse: f32,
+    /// Weight of the specular term.
+    pub specular: f32,
+    /// Blinn–Phong exponent.
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    /// Light grey, diffuse 0.85, specular 0.25, shininess 40.
+    fn default() -> Self {
+        Material { color: [0.7, 0.7, 0.7], diffuse: 0.85, specular: 0.25, shininess: 40.0 }
+    }
+}
+
+/// An object of a scene.
+#[derive(Clone, Debug)]
+pub struct SceneObject {
+    /// Its geometry.
+    pub geometry: Geometry,
+    /// Its material.
+    pub material: Material,
+}
+
+impl SceneObject {
+    /// The geometry with the default material.
+    #[must_use]
+    pub fn new(geometry: Geometry) -> Self {
+        SceneObject { geometry, material: Material::default() }
+    }
+}
+
+/// A light source; intensities are linear RGB.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Light {
+    /// Light from a direction (the sun).
+    Directional {
+        /// Direction towards the light (need not be unit length).
+        direction: DVec3,
+        /// Irradiance on a surface facing the light.
+        intensity: [f32; 3],
+    },
+    /// Light from a point, falling off with the squared distance.
+    Point {
+        /// Position of the light.
+        position: DVec3,
+        /// Radiant intensity: the irradiance at distance 1.
+        intensity: [f32; 3],
+    },
+}
+
+/// Objects, lights and background.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_raytrace::{Geometry, HarmonicObject, HarmonicSettings, Light, Ray, Scene, SceneObject};
+///
+/// let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicSettings::default())?;
+/// let light = Light::Directional { direction: DVec3::Z, intensity: [1.0; 3] };
+/// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(sphere))], vec![light], [0.0; 3])?;
+/// let hit = scene.intersect(&Ray::new(DVec3::new(0.6, 0.0, 3.0), -DVec3::Z)).unwrap();
+/// assert!((hit.t - (3.0 - 0.8)).abs() < 1e-9); // z = √(1 − 0.6²) = 0.8
+/// assert!(Scene::try_new(vec![], vec![], [0.0; 3]).is_err()); // no objects
+/// # Ok::<(), hi_raytrace::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Scene {
+    // Invariant: at least one object; lights and colours finite.
+    objects: Vec<SceneObject>,
+    lights: Vec<Light>,
+    background: [f32; 3],
+    ambient: [f32; 3],
+}
+
+/// Ambient light of a new scene (linear RGB).
+const DEFAULT_AMBIENT: [f32; 3] = [0.08, 0.08, 0.08];
+
+/// `Ok` if all components are finite and non-negative.
+fn check_color(what: &'static str, c: [f32; 3]) -> Result<(), Error> {
+    if c.iter().all(|x| x.is_finite()) {
+        if let Some(&x) = c.iter().find(|x| **x < 0.0) {
+            return Err(Error::InvalidValue {
+                what,
+                value: f64::from(x),
+                expected: "non-negative",
+            });
+        }
+        Ok(())
+    } else {
+        Err(Error::NonFinite { what })
+    }
+}
+
+impl Scene {
+    /// A scene of `objects` lit by `lights` in front of `background` (linear RGB).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::EmptyScene`] for no objects; [`Error::NonFinite`] or [`Error::InvalidValue`] for
+    /// a light, colour or material that is not finite or is negative, or a zero light direction.
+    pub fn try_new(
+        objects: Vec<SceneObject>,
+        lights: Vec<Light>,
+        background: [f32; 3],
+    ) -> Result<Self, Error> {
+        if objects.is_empty() {
+            return Err(Error::EmptyScene);
+        }
+        check_color("background colour", background)?;
+        for o in &objects {
+            let m = &o.material;
+            check_color("material colour", m.color)?;
+            check_color("material weights", [m.diffuse, m.specular, m.shininess])?;
+        }
+        for l in &lights {
+            match *l {
+                Light::Directional { direction, intensity } => {
+                    check_finite("light direction", direction)?;
+                    if direction.length_squared() == 0.0 {
+                        return Err(Error::InvalidValue {
+                            what: "length of light direction",
+                            value: 0.0,
+                            expected: "a non-zero vector",
+                        });
+                    }
+                    check_color("light intensity", intensity)?;
+                }
+                Light::Point { position, intensity } => {
+                    check_finite("light position", position)?;
+                    check_color("light intensity", intensity)?;
+                }
+            }
+        }
+        Ok(Scene { objects, lights, background, ambient: DEFAULT_AMBIENT })
+    }
+
+    /// The same scene with ambient light `ambient` (linear RGB).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NonFinite`] or [`Error::InvalidValue`] for a bad colour.
+    pub fn with_ambient(mut self, ambient: [f32; 3]) -> Result<Self, Error> {
+        check_color("ambient light", ambient)?;
+        self.ambient = ambient;
+        Ok(self)
+    }
+
+    /// The objects.
+    #[must_use]
+    pub fn objects(&self) -> &[SceneObject] {
+        &self.objects
+    }
+
+    /// The lights.
+    #[must_use]
+    pub fn lights(&self) -> &[Light] {
+        &self.lights
+    }
+
+    /// The background colour (linear RGB).
+    #[must_use]
+    pub fn background(&self) -> [f32; 3] {
+        self.background
+    }
+
+    /// The box of all objects.
+    #[must_use]
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        let mut lo = DVec3::splat(f64::INFINITY);
+        let mut hi = DVec3::splat(f64::NEG_INFINITY);
+        for o in &self.objects {
+            let (a, b) = o.geometry.bounds();
+            lo = lo.min(a);
+            hi = hi.max(b);
+        }
+        (lo, hi)
+    }
+
+    /// The nearest hit of `ray` on any object.
+    #[must_use]
+    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        for (index, object) in self.objects.iter().enumerate() {
+            let r = ray.with_t_max(best.map_or(ray.t_max, |b| b.t));
+            let hit = match &object.geometry {
+                Geometry::Mesh(m) => m.intersect(&r).map(|(tri, h)| {
+                    let (point, error, geometric, shading, color) = m.surface_at(tri, &h);
+                    Hit {
+                        t: h.t,
+                        point,
+                        error,
+                        geometric_normal: geometric,
+                        shading_normal: shading,
+                        uv: (h.b[1], h.b[2]),
+                        color: color.unwrap_or(object.material.color),
+                        object: index,
+                    }
+                }),
+                Geometry::Bezier(b) => b.intersect(&r).map(|h| {
+                    let (point, error, normal, uv, color) = b.surface_at(&h);
+                    Hit {
+                        t: h.t,
+                        point,
+                        error,
+                        geometric_normal: normal,
+                        shading_normal: normal,
+                        uv,
+                        color,
+                        object: index,
+                    }
+                }),
+                Geometry::Harmonic(s) => s.intersect(&r).map(|h| {
+                    let (point, normal, color) = s.surface_at(&r, &h);
+                    Hit {
+                        t: h.t,
+                        point,
+                        error: h.error,
+                        geometric_normal: normal,
+                        shading_normal: normal,
+                        uv: (h.u, h.v),
+                        color,
+                        object: index,
+                    }
+                }),
+            };
+            if let Some(h) = hit
+                && best.is_none_or(|b| h.t < b.t)
+            {
+                best = Some(h);
+            }
+        }
+        best
+    }
+
+    /// Whether anything lies on `ray` between its `t_min` and `t_max`.
+    #[must_use]
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        self.intersect(ray).is_some()
+    }
+
+    /// The light leaving `hit` towards the eye of `ray` (linear RGB), with the number of shadow
+    /// rays cast, and whether a light facing the surface was blocked.
+    pub(crate) fn shade(&self, ray: &Ray, hit: &Hit) -> ([f32; 3], usize, bool) {
+        let material = &self.objects[hit.object].material;
+        // Two-sided surfaces: the normals that face the viewer.
+        let (mut n, mut ng) = (hit.shading_normal, hit.geometric_normal);
+        if ng.dot(ray.dir) > 0.0 {
+            ng = -ng;
+        }
+        if n.dot(ng) < 0.0 {
+            n = -n;
+        }
+        let albedo = hit.color.map(f64::from);
+        let view = -ray.dir.normalize();
+        let mut out = [0.0f64; 3];
+        for k in 0..3 {
+            out[k] = f64::from(self.ambient[k]) * albedo[k];
+        }
+        let mut n_shadow = 0;
+        let mut blocked = false;
+        for light in &self.lights {
+            let (l, dist, intensity) = match *light {
+                Light::Directional { direction, intensity } => {
+                    (direction.normalize(), f64::INFINITY, intensity.map(f64::from))
+                }
+                Light::Point { position, intensity } => {
+                    let to = position - hit.point;
+                    let d = to.length();
+                    if d == 0.0 {
+                        continue;
+                    }
+                    let i = intensity.map(|x| f64::from(x) / (d * d));
+                    (to / d, d, i)
+                }
+            };
+            let cos = n.dot(l);
+            if cos <= 0.0 {
+                continue;
+            }
+            let origin = offset_ray_origin(hit.point, hit.error, ng, l);
+            let t_max = if dist.is_finite() {
+                (position_distance(origin, hit.point, l, dist)) * (1.0 - 1e-9)
+            } else {
+                f64::INFINITY
+            };
+            let shadow = Ray { origin, dir: l, t_min: 0.0, t_max };
+            n_shadow += 1;
+            if self.occluded(&shadow) {
+                blocked = true;
+                continue;
+            }
+            let h = (l + view).normalize_or_zero();
+            let spec = f64::from(material.specular)
+                * n.dot(h).max(0.0).powf(f64::from(material.shininess));
+            for k in 0..3 {
+                out[k] += intensity[k] * (f64::from(material.diffuse) * albedo[k] * cos + spec);
+            }
+        }
+        (out.map(|x| x as f32), n_shadow, blocked)
+    }
+}
+
+/// The distance from `origin` to the light at `dist` from `point` along `l`.
+fn position_distance(origin: DVec3, point: DVec3, l: DVec3, dist: f64) -> f64 {
+    (point + l * dist - origin).length()
+}
