@@ -161,7 +161,12 @@ pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String 
                     );
                 }
                 Format::Glb => {
-                    let _ = writeln!(s, "<p>{title}: glTF model <a href=\"{file}\">{file}</a></p>");
+                    let _ = writeln!(
+                        s,
+                        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption>{title}: glTF model \
+                         <a href=\"{file}\">{file}</a></figcaption></figure>",
+                        f.render_file(p)
+                    );
                 }
             }
         }
@@ -221,12 +226,8 @@ mod tests {
         let page = crate::project_root().join(super::super::OUT_DIR).join(GALLERY);
         let html = std::fs::read_to_string(&page).expect("the gallery is committed");
         let images = html.matches("<img ").count();
-        let panels: usize = super::super::registry()
-            .iter()
-            .filter(|f| matches!(f.format, Format::Svg | Format::Png))
-            .map(|f| f.panels.len())
-            .sum();
-        assert_eq!(images, panels, "one image per SVG or PNG panel");
+        let panels: usize = super::super::registry().iter().map(|f| f.panels.len()).sum();
+        assert_eq!(images, panels, "one image per panel (a model's is its render)");
         let profile =
             std::env::temp_dir().join(format!("harmonic-chromium-{}", std::process::id()));
         let output = Command::new(browser)

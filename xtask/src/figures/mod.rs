@@ -44,6 +44,7 @@ mod html;
 mod nonuniform;
 mod plot;
 mod polygons;
+mod renders;
 mod scans;
 mod sections;
 mod subdivision;
@@ -87,8 +88,8 @@ pub(crate) struct Figure {
 pub(crate) enum Format {
     /// A plot: SVG, shown inline on the index page.
     Svg,
-    /// A 3-D model: binary glTF (`.glb`), linked from the index page (images of the models come
-    /// from the renderer).
+    /// A 3-D model: binary glTF (`.glb`), linked from the index page, with a render of it beside
+    /// it (`.png`, the same stem, drawn by [`renders`] from the model's bytes) shown inline.
     Glb,
     /// An image: PNG (geometry images), shown inline on the index page.
     Png,
@@ -141,6 +142,12 @@ impl Figure {
         format!("fig-{chapter}-{number:02}{}.{}", panel.suffix, self.format.extension())
     }
 
+    /// The file name of the render of a `.glb` panel: `fig-5-10.png`.
+    fn render_file(&self, panel: &Panel) -> String {
+        let (chapter, number) = self.number;
+        format!("fig-{chapter}-{number:02}{}.png", panel.suffix)
+    }
+
     /// The title drawn above `panel`.
     fn title(&self, panel: &Panel) -> String {
         if panel.title.is_empty() {
@@ -161,6 +168,7 @@ fn registry() -> Vec<Figure> {
         curves::FIGURES,
         nonuniform::FIGURES,
         polygons::FIGURES,
+        renders::FIGURES,
         scans::FIGURES,
         surfaces::FIGURES,
         subdivision::FIGURES,
@@ -208,6 +216,11 @@ pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
             bar.set_message(file.clone());
             let bytes =
                 (panel.draw)(&figure.title(panel)).with_context(|| format!("drawing {file}"))?;
+            if figure.format == Format::Glb {
+                let png = renders::render_model(figure.number, &bytes)
+                    .with_context(|| format!("rendering {file}"))?;
+                outputs.push((figure.render_file(panel), png));
+            }
             outputs.push((file, bytes));
             bar.inc(1);
         }
@@ -277,7 +290,13 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
                     let _ = writeln!(s, "![{}]({file})\n", f.title(p));
                 }
                 Format::Glb => {
-                    let _ = writeln!(s, "{}: 3-D model [{file}]({file})\n", f.title(p));
+                    let _ = writeln!(
+                        s,
+                        "![{}]({})\n\n{}: 3-D model [{file}]({file})\n",
+                        f.title(p),
+                        f.render_file(p),
+                        f.title(p)
+                    );
                 }
             }
         }

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+//! Rendered images of the figures (§5.5, §5.6), drawn with `hi-raytrace`: every glTF model of
+//! the figures is rendered to a PNG beside it (read back from the model's own bytes, so the
+//! picture shows what the file holds), and figures 5.25 and 5.26 are renders of the harmonic
+//! torus — the tessellated surface (the thesis's scanline rendering) and the surface itself,
+//! ray traced by interval Newton (Krawczyk) with a sphere and a floor casting shadows.
+//!
+//! Every render is deterministic: the sample positions are fixed and each pixel is computed on
+//! its own, so the bytes are the same on every run and on every number of threads.
+
+use std::f64::consts::PI;
+
+use anyhow::{Context, Result, ensure};
+use glam::{DVec2, DVec3};
+use hi_raytrace::{
+    Camera, Geometry, HarmonicObject, HarmonicSettings, IntervalMethod, Light, MeshObject,
+    RenderSettings, Scene, SceneObject, SurfaceColor, TorusMethod, render, torus_scene,
+};
+use hi_surface::{HarmonicSurface, TriangleMesh, sphere, torus};
+
+use super::{Figure, Format, Panel};
+
+/// The size of the renders of the models.
+const WIDTH: u32 = 400;
+const HEIGHT: u32 = 300;
+/// Samples per pixel (anti-aliasing).
+const SPP: u32 = 4;
+/// The vertical field of view (radians).
+const FOV: f64 = 0.6;
+
+/// The mesh a `.glb` file holds (one mesh, one triangle primitive, as the figures write).
+fn mesh_from_glb(bytes: &[u8]) -> Result<TriangleMesh> {
+    let (document, buffers, _) = gltf::import_slice(bytes).context("parsing the model")?;
+    let mesh = document.meshes().next().context("no mesh")?;
+    let primitive = mesh.primitives().next().context("no primitive")?;
+    let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+    let positions: Vec<DVec3> = reader
+        .read_positions()
+        .context("no POSITION")?
+        .map(|p| DVec3::from(p.map(f64::from)))
+        .collect();
+    let normals: Vec<DVec3> = reader
+        .read_normals()
+        .context("no NORMAL")?
+        .map(|n| DVec3::from(n.map(f64::from)).normalize_or(DVec3::Z))
+        .collect();
+    let uvs: Vec<DVec2> = match reader.read_tex_coords(0) {
+        Some(t) => t.into_f32().map(|t| DVec2::from(t.map(f64::from))).collect(),
+        None => vec![DVec2::ZERO; positions.len()],
+    };
+    let indices: Vec<u32> = reader.read_indices().context("no indices")?.into_u32().collect();
+    let triangles: Vec<[u32; 3]> = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+    let out = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
+    Ok(match reader.read_colors(0) {
+        Some(c) => out.try_with_colors(c.into_rgb_f32().collect())?,
+        None => out,
+    })
+}
+
+/// Where the eye looks from, for figure `number`: the heads face +y, everything else is seen
+/// from the front left, above.
+fn view(number: (u32, u32)) -> DVec3 {
+    let head = matches!(number, (4, 35) | (5, 10..=11 | 14..=17 | 19..=20 | 24 | 29..=30));
+    if head { DVec3::new(0.9, 2.0, 0.9) } else { DVec3::new(0.9, -2.0, 1.3) }
+}
+
+/// A key light above and to the left of `view`, and a weaker fill from the right.
+fn lights(view: DVec3) -> Vec<Light> {
+    let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
+    vec![
+        Light::Directional { direction: view + DVec3::Z * 1.5 + side, intensity: [0.85; 3] },
+        Light::Directional { direction: view - side, intensity: [0.3; 3] },
+    ]
+}
+
+/// Renders `scene` through `camera` to PNG bytes.
+fn png(scene: &Scene, camera: &Camera, spp: u32) -> Result<Vec<u8>> {
+    let settings =
+        RenderSettings { width: WIDTH, height: HEIGHT, samples_per_pixel: spp, tile_size: 16 };
+    let out = render(scene, camera, &settings, None)?;
+    ensure!(out.counts.hits > 0, "the render hit nothing");
+    Ok(out.png_bytes()?)
+}
+
+/// The render of the model `glb` of figure `number`: framed, lit from the front, on white.
+pub(crate) fn render_model(number: (u32, u32), glb: &[u8]) -> Result<Vec<u8>> {
+    let mesh = mesh_from_glb(glb)?;
+    let (lo, hi) = mesh.bounds();
+    let mut object = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
+    object.material.color = [0.72, 0.74, 0.78];
+    let from = view(number);
+    let scene = Scene::try_new(vec![object], lights(from), [1.0; 3])?;
+    let camera = Camera::framing(
+        0.5 * (lo + hi),
+        (0.5 * (hi - lo).length()).max(1e-9),
+        from,
+        DVec3::Z,
+        FOV,
+    )?;
+    png(&scene, &camera, SPP)
+}
+
+/// Figure 5.25: the harmonic torus tessellated (128×256 quads) and rendered as triangles.
+fn scanline_torus() -> Result<Vec<u8>> {
+    let (scene, camera) = torus_scene(TorusMethod::Mesh)?;
+    png(&scene, &camera, SPP)
+}
+
+/// Figure 5.26: the harmonic torus and a harmonic sphere ray traced directly (interval Newton,
+/// Krawczyk, with bisection where it cannot decide), on a floor, with shadows.
+fn raytraced_torus() -> Result<Vec<u8>> {
+    let settings =
+        HarmonicSettings { method: IntervalMethod::Krawczyk, ..HarmonicSettings::default() };
+    let harmonic =
+        |surface: HarmonicSurface<DVec3>, shift: DVec3, color: [f32; 3]| -> Result<SceneObject> {
+            let moved = HarmonicSurface::try_from_flat(
+                surface.m(),
+                surface.n(),
+                surface.points().iter().map(|p| *p + shift).collect(),
+            )?;
+            let mut object = SceneObject::new(Geometry::Harmonic(
+                HarmonicObject::try_new(moved, &settings)?
+                    .with_color(SurfaceColor::Uniform(color))?,
+            ));
+            object.material.color = color;
+            object.material.specular = 0.35;
+            Ok(object)
+        };
+    let torus = harmonic(torus(2.0, 1.0), DVec3::ZERO, [0.55, 0.62, 0.85])?;
+    let ball = harmonic(sphere(1.0), DVec3::new(2.6, 2.4, 0.0), [0.85, 0.45, 0.35])?;
+    // The floor: a square at z = −1, two triangles.
+    let s = 7.0;
+    let floor = TriangleMesh::try_new(
+        vec![
+            DVec3::new(-s, -s, -1.0),
+            DVec3::new(s, -s, -1.0),
+            DVec3::new(s, s, -1.0),
+            DVec3::new(-s, s, -1.0),
+        ],
+        vec![DVec3::Z; 4],
+        vec![DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y],
+        vec![[0, 1, 2], [0, 2, 3]],
+    )?;
+    let mut floor = SceneObject::new(Geometry::Mesh(MeshObject::new(floor)));
+    floor.material.color = [0.8, 0.8, 0.76];
+    floor.material.specular = 0.0;
+    let lights = vec![
+        Light::Directional { direction: DVec3::new(-1.0, -2.0, 3.0), intensity: [0.8, 0.8, 0.75] },
+        Light::Point { position: DVec3::new(5.0, -4.0, 6.0), intensity: [30.0, 28.0, 26.0] },
+    ];
+    let scene = Scene::try_new(vec![torus, ball, floor], lights, [0.05, 0.06, 0.08])?;
+    let camera = Camera::try_new(
+        DVec3::new(1.5, -9.0, 5.0),
+        DVec3::new(0.6, 0.6, -0.3),
+        DVec3::Z,
+        PI / 5.0,
+    )?;
+    png(&scene, &camera, 1)
+}
+
+/// The figures of this module.
+pub(crate) const FIGURES: &[Figure] = &[
+    Figure {
+        number: (5, 25),
+        caption: "A scanline-rendered harmonic surface (torus)",
+        drawn: "The harmonic torus through the 4×4 torus grid (R = 2, r = 1), tessellated into 128×256 quads with \
+                its exact normals and rendered as triangles (`hi_raytrace::MeshObject` in an obvhs BVH, the \
+                renderer's stand-in for the thesis's scanline rendering), 400×300, 4 samples per pixel, a \
+                directional and a point light with shadows. `cargo xtask bench render` times it beside the direct \
+                methods.",
+        data: "the exact 4×4 torus grid of MATH.md §3 (`hi_surface::torus(2, 1)`).",
+        format: Format::Png,
+        panels: &[Panel { suffix: "", title: "", draw: |_| scanline_torus() }],
+    },
+    Figure {
+        number: (5, 26),
+        caption: "A raytraced harmonic surface (torus)",
+        drawn: "The harmonic torus and the harmonic sphere (each through its exact grid) ray traced directly: every \
+                camera and shadow ray is intersected with the surfaces themselves by interval Newton (Krawczyk) \
+                on p(u, v) − (o + t·d) = 0 in `hi-interval` arithmetic, with bisection where Krawczyk cannot \
+                decide, over a floor of two triangles; 400×300, one sample per pixel, shadows from a directional \
+                and a point light. The thesis took several hours for its torus; this takes seconds.",
+        data: "exact: `hi_surface::torus(2, 1)` and `hi_surface::sphere(1)` moved to (2.6, 2.4, 0).",
+        format: Format::Png,
+        panels: &[Panel { suffix: "", title: "", draw: |_| raytraced_torus() }],
+    },
+];
