@@ -379,7 +379,7 @@ fn quad_torus() -> Result<Sample> {
     grid(
         true,
         |idx, i, j| vec![vec![idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)]],
-        |di, dj| DVec2::new(di, dj),
+        DVec2::new,
     )
 }
 
