@@ -20,6 +20,7 @@
 //! | [`fitting`] | 5.12: a surface fitted to scattered points through a geometry image |
 //! | [`scans`] | 5.10, 5.11, 5.13–5.24: stand-in scans through geometry images, as PNG images and glTF models; the table of their fits |
 //! | [`surfaces`] | 4.1, 5.1, 5.3–5.5, 5.31–5.43: surfaces as glTF models; the §5.9 curvature tables |
+//! | [`masks`] | 4.8–4.10, 4.14, 4.18, 4.19, 4.23, 4.24: subdivision masks read off one step of each scheme, and the face splits |
 //! | [`subdivision`] | 4.11–4.35: subdivision schemes on the cube, the star and a head as glTF models; Table 4.1 |
 //!
 //! [`plot`] gives them a common look on top of plotters and [`data`] holds the point sets;
@@ -41,6 +42,7 @@ mod data;
 mod fitting;
 pub(crate) mod glb;
 mod html;
+mod masks;
 mod nonuniform;
 mod plot;
 mod polygons;
@@ -166,6 +168,7 @@ fn registry() -> Vec<Figure> {
         bspline::FIGURES,
         chapter2::FIGURES,
         curves::FIGURES,
+        masks::FIGURES,
         nonuniform::FIGURES,
         polygons::FIGURES,
         renders::FIGURES,
