@@ -12,8 +12,10 @@
 //! |---|---|
 //! | [`subdivision`] | one step of each scheme of §4.5 on ≥ 100 000 faces, against `OpenMesh` and CGAL |
 //! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab) |
+//! | [`render`] | the torus by interval Newton, interval bisection, Bézier patches and a mesh (§5.6), and time against image size |
 
 mod fit;
+mod render;
 mod subdivision;
 
 use std::fmt::Write as _;
@@ -27,7 +29,7 @@ use anyhow::{Context, Result, bail};
 const REPORT: &str = "docs/performance.md";
 
 /// The topics, in the order of the report.
-const TOPICS: &[&str] = &["subdivision", "fit"];
+const TOPICS: &[&str] = &["subdivision", "fit", "render"];
 
 /// Runs the benchmarks of `topic` and rewrites its section of the report.
 ///
@@ -44,6 +46,7 @@ pub(crate) fn run(root: &Path, topic: Option<&str>) -> Result<()> {
     let body = match topic {
         "subdivision" => subdivision::run(root)?,
         "fit" => fit::run(root)?,
+        "render" => render::run(root)?,
         _ => unreachable!("checked against TOPICS"),
     };
     let path = root.join(REPORT);

@@ -44,7 +44,7 @@ pub(crate) mod glb;
 mod html;
 mod masks;
 mod nonuniform;
-mod plot;
+pub(crate) mod plot;
 mod polygons;
 mod renders;
 mod scans;
