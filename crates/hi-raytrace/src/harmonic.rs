@@ -33,7 +33,6 @@
 //! parametrisation) counts as a hit.
 
 use glam::DVec3;
-use hi_curve::Fourier;
 use hi_interval::Interval;
 use hi_surface::{ColorLegend, ColorMap, CurvatureQuantity, HarmonicSurface};
 
@@ -215,24 +214,8 @@ impl HarmonicObject {
         }
         let (m, n) = (surface.m(), surface.n());
         let (deg_u, deg_v) = (m / 2, n / 2);
-        // The 2-D spectrum, as hi-surface computes it: along v per row, then along u.
-        let rows: Vec<Fourier<DVec3>> =
-            surface.points().chunks(n).map(Fourier::from_points).collect();
-        let mut coeffs = vec![[DVec3::ZERO; 4]; (deg_u + 1) * (deg_v + 1)];
-        for b in 0..=deg_v {
-            let cos_v: Vec<DVec3> = rows.iter().map(|r| r.cos_coeffs()[b]).collect();
-            let sin_v: Vec<DVec3> = rows.iter().map(|r| r.sin_coeffs()[b]).collect();
-            let fc = Fourier::from_points(&cos_v);
-            let fs = Fourier::from_points(&sin_v);
-            for a in 0..=deg_u {
-                coeffs[a * (deg_v + 1) + b] = [
-                    fc.cos_coeffs()[a],
-                    fs.cos_coeffs()[a],
-                    fc.sin_coeffs()[a],
-                    fs.sin_coeffs()[a],
-                ];
-            }
-        }
+        // The 2-D spectrum of hi-surface: [A, B, C, D] at a·(deg_v + 1) + b.
+        let coeffs: Vec<[DVec3; 4]> = surface.spectrum_coefficients().to_vec();
         // Rounding error of the f64 evaluation: each term's trig values carry O((a + β + 2)·ε)
         // (angle addition), the sum O(number of terms·ε); a generous constant covers both.
         let n_terms = (deg_u + deg_v + 2 + 4 * (deg_u + 1) * (deg_v + 1)) as u32;

@@ -67,6 +67,11 @@ impl<P: ControlPoint> Spectrum2<P> {
         res
     }
 
+    /// The coefficients (A, B, C, D) at index `a·(deg_v + 1) + b`.
+    pub(crate) fn coefficients(&self) -> &[[P; 4]] {
+        &self.coeffs
+    }
+
     /// The degrees (⌊m/2⌋, ⌊n/2⌋).
     pub(crate) fn degrees(&self) -> (usize, usize) {
         (self.deg_u, self.deg_v)

@@ -170,6 +170,38 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         self.spectrum.deriv_bound(p, q)
     }
 
+    /// The real 2-D spectrum: p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv
+    /// + Cₐᵦ·sin 2πau·cos 2πβv + Dₐᵦ·sin 2πau·sin 2πβv] for a ≤ ⌊m/2⌋, β ≤ ⌊n/2⌋ (the tensor
+    /// product of the curve spectra of eq. 5.1, even-size Nyquist terms halved, MATH.md §7), as
+    /// `[A, B, C, D]` at index a·(⌊n/2⌋ + 1) + β.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_surface::HarmonicSurface;
+    ///
+    /// // p = (cos 2πu, sin 2πv, 1) through a 4×4 grid.
+    /// let tau = std::f64::consts::TAU;
+    /// let rows = (0..4)
+    ///     .map(|j| {
+    ///         (0..4)
+    ///             .map(|k| DVec3::new((tau * j as f64 / 4.0).cos(), (tau * k as f64 / 4.0).sin(), 1.0))
+    ///             .collect()
+    ///     })
+    ///     .collect();
+    /// let s = HarmonicSurface::try_new(rows)?;
+    /// let c = s.spectrum_coefficients();
+    /// assert!((c[0][0] - DVec3::Z).length() < 1e-15); // the mean (a = β = 0)
+    /// assert!((c[3][0] - DVec3::X).length() < 1e-15); // A₁₀: cos 2πu (index 1·3 + 0)
+    /// assert!((c[1][1] - DVec3::Y).length() < 1e-15); // B₀₁: sin 2πv
+    /// # Ok::<(), hi_surface::Error>(())
+    /// ```
+    #[must_use]
+    pub fn spectrum_coefficients(&self) -> &[[P; 4]] {
+        self.spectrum.coefficients()
+    }
+
     /// The degrees (⌊m/2⌋, ⌊n/2⌋) of the surface as a trigonometric polynomial in u and v.
     #[must_use]
     pub fn degrees(&self) -> (usize, usize) {
