@@ -170,8 +170,8 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         self.spectrum.deriv_bound(p, q)
     }
 
-    /// The real 2-D spectrum: p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv
-    /// + Cₐᵦ·sin 2πau·cos 2πβv + Dₐᵦ·sin 2πau·sin 2πβv] for a ≤ ⌊m/2⌋, β ≤ ⌊n/2⌋ (the tensor
+    /// The real 2-D spectrum: p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv +
+    /// Cₐᵦ·sin 2πau·cos 2πβv + Dₐᵦ·sin 2πau·sin 2πβv] for a ≤ ⌊m/2⌋, β ≤ ⌊n/2⌋ (the tensor
     /// product of the curve spectra of eq. 5.1, even-size Nyquist terms halved, MATH.md §7), as
     /// `[A, B, C, D]` at index a·(⌊n/2⌋ + 1) + β.
     ///
