@@ -32,7 +32,7 @@ fn escape(text: &str) -> String {
 }
 
 /// The inline markdown of the captions and tables as HTML: `code`, **bold**, *emphasis* and
-/// [links](target), everything else escaped.
+/// `[label](target)` links, everything else escaped.
 fn inline(text: &str) -> String {
     let mut out = String::new();
     let mut rest = text;
