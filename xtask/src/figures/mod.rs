@@ -8,6 +8,7 @@
 //!
 //! | module | figures |
 //! |---|---|
+//! | [`intro`] | 1.1–1.3, 4.2–4.4, 4.6, 4.7: a polygon mesh, a Bézier curve, a point set; Bézier patches and triangles, Chaikin's and the 4-point scheme (chapter 1, §4.2–4.5) |
 //! | [`bspline`] | 4.5: B-spline surface fitting through a curve network (§4.4) |
 //! | [`chapter2`] | 2.1–2.18: Lagrange, Bézier, B-spline and METAPOST curves, curvature and torsion (chapter 2) |
 //! | [`basis`] | 3.1–3.6, the functions σ and σₖ |
@@ -42,6 +43,7 @@ mod data;
 mod fitting;
 pub(crate) mod glb;
 mod html;
+mod intro;
 mod masks;
 mod nonuniform;
 pub(crate) mod plot;
@@ -168,6 +170,7 @@ fn registry() -> Vec<Figure> {
         bspline::FIGURES,
         chapter2::FIGURES,
         curves::FIGURES,
+        intro::FIGURES,
         masks::FIGURES,
         nonuniform::FIGURES,
         polygons::FIGURES,
