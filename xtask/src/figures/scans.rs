@@ -157,6 +157,7 @@ struct Setup {
 
 const SPHERE: Setup = Setup { layout: Layout::Sphere, smooth: false, densify: true };
 const SPHERE_SMOOTH: Setup = Setup { smooth: true, ..SPHERE };
+const OCTAHEDRON: Setup = Setup { layout: Layout::Octahedron, ..SPHERE };
 const OCTAHEDRON_SMOOTH: Setup = Setup { layout: Layout::Octahedron, ..SPHERE_SMOOTH };
 const FLAT: Setup = Setup { layout: Layout::FlatOctahedron, ..SPHERE };
 const FLAT_SMOOTH: Setup = Setup { layout: Layout::FlatOctahedron, ..SPHERE_SMOOTH };
@@ -280,6 +281,11 @@ fn fit_png(model: Model, setup: Setup, half: bool) -> Result<Vec<u8>> {
     image_png(image, if half { image.rows() / 2 } else { image.rows() })
 }
 
+/// The render of the harmonic surface of the head's fit, for figure `number`.
+fn surface_png(number: (u32, u32), setup: Setup) -> Result<Vec<u8>> {
+    super::renders::render_model(number, &harmonic_glb(Model::Head, setup)?)
+}
+
 /// Figure 5.24: the coarse head, resampled on its triangles or not.
 fn coarse_glb(densify: bool) -> Result<Vec<u8>> {
     let setup = Setup { densify, ..FLAT_SMOOTH };
@@ -374,14 +380,20 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Octahedron geometry image",
         drawn: "The 64×64 octahedral geometry image of the head (Praun and Hoppe's square, wrapped as it is), x, y, \
                 z as red, green, blue: one cover of the sphere, the upper hemisphere in the central diamond. Where \
-                the square wraps, neighbouring texels are far apart on the head (figure 5.19).",
+                the square wraps, neighbouring texels are far apart on the head (figure 5.19). (b) The harmonic \
+                surface through it, before smoothing, rendered (`hi-raytrace`, a mesh of 2×2 quads per texel): \
+                interpolating across the jumps where the square wraps rings over the whole surface (Gibbs \
+                ripples) and folds at the wrapped edges; figure 5.19 is the same after smoothing.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Png,
-        panels: &[Panel {
-            suffix: "",
-            title: "",
-            draw: |_| fit_png(Model::Head, OCTAHEDRON_SMOOTH, false),
-        }],
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Geometry image",
+                draw: |_| fit_png(Model::Head, OCTAHEDRON_SMOOTH, false),
+            },
+            Panel { suffix: "b", title: "(b) Render", draw: |_| surface_png((5, 18), OCTAHEDRON) },
+        ],
     },
     Figure {
         number: (5, 19),
@@ -402,10 +414,18 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Flattened octahedron geometry image (one side only)",
         drawn: "The first 32 rows of the 64×64 flattened-octahedron image of the head (one cover of the sphere; the \
                 other 32 rows are its half-turn), x, y, z as red, green, blue. The square is extended by its own \
-                symmetry, so neighbouring texels are neighbours on the head everywhere and smoothing leaves no seam.",
+                symmetry, so neighbouring texels are neighbours on the head everywhere and smoothing leaves no seam. \
+                (b) The harmonic surface through the whole image (u ∈ [0, ½] drawn), rendered.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Png,
-        panels: &[Panel { suffix: "", title: "", draw: |_| fit_png(Model::Head, FLAT, true) }],
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Geometry image",
+                draw: |_| fit_png(Model::Head, FLAT, true),
+            },
+            Panel { suffix: "b", title: "(b) Render", draw: |_| surface_png((5, 20), FLAT) },
+        ],
     },
     Figure {
         number: (5, 21),
