@@ -187,17 +187,20 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
         }
         files.push((glb, mesh));
     }
-    for (ext, tool, bad) in
-        [("OBJ", "`tobj`", obj_bad), ("glTF (JSON + .bin)", "`gltf` crate", gltf_bad)]
-    {
+    for (ext, tool, bad, agreement) in [
+        (
+            "OBJ",
+            "`tobj`",
+            obj_bad,
+            "positions, normals and triangles (up to renumbering) exact at f32; UVs and colours within 1e-6",
+        ),
+        ("glTF (JSON + .bin)", "`gltf` crate", gltf_bad, "everything exact at f32"),
+    ] {
         items.push(Item {
             what: format!("every model written again as {ext} and read back"),
             tool: tool.to_owned(),
             outcome: if bad.is_empty() {
-                Outcome::Pass(format!(
-                    "{} files: positions, normals and triangles (up to renumbering) exact at f32, UVs and colours within 1e-6",
-                    glbs.len()
-                ))
+                Outcome::Pass(format!("{} files: {agreement}", glbs.len()))
             } else {
                 Outcome::Fail(bad.join("; "))
             },
