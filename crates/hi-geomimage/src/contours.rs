@@ -112,21 +112,20 @@ pub fn contour_image(points: &[DVec3], options: &SphericalOptions) -> Result<Con
             (nearest, groups.len() > 1)
         })
         .collect();
-    // The contours of the cast rows, sampled at the columns.
-    let contours: Vec<Option<Vec<DVec3>>> = (0..cast_rows)
-        .into_par_iter()
-        .map(|i| {
-            let list = distinct_cyclic(located[i * cols..(i + 1) * cols].iter().map(|l| l.0));
-            if list.is_empty() {
-                return None;
-            }
-            let row: Vec<DVec3> = list.iter().map(|&k| points[k]).collect();
-            Some(Fourier::from_points(&row).sample_uniform(cols))
+    // The distinct located points of each cast row, and its contour sampled at the columns.
+    let lists: Vec<Vec<usize>> = (0..cast_rows)
+        .map(|i| distinct_cyclic(located[i * cols..(i + 1) * cols].iter().map(|l| l.0)))
+        .collect();
+    let contours: Vec<Option<Vec<DVec3>>> = lists
+        .par_iter()
+        .map(|list| {
+            (!list.is_empty()).then(|| {
+                let row: Vec<DVec3> = list.iter().map(|&k| points[k]).collect();
+                Fourier::from_points(&row).sample_uniform(cols)
+            })
         })
         .collect();
-    let mut row_points: Vec<usize> = (0..cast_rows)
-        .map(|i| distinct_cyclic(located[i * cols..(i + 1) * cols].iter().map(|l| l.0)).len())
-        .collect();
+    let mut row_points: Vec<usize> = lists.iter().map(Vec::len).collect();
     let empty_rows: Vec<usize> = (0..cast_rows).filter(|&i| contours[i].is_none()).collect();
     if empty_rows.len() == cast_rows {
         return Err(Error::TooFewPoints { found: 0, needed: 1 });

@@ -14,7 +14,7 @@ use hi_surface::bezier::SurfaceBezier;
 use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh, torus};
 
 use super::glb::glb;
-use super::scans::{head_scan, outward_fraction};
+use super::scans::{ensure_outward, head_scan};
 use super::{Figure, Format, Panel, Table};
 
 /// Samples per patch side in the meshes.
@@ -109,10 +109,7 @@ fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
 fn head_figure(pointed: bool, colored: bool) -> Result<Vec<u8>> {
     let (b, once) = head_patches(pointed)?;
     let mesh = patch_mesh(&b, HEAD_SAMPLES, &once, colored)?;
-    let p = mesh.positions();
-    let centre = p.iter().sum::<DVec3>() / p.len() as f64;
-    let outward = outward_fraction(&mesh, centre);
-    ensure!(outward > 0.99, "only {:.1}% of the head's triangles face outwards", 100.0 * outward);
+    ensure_outward(&mesh, 0.99, "the head")?;
     glb(&mesh)
 }
 

@@ -17,7 +17,7 @@ use super::glb::glb;
 use super::plot::{
     BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, render_row, sample,
 };
-use super::scans::{head_scan, outward_fraction};
+use super::scans::{ensure_outward, head_scan};
 use super::subdivision::head_with;
 use super::{Figure, Format, Panel};
 
@@ -80,9 +80,7 @@ fn polygonal_object() -> Result<Vec<u8>> {
     let polygons: Vec<Vec<DVec3>> =
         head.faces().map(|f| f.iter().map(|&k| p[k as usize]).collect()).collect();
     let flat = flat_mesh(&polygons)?;
-    let centre = p.iter().sum::<DVec3>() / p.len() as f64;
-    let outward = outward_fraction(&flat, centre);
-    ensure!(outward > 0.99, "only {:.1}% of the head's triangles face outwards", 100.0 * outward);
+    ensure_outward(&flat, 0.99, "the head")?;
     glb(&flat)
 }
 

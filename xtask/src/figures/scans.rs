@@ -177,13 +177,12 @@ fn fitted(scan: &Scan, setup: Setup, measure: bool) -> Result<Fit> {
 }
 
 /// The mesh of `surface` over the window that covers the object once, `per_texel` quads per
-/// texel along each axis; its triangles must face away from `centre` (every layout makes
-/// pᵤ × pᵥ point outwards), all but a few at the octahedron's seams.
+/// texel along each axis; its triangles must face outwards (every layout makes pᵤ × pᵥ point
+/// outwards), all but a few at the octahedron's seams.
 fn covering_mesh(
     surface: &HarmonicSurface<DVec3>,
     layout: Layout,
     per_texel: usize,
-    centre: DVec3,
 ) -> Result<TriangleMesh> {
     let (u0, u1) = layout.covering_window();
     #[expect(
@@ -199,14 +198,16 @@ fn covering_mesh(
         ..MeshOptions::default()
     };
     let mesh = TriangleMesh::try_from_surface(surface, &options)?;
-    let outward = outward_fraction(&mesh, centre);
-    ensure!(outward > 0.9, "only {:.1}% of the triangles face outwards", 100.0 * outward);
+    ensure_outward(&mesh, 0.9, "the fitted surface")?;
     Ok(mesh)
 }
 
-/// The fraction of the triangles whose winding faces away from `centre`.
-pub(crate) fn outward_fraction(mesh: &TriangleMesh, centre: DVec3) -> f64 {
+/// Fails unless more than the fraction `min` of the triangles of `mesh` (`what`) are wound to
+/// face away from the centroid of its vertices: the check of a closed, roughly star-shaped
+/// model's orientation.
+pub(crate) fn ensure_outward(mesh: &TriangleMesh, min: f64, what: &str) -> Result<()> {
     let p = mesh.positions();
+    let centre = p.iter().sum::<DVec3>() / p.len() as f64;
     let outward = mesh
         .triangles()
         .iter()
@@ -214,24 +215,24 @@ pub(crate) fn outward_fraction(mesh: &TriangleMesh, centre: DVec3) -> f64 {
             let [a, b, c] = t.map(|k| p[k as usize]);
             (b - a).cross(c - a).dot((a + b + c) / 3.0 - centre) > 0.0
         })
-        .count();
-    outward as f64 / mesh.triangles().len() as f64
+        .count() as f64
+        / mesh.triangles().len() as f64;
+    ensure!(outward > min, "only {:.1}% of the triangles of {what} face outwards", 100.0 * outward);
+    Ok(())
 }
 
 /// The harmonic surface of a fit, meshed with 2×2 quads per texel.
 fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
-    let centre = result.image.texels().iter().sum::<DVec3>() / result.image.texels().len() as f64;
-    glb(&covering_mesh(&result.surface, setup.layout, 2, centre)?)
+    glb(&covering_mesh(&result.surface, setup.layout, 2)?)
 }
 
 /// The texels of a fit's image joined directly: one quad per texel, with normals from the
 /// faces (what the geometry image gives without harmonic interpolation).
 fn texel_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
-    let centre = result.image.texels().iter().sum::<DVec3>() / result.image.texels().len() as f64;
     // Meshing the surface at its own grid puts the vertices on the texels exactly.
-    let mesh = covering_mesh(&result.surface, setup.layout, 1, centre)?;
+    let mesh = covering_mesh(&result.surface, setup.layout, 1)?;
     let p = mesh.positions();
     let mut normals = vec![DVec3::ZERO; p.len()];
     for t in mesh.triangles() {
@@ -290,8 +291,7 @@ fn surface_png(number: (u32, u32), setup: Setup) -> Result<Vec<u8>> {
 fn coarse_glb(densify: bool) -> Result<Vec<u8>> {
     let setup = Setup { densify, ..FLAT_SMOOTH };
     let result = fitted(&coarse_head()?, setup, false)?;
-    let centre = result.image.texels().iter().sum::<DVec3>() / result.image.texels().len() as f64;
-    glb(&covering_mesh(&result.surface, setup.layout, 2, centre)?)
+    glb(&covering_mesh(&result.surface, setup.layout, 2)?)
 }
 
 /// The figures of this module.
