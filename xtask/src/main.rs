@@ -5,8 +5,9 @@
 //! Commands:
 //! - `figures [--check]`: regenerate the thesis figures into `docs/figures/` (with `--check`,
 //!   fail instead if a committed file is stale);
-//! - `bench <topic>`: time our code and the peer programs side by side and write the topic's
-//!   section of `docs/performance.md` (topics: `subdivision`, `fit`);
+//! - `bench [topic]`: time our code and the peer programs side by side and write
+//!   `docs/performance.md`: every topic (`bench` or `bench all`) or one topic's section
+//!   (`curves`, `subdivision`, `fit`, `render`);
 //! - `crosscheck`: read back every model the figures emit with other programs (tobj, trimesh,
 //!   the Khronos validator, Blender) and run every peer comparison, into `docs/crosscheck.md`;
 //! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
@@ -32,7 +33,9 @@ fn main() -> Result<()> {
             println!("layers: every crate depends only on crates below it");
             Ok(())
         }
-        _ => bail!("usage: cargo xtask <figures [--check] | bench <topic> | crosscheck | layers>"),
+        _ => bail!(
+            "usage: cargo xtask <figures [--check] | bench [all|curves|subdivision|fit|render] | crosscheck | layers>"
+        ),
     }
 }
 

@@ -35,6 +35,50 @@ fn inverse_plan(len: usize) -> Arc<dyn ComplexToReal<f64>> {
     PLANNER.with(|p| p.borrow_mut().plan_fft_inverse(len))
 }
 
+/// The largest sampling length whose work buffers a thread keeps between calls (about 24 MB
+/// of buffers); longer transforms allocate their own.
+const KEEP_BUFFERS_UP_TO: usize = 1 << 20;
+
+/// The work buffers of an inverse real FFT: spectrum, output and scratch.
+#[derive(Default)]
+struct InverseBuffers {
+    spectrum: Vec<Complex<f64>>,
+    output: Vec<f64>,
+    scratch: Vec<Complex<f64>>,
+}
+
+impl InverseBuffers {
+    /// Sized for `plan` (contents unspecified).
+    fn fit(&mut self, plan: &dyn ComplexToReal<f64>) {
+        let zero = Complex::new(0.0, 0.0);
+        self.spectrum.resize(plan.complex_len(), zero);
+        self.output.resize(plan.len(), 0.0);
+        self.scratch.resize(plan.get_scratch_len(), zero);
+    }
+}
+
+thread_local! {
+    // Reused by uniform sampling: fresh buffers for every call cost more in page faults than
+    // the transform itself for N in the thousands.
+    static INVERSE_BUFFERS: RefCell<InverseBuffers> = RefCell::new(InverseBuffers::default());
+}
+
+/// Runs `f` with buffers sized for `plan`: this thread's kept ones (taken out for the call,
+/// so a nested call gets fresh ones), or fresh ones for a long transform.
+fn with_inverse_buffers<R>(
+    plan: &dyn ComplexToReal<f64>,
+    f: impl FnOnce(&mut InverseBuffers) -> R,
+) -> R {
+    let keep = plan.len() <= KEEP_BUFFERS_UP_TO;
+    let mut buffers = if keep { INVERSE_BUFFERS.take() } else { InverseBuffers::default() };
+    buffers.fit(plan);
+    let out = f(&mut buffers);
+    if keep {
+        INVERSE_BUFFERS.set(buffers);
+    }
+    out
+}
+
 /// A real trigonometric polynomial X(t) = a₀ + Σⱼ₌₁ᴹ (aⱼ cos 2πjt + bⱼ sin 2πjt) with point
 /// coefficients: the spectrum of a harmonic curve (MATH.md §7, eq. 5.1).
 ///
@@ -209,45 +253,46 @@ impl<P: ControlPoint> Fourier<P> {
         let big_n = n_samples;
         let half = big_n / 2;
         let plan = inverse_plan(big_n);
-        let mut spectrum = plan.make_input_vec();
-        let mut output = plan.make_output_vec();
-        let mut scratch = plan.make_scratch_vec();
-        let mut coords = vec![vec![0.0; big_n]; P::DIM];
-        for (i, coord) in coords.iter_mut().enumerate() {
-            spectrum.fill(Complex::new(0.0, 0.0));
-            if order == 0 {
-                spectrum[0].re += self.cos[0].coord(i);
-            }
-            for j in 1..=self.degree() {
-                // cⱼ·(2πij)ᵖ, and its conjugate at −j.
-                let c = Complex::new(0.5 * self.cos[j].coord(i), -0.5 * self.sin[j].coord(i));
-                // (iw)ᵖ = wᵖ·iᵖ
-                let w = pow_order(2.0 * PI * j as f64, order);
-                let c = match order % 4 {
-                    0 => c * w,
-                    1 => Complex::new(-c.im, c.re) * w,
-                    2 => -c * w,
-                    _ => Complex::new(c.im, -c.re) * w,
-                };
-                let p = j % big_n;
-                let q = (big_n - p) % big_n;
-                if p <= half {
-                    spectrum[p] += c;
+        let mut result = vec![P::ZERO; big_n];
+        with_inverse_buffers(plan.as_ref(), |b| {
+            for i in 0..P::DIM {
+                b.spectrum.fill(Complex::new(0.0, 0.0));
+                if order == 0 {
+                    b.spectrum[0].re += self.cos[0].coord(i);
                 }
-                if q <= half {
-                    spectrum[q] += c.conj();
+                for j in 1..=self.degree() {
+                    // cⱼ·(2πij)ᵖ, and its conjugate at −j.
+                    let c = Complex::new(0.5 * self.cos[j].coord(i), -0.5 * self.sin[j].coord(i));
+                    // (iw)ᵖ = wᵖ·iᵖ
+                    let w = pow_order(2.0 * PI * j as f64, order);
+                    let c = match order % 4 {
+                        0 => c * w,
+                        1 => Complex::new(-c.im, c.re) * w,
+                        2 => -c * w,
+                        _ => Complex::new(c.im, -c.re) * w,
+                    };
+                    let p = j % big_n;
+                    let q = (big_n - p) % big_n;
+                    if p <= half {
+                        b.spectrum[p] += c;
+                    }
+                    if q <= half {
+                        b.spectrum[q] += c.conj();
+                    }
+                }
+                // The result is real: bins 0 and N/2 (N even) have no imaginary part.
+                b.spectrum[0].im = 0.0;
+                if big_n.is_multiple_of(2) {
+                    b.spectrum[half].im = 0.0;
+                }
+                plan.process_with_scratch(&mut b.spectrum, &mut b.output, &mut b.scratch)
+                    .expect("buffer sizes come from the plan, imaginary parts are zeroed");
+                for (r, &x) in result.iter_mut().zip(&b.output) {
+                    *r = P::from_coords(|c| if c == i { x } else { r.coord(c) });
                 }
             }
-            // The result is real: bins 0 and N/2 (N even) have no imaginary part.
-            spectrum[0].im = 0.0;
-            if big_n.is_multiple_of(2) {
-                spectrum[half].im = 0.0;
-            }
-            plan.process_with_scratch(&mut spectrum, &mut output, &mut scratch)
-                .expect("buffer sizes come from the plan, imaginary parts are zeroed");
-            coord.copy_from_slice(&output);
-        }
-        (0..big_n).map(|l| P::from_coords(|i| coords[i][l])).collect()
+        });
+        result
     }
 
     /// The polynomial t ↦ X(t + offset): aⱼ' = aⱼ cos φ + bⱼ sin φ, bⱼ' = bⱼ cos φ − aⱼ sin φ
@@ -299,6 +344,27 @@ impl<P: ControlPoint> Fourier<P> {
 mod tests {
     use super::*;
     use glam::DVec2;
+
+    #[test]
+    fn kept_buffers_never_leak_between_calls() {
+        // One thread samples at lengths that grow, shrink, repeat and change order of
+        // derivative, reusing its buffers each time: every result must match the direct sum.
+        let pts: Vec<DVec2> =
+            (0..9).map(|k| DVec2::new((k as f64).sin() * 2.0, (1.7 * k as f64).cos())).collect();
+        let f = Fourier::from_points(&pts);
+        for (n_samples, order) in [(64, 0), (7, 1), (1000, 0), (3, 0), (64, 2), (1000, 1), (1, 0)] {
+            let fft = f.sample_uniform_deriv(n_samples, order);
+            assert_eq!(fft.len(), n_samples, "length");
+            for (l, p) in fft.iter().enumerate() {
+                let q = f.eval_deriv(l as f64 / n_samples as f64, order);
+                let scale = (2.0 * PI * 4.0).powi(order as i32).max(1.0);
+                assert!(
+                    (*p - q).length() < 1e-12 * scale,
+                    "N = {n_samples}, order {order}, sample {l}: {p} against {q}"
+                );
+            }
+        }
+    }
 
     fn direct_dft_coeffs(x: &[f64]) -> (Vec<f64>, Vec<f64>) {
         let n = x.len();

@@ -399,40 +399,11 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             _ => BasisPieces::thesis_cubic(k),
         };
         let (bu, bv) = (pieces(self.m())?, pieces(self.n())?);
-        let (du, dv) = (bu.degree(), bv.degree());
-        let (pu, pv) = (bu.n_pieces(), bv.n_pieces());
-        // Along v first: rows[k][b][i] = Σₗ P[b][l][i]·xₖₗ.
-        let mut rows = vec![P::ZERO; self.m() * pv * (dv + 1)];
-        for k in 0..self.m() {
-            for b in 0..pv {
-                for i in 0..=dv {
-                    let mut sum = P::ZERO;
-                    for l in 0..self.n() {
-                        sum += self.point(k, l) * bv.control(b, l)[i];
-                    }
-                    rows[(k * pv + b) * (dv + 1) + i] = sum;
-                }
-            }
-        }
-        let mut patches = Vec::with_capacity(pu * pv);
-        for a in 0..pu {
-            for b in 0..pv {
-                let control: Vec<Vec<P>> = (0..=du)
-                    .map(|j| {
-                        (0..=dv)
-                            .map(|i| {
-                                let mut sum = P::ZERO;
-                                for k in 0..self.m() {
-                                    sum += rows[(k * pv + b) * (dv + 1) + i] * bu.control(a, k)[j];
-                                }
-                                sum
-                            })
-                            .collect()
-                    })
-                    .collect();
-                patches.push(BezierPatch::new(control));
-            }
-        }
+        let patches = if scheme == BezierScheme::ThesisCubic {
+            self.thesis_cubic_patches()?
+        } else {
+            thesis_patches_direct(self, &bu, &bv)
+        };
         let bound = if scheme == BezierScheme::ThesisCubic {
             TensorBound::new(self, scheme).on(self.m(), self.n()).2
         } else {
@@ -447,6 +418,51 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             (eu * (1.0 + ev) + ev) * size * (1.0 + 1e-9)
         };
         Ok((bu.breaks().to_vec(), bv.breaks().to_vec(), patches, bound))
+    }
+
+    /// The thesis's cubic patches from the surface itself (MATH.md §4): patch (a, b)
+    /// interpolates p at the 4×4 points (a/m + r/(3m), b/n + s/(3n)), r, s = 0 … 3, so its
+    /// control points are B⁻¹·S·B⁻ᵀ with S those samples and B the cubic Bernstein matrix at
+    /// 0, ⅓, ⅔, 1. The samples are the uniform 3m × 3n grid, taken by FFT: O(mn log mn)
+    /// instead of the O(mn(m + n)) sums of the basis pieces, with the same patches up to
+    /// rounding.
+    fn thesis_cubic_patches(&self) -> Result<Vec<BezierPatch<P>>, Error> {
+        let (m, n) = (self.m(), self.n());
+        let grid = self.sample_uniform(3 * m, 3 * n, 0, 0)?;
+        // At the grid's own nodes the surface is the data: taken exactly, so the patches pass
+        // through the points bit for bit as the basis sums do.
+        let at = |r: usize, s: usize| {
+            let (r, s) = (r % (3 * m), s % (3 * n));
+            if r % 3 == 0 && s % 3 == 0 {
+                self.point(r / 3, s / 3)
+            } else {
+                grid.values[r * (3 * n) + s]
+            }
+        };
+        let inverse = cubic_interpolation_inverse();
+        let mut patches = Vec::with_capacity(m * n);
+        for a in 0..m {
+            for b in 0..n {
+                // T = B⁻¹·S (along u), then T·B⁻ᵀ (along v).
+                let mut t = [[P::ZERO; 4]; 4];
+                for (j, row) in t.iter_mut().enumerate() {
+                    for (s, slot) in row.iter_mut().enumerate() {
+                        *slot = (0..4)
+                            .fold(P::ZERO, |acc, r| acc + at(3 * a + r, 3 * b + s) * inverse[j][r]);
+                    }
+                }
+                let control: Vec<Vec<P>> = t
+                    .iter()
+                    .map(|row| {
+                        (0..4)
+                            .map(|i| (0..4).fold(P::ZERO, |acc, s| acc + row[s] * inverse[i][s]))
+                            .collect()
+                    })
+                    .collect();
+                patches.push(BezierPatch::new(control));
+            }
+        }
+        Ok(patches)
     }
 
     /// Hermite patches on the data grid refined per direction until the bound is met.
@@ -531,17 +547,32 @@ impl<P: ControlPoint> HarmonicSurface<P> {
                 .flat_map(|w| (0..=k).map(move |i| w[0] + (w[1] - w[0]) * i as f64 / k as f64))
                 .collect()
         };
-        let (us, vs) = (params(&b.u_breaks), params(&b.v_breaks));
-        let samples = self.sample_params(&us, &vs, 0, 0)?;
         let nv = b.v_breaks.len() - 1;
+        // Patch (a, c) at (i/k, j/k), from the uniform grid by FFT when the breaks are
+        // uniform, else from the separable sums at the parameters themselves.
+        let on: Box<dyn Fn(usize, usize, usize, usize) -> P> =
+            match (uniform_pieces(&b.u_breaks), uniform_pieces(&b.v_breaks)) {
+                (Some(pu), Some(pv)) => {
+                    let (ru, rv) = (pu * k, pv * k);
+                    let grid = self.sample_uniform(ru, rv, 0, 0)?;
+                    Box::new(move |a, c, i, j| {
+                        grid.values[((a * k + i) % ru) * rv + (c * k + j) % rv]
+                    })
+                }
+                _ => {
+                    let (us, vs) = (params(&b.u_breaks), params(&b.v_breaks));
+                    let samples = self.sample_params(&us, &vs, 0, 0)?;
+                    Box::new(move |a, c, i, j| samples.get(a * (k + 1) + i, c * (k + 1) + j))
+                }
+            };
         let (mut max, mut sum, mut count) = (0.0_f64, 0.0, 0_usize);
+        let local: Vec<f64> = (0..=k).map(|i| i as f64 / k as f64).collect();
         for (idx, patch) in b.patches.iter().enumerate() {
             let (a, c) = (idx / nv, idx % nv);
+            let values = patch.eval_grid(&local, &local);
             for i in 0..=k {
                 for j in 0..=k {
-                    let (s, t) = (i as f64 / k as f64, j as f64 / k as f64);
-                    let on = samples.get(a * (k + 1) + i, c * (k + 1) + j);
-                    let d = (patch.eval(s, t) - on).norm();
+                    let d = (values[i * (k + 1) + j] - on(a, c, i, j)).norm();
                     max = max.max(d);
                     sum += d * d;
                     count += 1;
@@ -552,15 +583,69 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     }
 }
 
-/// The unit normal of a patch of 3-D points at (s, t), from its partials; `None` where they are
-/// parallel. Points of other dimensions have no normal.
-fn patch_normal<P: ControlPoint>(patch: &BezierPatch<P>, s: f64, t: f64) -> Option<DVec3> {
-    if P::DIM != 3 {
-        return None;
+/// The number of pieces if `breaks` are the uniform 0, 1/p, …, 1 (to rounding), else `None`.
+fn uniform_pieces(breaks: &[f64]) -> Option<usize> {
+    let p = breaks.len().checked_sub(1).filter(|&p| p > 0)?;
+    breaks
+        .iter()
+        .enumerate()
+        .all(|(i, &x)| (x - i as f64 / p as f64).abs() <= 4.0 * f64::EPSILON)
+        .then_some(p)
+}
+
+/// The inverse of the cubic Bernstein matrix at 0, ⅓, ⅔, 1, `Bᵢⱼ = B³ⱼ(i/3)`: the control
+/// values of the cubic through four equally spaced values.
+fn cubic_interpolation_inverse() -> [[f64; 4]; 4] {
+    // From the Bernstein forms: c₀ = f₀, c₃ = f₃, and the middle two solve the 2×2 system of
+    // the inner samples.
+    [
+        [1.0, 0.0, 0.0, 0.0],
+        [-5.0 / 6.0, 3.0, -1.5, 1.0 / 3.0],
+        [1.0 / 3.0, -1.5, 3.0, -5.0 / 6.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+}
+
+/// Patches from the basis pieces of both directions applied to the grid (§5.7):
+/// `Q[a][b][j][i] = Σₖ Σₗ Pᵤ[a][k][j]·Pᵥ[b][l][i]·xₖₗ`, along v first.
+fn thesis_patches_direct<P: ControlPoint>(
+    surface: &HarmonicSurface<P>,
+    bu: &BasisPieces,
+    bv: &BasisPieces,
+) -> Vec<BezierPatch<P>> {
+    let (m, n) = (surface.m(), surface.n());
+    let (du, dv) = (bu.degree(), bv.degree());
+    let (pu, pv) = (bu.n_pieces(), bv.n_pieces());
+    // rows[k][b][i] = Σₗ P[b][l][i]·xₖₗ.
+    let mut rows = vec![P::ZERO; m * pv * (dv + 1)];
+    for b in 0..pv {
+        let weights: Vec<&[f64]> = (0..n).map(|l| bv.control(b, l)).collect();
+        for k in 0..m {
+            for i in 0..=dv {
+                let sum = (0..n).fold(P::ZERO, |acc, l| acc + surface.point(k, l) * weights[l][i]);
+                rows[(k * pv + b) * (dv + 1) + i] = sum;
+            }
+        }
     }
-    let (_, pu, pv) = patch.eval_with_partials(s, t);
-    let v3 = |p: P| DVec3::new(p.coord(0), p.coord(1), p.coord(2));
-    v3(pu).cross(v3(pv)).try_normalize()
+    let mut patches = Vec::with_capacity(pu * pv);
+    for a in 0..pu {
+        let weights: Vec<&[f64]> = (0..m).map(|k| bu.control(a, k)).collect();
+        for b in 0..pv {
+            let control: Vec<Vec<P>> = (0..=du)
+                .map(|j| {
+                    (0..=dv)
+                        .map(|i| {
+                            (0..m).fold(P::ZERO, |acc, k| {
+                                acc + rows[(k * pv + b) * (dv + 1) + i] * weights[k][j]
+                            })
+                        })
+                        .collect()
+                })
+                .collect();
+            patches.push(BezierPatch::new(control));
+        }
+    }
+    patches
 }
 
 /// The angle between unit vectors, accurate near 0.
@@ -569,26 +654,33 @@ fn angle(a: DVec3, b: DVec3) -> f64 {
 }
 
 /// The largest normal jump across the edges between neighbouring patches (both directions,
-/// the closing edges included: the surface is periodic).
+/// wrapping around), sampled at `SAMPLES_PER_SIDE + 1` points per edge; 0 for points that are
+/// not 3-D.
+///
+/// On an edge u = 0 or 1 a patch's partials are curves of its boundary rows: ∂p/∂v is the
+/// derivative of the boundary row and ∂p/∂u is m times the difference of the last two rows
+/// (§4.3), so the normals along every edge come from Bernstein tables at the sample points
+/// shared by all patches of one degree.
 fn max_normal_jump<P: ControlPoint>(b: &SurfaceBezier<P>) -> f64 {
+    if P::DIM != 3 {
+        return 0.0;
+    }
     let (nu, nv) = (b.u_breaks.len() - 1, b.v_breaks.len() - 1);
     let patch = |a: usize, c: usize| &b.patches[(a % nu) * nv + (c % nv)];
     let mut worst: f64 = 0.0;
+    let mut tables = EdgeTables::default();
     for a in 0..nu {
         for c in 0..nv {
-            for i in 0..=SAMPLES_PER_SIDE {
-                let x = i as f64 / SAMPLES_PER_SIDE as f64;
-                // The edge u = end of patch a, between (a, c) and (a + 1, c).
-                if let (Some(l), Some(r)) =
-                    (patch_normal(patch(a, c), 1.0, x), patch_normal(patch(a + 1, c), 0.0, x))
-                {
-                    worst = worst.max(angle(l, r));
-                }
-                // The edge v = end of patch c, between (a, c) and (a, c + 1).
-                if let (Some(l), Some(r)) =
-                    (patch_normal(patch(a, c), x, 1.0), patch_normal(patch(a, c + 1), x, 0.0))
-                {
-                    worst = worst.max(angle(l, r));
+            let here = patch(a, c);
+            // The edge u = end of patch a, between (a, c) and (a + 1, c).
+            let (l, r) =
+                (tables.normals(here, Edge::UEnd), tables.normals(patch(a + 1, c), Edge::UStart));
+            // The edge v = end of patch c, between (a, c) and (a, c + 1).
+            let (lv, rv) =
+                (tables.normals(here, Edge::VEnd), tables.normals(patch(a, c + 1), Edge::VStart));
+            for (x, y) in l.iter().zip(&r).chain(lv.iter().zip(&rv)) {
+                if let (Some(x), Some(y)) = (x, y) {
+                    worst = worst.max(angle(*x, *y));
                 }
             }
         }
@@ -596,7 +688,254 @@ fn max_normal_jump<P: ControlPoint>(b: &SurfaceBezier<P>) -> f64 {
     worst
 }
 
+/// A side of a patch's parameter square.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Edge {
+    /// u = 0.
+    UStart,
+    /// u = 1.
+    UEnd,
+    /// v = 0.
+    VStart,
+    /// v = 1.
+    VEnd,
+}
+
+/// Bernstein values and first derivatives at the edge samples i/`SAMPLES_PER_SIDE`, by degree.
+#[derive(Default)]
+struct EdgeTables {
+    by_degree: Vec<DegreeTable>,
+}
+
+/// The tables of one degree.
+struct DegreeTable {
+    degree: usize,
+    /// `values[sample][i]`: Bᵢ at the sample.
+    values: Vec<Vec<f64>>,
+    /// `derivs[sample][i]`: Bᵢ′ at the sample.
+    derivs: Vec<Vec<f64>>,
+}
+
+impl EdgeTables {
+    /// The tables of `degree`, made on first use.
+    fn get(&mut self, degree: usize) -> (&[Vec<f64>], &[Vec<f64>]) {
+        let at = match self.by_degree.iter().position(|t| t.degree == degree) {
+            Some(at) => at,
+            None => {
+                let basis = hi_bezier::Bernstein::new(degree);
+                let xs = (0..=SAMPLES_PER_SIDE).map(|i| i as f64 / SAMPLES_PER_SIDE as f64);
+                let values = xs.clone().map(|x| basis.values(x)).collect();
+                let derivs = xs.map(|x| basis.derivs(x, 1)).collect();
+                self.by_degree.push(DegreeTable { degree, values, derivs });
+                self.by_degree.len() - 1
+            }
+        };
+        let table = &self.by_degree[at];
+        (&table.values, &table.derivs)
+    }
+
+    /// The unit normals pᵤ × pᵥ along `edge` of `patch` at the samples (`None` where the
+    /// partials are parallel).
+    fn normals<P: ControlPoint>(
+        &mut self,
+        patch: &BezierPatch<P>,
+        edge: Edge,
+    ) -> Vec<Option<DVec3>> {
+        let (du, dv) = (patch.degree_u(), patch.degree_v());
+        let x = |j: usize, k: usize| {
+            let p = patch.control_point(j, k).unwrap_or(P::ZERO);
+            DVec3::new(p.coord(0), p.coord(1), p.coord(2))
+        };
+        // The boundary line and its neighbour inside, with the degree across the edge and the
+        // sign that makes the difference a derivative in increasing parameter.
+        let (along, line, inner, across, sign): (usize, Vec<DVec3>, Vec<DVec3>, usize, f64) =
+            match edge {
+                Edge::UStart => (
+                    dv,
+                    (0..=dv).map(|k| x(0, k)).collect(),
+                    (0..=dv).map(|k| x(1.min(du), k)).collect(),
+                    du,
+                    -1.0,
+                ),
+                Edge::UEnd => (
+                    dv,
+                    (0..=dv).map(|k| x(du, k)).collect(),
+                    (0..=dv).map(|k| x(du.saturating_sub(1), k)).collect(),
+                    du,
+                    1.0,
+                ),
+                Edge::VStart => (
+                    du,
+                    (0..=du).map(|j| x(j, 0)).collect(),
+                    (0..=du).map(|j| x(j, 1.min(dv))).collect(),
+                    dv,
+                    -1.0,
+                ),
+                Edge::VEnd => (
+                    du,
+                    (0..=du).map(|j| x(j, dv)).collect(),
+                    (0..=du).map(|j| x(j, dv.saturating_sub(1))).collect(),
+                    dv,
+                    1.0,
+                ),
+            };
+        let (values, derivs) = self.get(along);
+        values
+            .iter()
+            .zip(derivs)
+            .map(|(w, dw)| {
+                // The derivative along the edge, and the one across it.
+                let d_along = line.iter().zip(dw).fold(DVec3::ZERO, |acc, (p, w)| acc + *p * *w);
+                let d_across = line
+                    .iter()
+                    .zip(&inner)
+                    .zip(w)
+                    .fold(DVec3::ZERO, |acc, ((p, q), w)| acc + (*p - *q) * *w)
+                    * (sign * across as f64);
+                let (pu, pv) = match edge {
+                    Edge::UStart | Edge::UEnd => (d_across, d_along),
+                    Edge::VStart | Edge::VEnd => (d_along, d_across),
+                };
+                pu.cross(pv).try_normalize()
+            })
+            .collect()
+    }
+}
+
 /// The diagonal of the bounding box of `points` (0 for none).
 fn bounding_diagonal<P: ControlPoint>(points: &[P]) -> f64 {
     Aabb::from_points(points).map_or(0.0, |b| b.size().norm())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 3-D grid with no symmetry: m × n points on a bumpy torus.
+    fn bumpy(m: usize, n: usize) -> HarmonicSurface<DVec3> {
+        let rows = (0..m)
+            .map(|j| {
+                (0..n)
+                    .map(|k| {
+                        let (u, v) = (
+                            std::f64::consts::TAU * j as f64 / m as f64,
+                            std::f64::consts::TAU * k as f64 / n as f64,
+                        );
+                        let r = 1.0 + 0.3 * (3.0 * u + 1.0).sin() * (2.0 * v).cos();
+                        DVec3::new(
+                            (3.0 + r * v.cos()) * u.cos(),
+                            (3.0 + r * v.cos()) * u.sin(),
+                            r * v.sin(),
+                        )
+                    })
+                    .collect()
+            })
+            .collect();
+        HarmonicSurface::new(rows)
+    }
+
+    /// The normal jump by evaluating both patches at every edge sample with their partials.
+    fn jump_by_evaluation(b: &SurfaceBezier<DVec3>) -> f64 {
+        let (nu, nv) = (b.u_breaks.len() - 1, b.v_breaks.len() - 1);
+        let patch = |a: usize, c: usize| &b.patches[(a % nu) * nv + (c % nv)];
+        let normal = |p: &BezierPatch<DVec3>, s: f64, t: f64| {
+            let (_, pu, pv) = p.eval_with_partials(s, t);
+            pu.cross(pv).try_normalize()
+        };
+        let mut worst: f64 = 0.0;
+        for a in 0..nu {
+            for c in 0..nv {
+                for i in 0..=SAMPLES_PER_SIDE {
+                    let x = i as f64 / SAMPLES_PER_SIDE as f64;
+                    let pairs = [
+                        (normal(patch(a, c), 1.0, x), normal(patch(a + 1, c), 0.0, x)),
+                        (normal(patch(a, c), x, 1.0), normal(patch(a, c + 1), x, 0.0)),
+                    ];
+                    for (l, r) in pairs {
+                        if let (Some(l), Some(r)) = (l, r) {
+                            worst = worst.max(angle(l, r));
+                        }
+                    }
+                }
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn edge_normals_from_boundary_rows_match_evaluation() {
+        for (m, n) in [(4, 4), (5, 6), (7, 3)] {
+            let surface = bumpy(m, n);
+            for scheme in [
+                BezierScheme::ThesisCubic,
+                BezierScheme::ThesisQuintic,
+                BezierScheme::Hermite(HermiteDegree::Cubic),
+            ] {
+                let b = surface.to_bezier(scheme, Some(1e-2)).expect("converts");
+                let (fast, slow) = (b.report.max_normal_jump, jump_by_evaluation(&b));
+                assert!(slow > 0.0 || scheme != BezierScheme::ThesisCubic, "C0 patches jump");
+                assert!(
+                    (fast - slow).abs() <= 1e-12 * slow.max(1.0),
+                    "{m}×{n} {scheme:?}: {fast} against {slow}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn cubic_patches_by_fft_are_the_basis_sums() {
+        // Odd and even sizes both ways: the FFT samples against §5.7's sums of basis pieces.
+        for (m, n) in [(4, 4), (5, 6), (7, 3), (8, 9)] {
+            let surface = bumpy(m, n);
+            let fast = surface.thesis_cubic_patches().expect("samples");
+            let (bu, bv) = (
+                BasisPieces::thesis_cubic(m).expect("m ≥ 2"),
+                BasisPieces::thesis_cubic(n).expect("n ≥ 2"),
+            );
+            let slow = thesis_patches_direct(&surface, &bu, &bv);
+            assert_eq!(fast.len(), slow.len(), "{m}×{n}: one patch per cell");
+            for (p, q) in fast.iter().zip(&slow) {
+                for (x, y) in p.control_points().iter().zip(q.control_points()) {
+                    assert!((*x - *y).length() < 1e-12, "{m}×{n}: {x} against {y}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_measured_deviation_is_that_of_direct_evaluation() {
+        // The report's deviation (FFT samples for uniform breaks) against p(u, v) and the
+        // patches evaluated one point at a time.
+        let surface = bumpy(5, 6);
+        let b = surface.to_bezier(BezierScheme::ThesisCubic, None).expect("converts");
+        let k = SAMPLES_PER_SIDE;
+        let nv = b.v_breaks.len() - 1;
+        let mut max: f64 = 0.0;
+        for (idx, patch) in b.patches.iter().enumerate() {
+            let (a, c) = (idx / nv, idx % nv);
+            for i in 0..=k {
+                for j in 0..=k {
+                    let (s, t) = (i as f64 / k as f64, j as f64 / k as f64);
+                    let u = b.u_breaks[a] + (b.u_breaks[a + 1] - b.u_breaks[a]) * s;
+                    let v = b.v_breaks[c] + (b.v_breaks[c + 1] - b.v_breaks[c]) * t;
+                    max = max.max((patch.eval(s, t) - surface.eval(u, v)).length());
+                }
+            }
+        }
+        assert!(max > 1e-6, "the cubic scheme deviates");
+        assert!(
+            (b.report.max_deviation - max).abs() < 1e-12,
+            "{} against {max}",
+            b.report.max_deviation
+        );
+    }
+
+    #[test]
+    fn uniform_breaks_are_recognised() {
+        assert_eq!(uniform_pieces(&[0.0, 0.25, 0.5, 0.75, 1.0]), Some(4), "uniform");
+        let third = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
+        assert_eq!(uniform_pieces(&third), Some(3), "thirds, rounded");
+        assert_eq!(uniform_pieces(&[0.0, 0.3, 1.0]), None, "uneven");
+        assert_eq!(uniform_pieces(&[0.0]), None, "no piece");
+    }
 }

@@ -6,6 +6,9 @@
 //! Scans: two built in (points on an ellipsoid and on a bumpy star-shaped solid) and the real
 //! models of `shared/data/models` when they are there (the section says which were used).
 //! Peers run through `xtask/peers/fit_peers.py`.
+//!
+//! How the costs grow: 4× upsampling (ours and scipy) and the fit of the ellipsoid against the
+//! number of texels, 64² … 512², on log axes (`docs/perf-fit.svg`).
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
@@ -16,19 +19,66 @@ use std::time::Duration;
 
 use anyhow::{Context, Result, bail};
 use glam::DVec3;
+use hi_curve::bezier::BezierScheme;
 use hi_geomimage::distance::{bounding_diagonal, distances_to_mesh};
 use hi_geomimage::scan::{Scan, read_scan};
-use hi_geomimage::{FitOptions, Layout, fit};
+use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
 use hi_surface::HarmonicSurface;
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::{machine, median_time, ms, ratio, table};
+use super::{Growth, Headline, Section, growth_plot, machine, median_time, ms, ratio, table};
 
 /// Timed runs of our upsampling (after a warm-up).
 const RUNS: usize = 5;
 
 /// The geometry image of the pipeline: rows × columns.
 const IMAGE: usize = 256;
+
+/// Image sides of the growth plot.
+const GROWTH_SIDES: [usize; 4] = [64, 128, 256, 512];
+
+/// The thesis's Table 5.1: about 7 minutes of harmonic interpolation per model.
+const THESIS_INTERPOLATION: Duration = Duration::from_secs(7 * 60);
+
+/// The thesis's §5.8: 5 min 43 s to take the mannequin to Bézier patches.
+const THESIS_MANNEQUIN: Duration = Duration::from_secs(5 * 60 + 43);
+
+/// The thesis's §5.8: 43 minutes for Spock.
+const THESIS_SPOCK: Duration = Duration::from_secs(43 * 60);
+
+/// One run of §5.8's combined pipeline.
+struct Combined {
+    /// The time of each stage: (name, seconds).
+    stages: Vec<(String, f64)>,
+    /// The whole run.
+    total: Duration,
+    /// The number of Bézier patches.
+    patches: usize,
+}
+
+/// §5.8's combined pipeline on `scan`: an [`IMAGE`]×[`IMAGE`] contour image, smoothed (σ = 1
+/// texel), reduced to a quarter of its texels and converted to the thesis's cubic patches.
+fn combined(scan: &Scan) -> Result<Combined> {
+    let options = FitOptions {
+        layout: Layout::FlatOctahedron,
+        texels: Texels::Contours,
+        rows: IMAGE,
+        cols: IMAGE,
+        smoothing: Some(Smoothing::Gaussian { sigma: 1.0 }),
+        reduce: Some(0.25),
+        error_oversample: 0,
+        ..FitOptions::default()
+    };
+    let start = std::time::Instant::now();
+    let fitted = fit(scan, &options, &mut |_| {})?;
+    let converting = std::time::Instant::now();
+    let patches = fitted.surface.to_bezier(BezierScheme::ThesisCubic, None)?;
+    let end = std::time::Instant::now();
+    let mut stages: Vec<(String, f64)> =
+        fitted.report.stages.iter().map(|s| (s.name.to_owned(), s.seconds)).collect();
+    stages.push(("Bézier patches".to_owned(), (end - converting).as_secs_f64()));
+    Ok(Combined { stages, total: end - start, patches: patches.report.patches })
+}
 
 /// Depth of the screened Poisson octree.
 const POISSON_DEPTH: usize = 8;
@@ -141,13 +191,72 @@ fn errors(e: [f64; 3]) -> String {
     format!("{:.1e} / {:.1e} / {:.1e}", e[0], e[1], e[2])
 }
 
+/// Our 4× upsampling of a `size`² three-channel image on one thread and on every core, and
+/// scipy's time for the same work (`None` when scipy is not installed).
+fn upsample(root: &Path, size: usize) -> Result<(Duration, Duration, Option<Duration>)> {
+    let grid: Vec<DVec3> = (0..size * size)
+        .map(|i| {
+            let x = i as f64;
+            DVec3::new((0.37 * x).sin(), (0.11 * x).cos(), (0.05 * x).sin() * 0.5)
+        })
+        .collect();
+    let surface = HarmonicSurface::try_from_flat(size, size, grid)?;
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
+    let single = one.install(|| {
+        median_time(RUNS, || {
+            std::hint::black_box(surface.sample_uniform(4 * size, 4 * size, 0, 0)?);
+            Ok(())
+        })
+    })?;
+    let all = median_time(RUNS, || {
+        std::hint::black_box(surface.sample_uniform(4 * size, 4 * size, 0, 0)?);
+        Ok(())
+    })?;
+    let n = size.to_string();
+    let scipy = peer(root, &["resample", n.as_str(), n.as_str(), "5"])?;
+    Ok((single, all, scipy.map(|v| seconds(&v, "seconds"))))
+}
+
+/// The growth series: 4× upsampling (ours on one thread, scipy) and the fit of `scan` (every
+/// stage but the error measurement), against the texels of the image.
+fn growth(root: &Path, scan: &Scan, bar: &ProgressBar) -> Result<Vec<Growth>> {
+    let (mut ours, mut theirs, mut fits) = (Vec::new(), Vec::new(), Vec::new());
+    for side in GROWTH_SIDES {
+        bar.set_message(format!("growth: {side}²"));
+        let texels = (side * side) as f64;
+        let (single, _, scipy) = upsample(root, side)?;
+        ours.push((texels, single));
+        if let Some(t) = scipy {
+            theirs.push((texels, t));
+        }
+        let options = FitOptions {
+            layout: Layout::FlatOctahedron,
+            rows: side,
+            cols: side,
+            error_oversample: 0,
+            ..FitOptions::default()
+        };
+        let t = median_time(3, || {
+            std::hint::black_box(fit(scan, &options, &mut |_| {})?);
+            Ok(())
+        })?;
+        fits.push((texels, t));
+        bar.inc(1);
+    }
+    Ok(vec![
+        Growth { name: "4× upsampling (ours, 1 thread)".to_owned(), points: ours },
+        Growth { name: "4× upsampling (scipy)".to_owned(), points: theirs },
+        Growth { name: "fit of the ellipsoid (ours)".to_owned(), points: fits },
+    ])
+}
+
 /// Measures everything and returns the report's section.
-pub(super) fn run(root: &Path) -> Result<String> {
+pub(super) fn run(root: &Path) -> Result<Section> {
     let dir = root.join("target/xtask-bench/fit");
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let scans = scans(root);
     let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new(2 * scans.len() as u64 + 2);
+        let bar = ProgressBar::new((3 * scans.len() + 4 + GROWTH_SIDES.len()) as u64);
         bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
         bar
     } else {
@@ -162,6 +271,8 @@ pub(super) fn run(root: &Path) -> Result<String> {
     let mut pipeline = Vec::new();
     let mut poisson = Vec::new();
     let mut sources = Vec::new();
+    let mut headlines = Vec::new();
+    let mut slowest_interpolation = Duration::ZERO;
     for (name, source, scan) in &scans {
         sources.push(format!("{name}: {source}"));
         let scan = match scan {
@@ -180,6 +291,8 @@ pub(super) fn run(root: &Path) -> Result<String> {
         let total: f64 = r.stages.iter().map(|s| s.seconds).sum();
         // The fit a user waits for: every stage but the measurement of its error.
         let without_error = total - stage("fit error");
+        slowest_interpolation =
+            slowest_interpolation.max(Duration::from_secs_f64(stage("rasterisation")));
         let ours = r.errors.as_ref().map(|d| d.relative());
         let stages: Vec<String> =
             r.stages.iter().map(|s| format!("{} {:.3}", s.name, s.seconds)).collect();
@@ -210,6 +323,16 @@ pub(super) fn run(root: &Path) -> Result<String> {
                 "–".to_owned(),
             ],
             Some(v) => {
+                let poisson_time = seconds(&v, "seconds") + seconds(&v, "normals_seconds");
+                if name == "bunny" || (name == "ellipsoid" && !scans.iter().any(|s| s.0 == "bunny"))
+                {
+                    headlines.push(Headline {
+                        what: format!("surface from the {name} scan's points"),
+                        ours: Duration::from_secs_f64(without_error),
+                        peer: "screened Poisson (pymeshlab)".to_owned(),
+                        theirs: Some(poisson_time),
+                    });
+                }
                 let mesh =
                     read_scan(&output).map_err(|e| anyhow::anyhow!("{}: {e}", output.display()))?;
                 let diagonal = bounding_diagonal(&scan.points);
@@ -217,10 +340,7 @@ pub(super) fn run(root: &Path) -> Result<String> {
                 vec![
                     name.clone(),
                     format!("{without_error:.3}"),
-                    format!(
-                        "{:.3}",
-                        (seconds(&v, "seconds") + seconds(&v, "normals_seconds")).as_secs_f64()
-                    ),
+                    format!("{:.3}", poisson_time.as_secs_f64()),
                     ours.map_or_else(|| "–".to_owned(), errors),
                     errors(theirs),
                 ]
@@ -232,33 +352,17 @@ pub(super) fn run(root: &Path) -> Result<String> {
     let mut upsampling = Vec::new();
     for size in [256usize, 257] {
         bar.set_message(format!("4× upsampling {size}²"));
-        let grid: Vec<DVec3> = (0..size * size)
-            .map(|i| {
-                let x = i as f64;
-                DVec3::new((0.37 * x).sin(), (0.11 * x).cos(), (0.05 * x).sin() * 0.5)
-            })
-            .collect();
-        let surface = HarmonicSurface::try_from_flat(size, size, grid)?;
-        let one = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
-        let single = one.install(|| {
-            median_time(RUNS, || {
-                std::hint::black_box(surface.sample_uniform(4 * size, 4 * size, 0, 0)?);
-                Ok(())
-            })
-        })?;
-        let all = median_time(RUNS, || {
-            std::hint::black_box(surface.sample_uniform(4 * size, 4 * size, 0, 0)?);
-            Ok(())
-        })?;
-        let n = size.to_string();
-        let scipy = peer(root, &["resample", n.as_str(), n.as_str(), "5"])?;
+        let (single, all, scipy) = upsample(root, size)?;
         let (theirs, r) = match scipy {
-            Some(v) => {
-                let t = seconds(&v, "seconds");
-                (ms(t), ratio(t, single))
-            }
+            Some(t) => (ms(t), ratio(t, single)),
             None => ("scipy not installed".to_owned(), "–".to_owned()),
         };
+        headlines.push(Headline {
+            what: format!("4× upsampling of a {size}² three-channel image, 1 thread"),
+            ours: single,
+            peer: "`scipy.signal.resample` on both axes".to_owned(),
+            theirs: scipy,
+        });
         upsampling.push(vec![
             format!("{size}×{size}×3 → {}×{}", 4 * size, 4 * size),
             ms(single),
@@ -268,6 +372,59 @@ pub(super) fn run(root: &Path) -> Result<String> {
         ]);
         bar.inc(1);
     }
+    if !slowest_interpolation.is_zero() {
+        headlines.push(Headline {
+            what: "harmonic interpolation at 4× of a 256² image (slowest scan)".to_owned(),
+            ours: slowest_interpolation,
+            peer: "the thesis's Table 5.1 (about 7 min, 2005 hardware)".to_owned(),
+            theirs: Some(THESIS_INTERPOLATION),
+        });
+    }
+    // §5.8's combined pipeline: the head stand-ins of figures 5.29 and 5.30 (the thesis's
+    // mannequin and Spock), then every scan.
+    let mut pipeline58 = Vec::new();
+    let heads = [
+        ("head (mannequin stand-in)", crate::figures::scans::head_scan(false)?),
+        ("pointed head (Spock stand-in)", crate::figures::scans::head_scan(true)?),
+    ];
+    let all = heads
+        .iter()
+        .map(|(n, s)| (n.to_string(), s))
+        .chain(scans.iter().filter_map(|(n, _, s)| s.as_ref().ok().map(|s| (n.clone(), s))));
+    for (name, scan) in all {
+        bar.set_message(format!("§5.8 pipeline {name}"));
+        let Combined { stages, total, patches } = combined(scan)?;
+        let anchor = if name.starts_with("head") {
+            Some(("5 min 43 s (mannequin)", THESIS_MANNEQUIN))
+        } else if name.starts_with("pointed") {
+            Some(("43 min (Spock)", THESIS_SPOCK))
+        } else {
+            None
+        };
+        if let Some((what, thesis)) = anchor {
+            headlines.push(Headline {
+                what: format!("§5.8's whole pipeline to Bézier patches, {name}"),
+                ours: total,
+                peer: format!("the thesis's {what}, 2005 hardware"),
+                theirs: Some(thesis),
+            });
+        }
+        let stages: Vec<String> = stages.iter().map(|(n, t)| format!("{n} {t:.3}")).collect();
+        pipeline58.push(vec![
+            name,
+            scan.points.len().to_string(),
+            patches.to_string(),
+            format!("{:.3}", total.as_secs_f64()),
+            stages.join("; "),
+            anchor
+                .map_or_else(|| "–".to_owned(), |(what, t)| format!("{what}: {}", ratio(t, total))),
+        ]);
+        bar.inc(1);
+    }
+    let growth = match scans.first() {
+        Some((_, _, Ok(scan))) => growth(root, scan, &bar)?,
+        _ => bail!("the built-in ellipsoid is missing"),
+    };
     bar.finish_and_clear();
     let mut s = String::new();
     let _ = write!(
@@ -312,6 +469,22 @@ pub(super) fn run(root: &Path) -> Result<String> {
     ));
     let _ = write!(
         s,
+        "\n### §5.8's combined pipeline, to Bézier patches\n\n\
+         What the thesis timed at 5 min 43 s for its mannequin and 43 min for Spock: a \
+         {IMAGE}×{IMAGE} flattened-octahedron image whose rows are harmonic contours through the \
+         scan points the rays located (`Texels::Contours`), smoothed by a Gaussian of σ = 1 texel, \
+         reduced to a quarter of its texels by Theorem 5.3, and converted to the thesis's cubic \
+         Bézier patches (§5.7). One run each, in seconds. The mannequin and Spock are not \
+         available: the head scans of figures 5.29 and 5.30 (60 000 noisy points on the head of \
+         figure 4.35, with round and with pointed ears) stand in for them; the thesis's image \
+         size is illegible in the extracted text.\n\n"
+    );
+    s.push_str(&table(
+        &["scan", "points", "patches", "total (s)", "stages (s)", "the thesis / ours"],
+        &pipeline58,
+    ));
+    let _ = write!(
+        s,
         "\n### Against screened Poisson reconstruction\n\n\
          The same points given to pymeshlab's `generate_surface_reconstruction_screened_poisson` \
          (depth {POISSON_DEPTH}, normals estimated from 10 neighbours first; its time includes \
@@ -327,7 +500,22 @@ pub(super) fn run(root: &Path) -> Result<String> {
         ],
         &poisson,
     ));
-    Ok(s)
+    let plot = growth_plot(
+        root,
+        "perf-fit.svg",
+        "4× upsampling and fitting against image size",
+        "texels",
+        &growth,
+    )?;
+    let _ = write!(
+        s,
+        "\n### Growth\n\n\
+         4× upsampling of a three-channel image (ours on one thread, scipy as above) and the fit \
+         of the built-in ellipsoid (flattened octahedron, every stage but the error measurement, \
+         median of 3 runs), for images of {} texels:\n\n{plot}",
+        GROWTH_SIDES.map(|n| format!("{n}²")).join(", ")
+    );
+    Ok(Section { body: s, headlines })
 }
 
 /// A path as a UTF-8 string for a command line.

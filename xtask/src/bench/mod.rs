@@ -10,10 +10,17 @@
 //!
 //! | topic | what |
 //! |---|---|
-//! | [`subdivision`] | one step of each scheme of §4.5 on ≥ 100 000 faces, against `OpenMesh` and CGAL |
-//! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab) |
+//! | [`curves`] | uniform sampling of a harmonic curve: the thesis's direct sum, our FFT path and `scipy.signal.resample`, n = 16 … 16 384 |
+//! | [`subdivision`] | one step of each scheme of §4.5 on ≥ 100 000 faces, against `OpenMesh` and CGAL, and Loop and Catmull-Clark against mesh size |
+//! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab), and both against image size |
 //! | [`render`] | the torus by interval Newton, interval bisection, Bézier patches and a mesh (§5.6), and time against image size |
+//!
+//! `cargo xtask bench` (or `bench all`) runs every topic in turn and writes the whole report
+//! afresh, with a summary table of the headline ratios at the top. Every topic also plots how
+//! its costs grow with the size of the problem, on log axes, with the fitted exponent of each
+//! curve ([`growth_plot`]).
 
+mod curves;
 mod fit;
 mod render;
 mod subdivision;
@@ -24,60 +31,232 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
+use glam::DVec2;
+
+use crate::figures::plot::{Legend, Marker, PALETTE, Pen, Plot};
 
 /// The report, relative to the workspace root.
 const REPORT: &str = "docs/performance.md";
 
 /// The topics, in the order of the report.
-const TOPICS: &[&str] = &["subdivision", "fit", "render"];
+const TOPICS: &[&str] = &["curves", "subdivision", "fit", "render"];
 
-/// Runs the benchmarks of `topic` and rewrites its section of the report.
+/// What one topic measured: its section of the report and its headline rows for the summary.
+pub(crate) struct Section {
+    /// The section's Markdown, from its `##` heading on.
+    pub(crate) body: String,
+    /// The summary rows: what was measured, our time, the peer and its time, peer / ours.
+    pub(crate) headlines: Vec<Headline>,
+}
+
+/// One row of the summary: a measurement of ours against a peer's, in the same run.
+pub(crate) struct Headline {
+    /// What was measured, on what input.
+    pub(crate) what: String,
+    /// Our time.
+    pub(crate) ours: Duration,
+    /// The peer (a program, or a baseline of our own such as the direct sum).
+    pub(crate) peer: String,
+    /// The peer's time, if it was measured.
+    pub(crate) theirs: Option<Duration>,
+}
+
+impl Headline {
+    /// The summary row: topic, what, ours, peer, theirs, peer / ours.
+    fn row(&self, topic: &str) -> Vec<String> {
+        vec![
+            topic.to_owned(),
+            self.what.clone(),
+            ms(self.ours),
+            self.peer.clone(),
+            self.theirs.map_or_else(|| "not measured".to_owned(), ms),
+            self.theirs.map_or_else(|| "–".to_owned(), |t| ratio(t, self.ours)),
+        ]
+    }
+}
+
+/// Runs the benchmarks of `topic` (every topic for `None` or `"all"`) and rewrites its
+/// section of the report (the whole report for every topic).
 ///
 /// # Errors
 ///
 /// For an unknown topic, a failed measurement of our own code, or an unwritable report. A peer
 /// that is missing or fails is reported in the section, not as an error.
 pub(crate) fn run(root: &Path, topic: Option<&str>) -> Result<()> {
-    let topic = match topic {
-        Some(t) if TOPICS.contains(&t) => t,
-        Some(t) => bail!("unknown bench topic {t:?}; topics: {}", TOPICS.join(", ")),
-        None => bail!("usage: cargo xtask bench <{}>", TOPICS.join("|")),
-    };
-    let body = match topic {
-        "subdivision" => subdivision::run(root)?,
-        "fit" => fit::run(root)?,
-        "render" => render::run(root)?,
-        _ => unreachable!("checked against TOPICS"),
+    let topics: Vec<&str> = match topic {
+        None | Some("all") => TOPICS.to_vec(),
+        Some(t) if TOPICS.contains(&t) => vec![t],
+        Some(t) => bail!("unknown bench topic {t:?}; topics: all, {}", TOPICS.join(", ")),
     };
     let path = root.join(REPORT);
-    let old = std::fs::read_to_string(&path).unwrap_or_default();
-    let new = with_section(&old, topic, &body);
-    std::fs::write(&path, new).with_context(|| format!("writing {}", path.display()))?;
-    println!("bench {topic}: section written to {REPORT}");
+    let mut doc = if topics.len() == TOPICS.len() {
+        String::new()
+    } else {
+        std::fs::read_to_string(&path).unwrap_or_default()
+    };
+    for (k, topic) in topics.iter().enumerate() {
+        if topics.len() > 1 {
+            eprintln!("bench {}/{}: {topic}", k + 1, topics.len());
+        }
+        let section = match *topic {
+            "curves" => curves::run(root)?,
+            "subdivision" => subdivision::run(root)?,
+            "fit" => fit::run(root)?,
+            "render" => render::run(root)?,
+            _ => unreachable!("checked against TOPICS"),
+        };
+        doc = with_section(&doc, topic, &section.body);
+        let rows: Vec<Vec<String>> = section.headlines.iter().map(|h| h.row(topic)).collect();
+        doc = with_summary(&doc, topic, &rows);
+        // Written after every topic, so that a failure later keeps what was measured.
+        std::fs::write(&path, &doc).with_context(|| format!("writing {}", path.display()))?;
+        println!("bench {topic}: section written to {REPORT}");
+    }
     Ok(())
 }
 
 /// The report's heading, written when the file is new.
 const HEADER: &str = "# Performance\n\n\
-Measured by `cargo xtask bench <topic>` (see `xtask/src/bench/`): each section is one run, with \
-our code and the peer programs timed side by side on the same inputs and the same machine. \
-Ratios are the peer's time over ours: above 1, we are faster. Timings of our code are the median \
-of several runs after a warm-up, in-process, in the release profile; peer timings are those the \
-peer programs print for the same work, so file reading and writing are left out on both sides. \
-The thesis's own timings (2005 hardware) are quoted as anchors where they exist.\n";
+Measured by `cargo xtask bench` (every topic; `cargo xtask bench <topic>` for one; see \
+`xtask/src/bench/`): each section is one run, with our code and the peer programs timed side by \
+side on the same inputs and the same machine. Ratios are the peer's time over ours: above 1, we \
+are faster. Timings of our code are the median of several runs after a warm-up, in-process, in \
+the release profile; peer timings are those the peer programs print for the same work, so file \
+reading and writing are left out on both sides. The thesis's own timings (2005 hardware) are \
+quoted as anchors where they exist. Each section ends with a plot of how its costs grow with \
+the size of the problem (log axes), and the fitted exponent of each curve: time ∝ size^slope.\n";
 
-/// `doc` with the section of `topic` replaced by `body` (appended if absent; the header added
-/// if `doc` is empty).
+/// The summary's markers and table header.
+const SUMMARY_START: &str = "<!-- bench:summary -->";
+/// The end of the summary.
+const SUMMARY_END: &str = "<!-- /bench:summary -->";
+/// The summary's columns.
+const SUMMARY_HEADER: [&str; 6] =
+    ["topic", "measured", "ours (ms)", "against", "their time (ms)", "theirs / ours"];
+
+/// `doc` with the summary rows of `topic` replaced by `rows`, the other topics' rows kept in
+/// the order of [`TOPICS`]. The summary sits after the header, before the first section.
+fn with_summary(doc: &str, topic: &str, rows: &[Vec<String>]) -> String {
+    let doc = if doc.trim().is_empty() { HEADER.to_owned() } else { doc.to_owned() };
+    let (before, old, after) = match (doc.find(SUMMARY_START), doc.find(SUMMARY_END)) {
+        (Some(a), Some(b)) if a < b => (
+            doc[..a].to_owned(),
+            doc[a + SUMMARY_START.len()..b].to_owned(),
+            doc[b + SUMMARY_END.len()..].to_owned(),
+        ),
+        _ => match doc.find("<!-- bench:") {
+            Some(at) => (doc[..at].to_owned(), String::new(), format!("\n{}", &doc[at..])),
+            None => (format!("{}\n", doc.trim_end()), String::new(), String::new()),
+        },
+    };
+    // The rows already there, by topic: every table row after the header and its rule.
+    let mut kept: Vec<Vec<String>> = old
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| topic |"))
+        .map(|l| l.trim().trim_matches('|').split(" | ").map(|c| c.trim().to_owned()).collect())
+        .filter(|r: &Vec<String>| r.first().is_some_and(|t| t != topic))
+        .collect();
+    kept.extend(rows.iter().cloned());
+    let order = |t: &str| TOPICS.iter().position(|x| *x == t).unwrap_or(TOPICS.len());
+    kept.sort_by_key(|r| order(r.first().map_or("", String::as_str)));
+    let body = format!(
+        "## Summary\n\nThe headline of each topic: our time against the peer's in the same run \
+         (details, inputs and the machine in each section).\n\n{}",
+        table(&SUMMARY_HEADER, &kept)
+    );
+    format!("{before}{SUMMARY_START}\n{body}{SUMMARY_END}{after}")
+}
+
+/// `doc` with the section of `topic` replaced by `body` (if absent, put before the section of
+/// the next topic of [`TOPICS`] that is there, or at the end; the header added if `doc` is
+/// empty).
 fn with_section(doc: &str, topic: &str, body: &str) -> String {
     let (start, end) = (format!("<!-- bench:{topic} -->"), format!("<!-- /bench:{topic} -->"));
     let section = format!("{start}\n{}\n{end}", body.trim_end());
     let doc = if doc.trim().is_empty() { HEADER.to_owned() } else { doc.to_owned() };
-    match (doc.find(&start), doc.find(&end)) {
-        (Some(a), Some(b)) if a < b => {
-            format!("{}{section}{}", &doc[..a], &doc[b + end.len()..])
-        }
-        _ => format!("{}\n{section}\n", doc.trim_end()),
+    if let (Some(a), Some(b)) = (doc.find(&start), doc.find(&end))
+        && a < b
+    {
+        return format!("{}{section}{}", &doc[..a], &doc[b + end.len()..]);
     }
+    let later = TOPICS
+        .iter()
+        .skip_while(|t| **t != topic)
+        .skip(1)
+        .find_map(|t| doc.find(&format!("<!-- bench:{t} -->")));
+    match later {
+        Some(at) => format!("{}{section}\n{}", &doc[..at], &doc[at..]),
+        None => format!("{}\n{section}\n", doc.trim_end()),
+    }
+}
+
+/// One measured curve of a growth plot: a method's time at each problem size.
+pub(crate) struct Growth {
+    /// The method, as the legend names it.
+    pub(crate) name: String,
+    /// (problem size, time) pairs, sizes increasing.
+    pub(crate) points: Vec<(f64, Duration)>,
+}
+
+/// The least-squares slope of log t against log size: the exponent p of time ∝ sizeᵖ.
+/// `None` for fewer than two points.
+pub(crate) fn slope(points: &[(f64, Duration)]) -> Option<f64> {
+    let logs: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(n, t)| *n > 0.0 && !t.is_zero())
+        .map(|(n, t)| (n.log10(), t.as_secs_f64().log10()))
+        .collect();
+    if logs.len() < 2 {
+        return None;
+    }
+    let k = logs.len() as f64;
+    let (mx, my) = logs.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + x / k, b + y / k));
+    let (sxy, sxx) = logs
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + (x - mx) * (y - my), b + (x - mx) * (x - mx)));
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// Writes a log–log plot of `series` (time against `x_desc`) to `file` under `docs/`, and
+/// returns the Markdown that shows it, with each curve's fitted exponent.
+///
+/// # Errors
+///
+/// When the plot cannot be drawn or written.
+pub(crate) fn growth_plot(
+    root: &Path,
+    file: &str,
+    title: &str,
+    x_desc: &str,
+    series: &[Growth],
+) -> Result<String> {
+    let mut plot = Plot::function(title, &format!("log₁₀ {x_desc}"), "log₁₀ seconds")
+        .legend(Legend::UpperLeft);
+    let mut slopes = Vec::new();
+    for (k, g) in series.iter().enumerate() {
+        let color = PALETTE[k % PALETTE.len()];
+        let points: Vec<DVec2> = g
+            .points
+            .iter()
+            .filter(|(n, t)| *n > 0.0 && !t.is_zero())
+            .map(|(n, t)| DVec2::new(n.log10(), t.as_secs_f64().log10()))
+            .collect();
+        if points.is_empty() {
+            continue;
+        }
+        plot = plot.points(&points, Marker::small(color), None);
+        plot = plot.curve(points, Pen::solid(color), Some(&g.name));
+        if let Some(p) = slope(&g.points) {
+            slopes.push(format!("{} {p:.2}", g.name));
+        }
+    }
+    let path = root.join("docs").join(file);
+    std::fs::write(&path, plot.render()?).with_context(|| format!("writing {}", path.display()))?;
+    Ok(format!(
+        "![{title}]({file})\n\nFitted exponents (time ∝ {x_desc}^p, least squares on the log–log \
+         points; 1 is linear): {}.\n",
+        slopes.join("; ")
+    ))
 }
 
 /// One line on the machine and toolchain: CPU model, logical cores, OS, rustc.
@@ -128,16 +307,15 @@ pub(crate) fn median(mut times: Vec<Duration>) -> Duration {
     times.get(times.len().saturating_sub(1) / 2).copied().unwrap_or_default()
 }
 
-/// A duration in milliseconds with three significant digits.
+/// A duration in milliseconds with three significant digits (whole milliseconds from 100 on).
 pub(crate) fn ms(d: Duration) -> String {
     let v = d.as_secs_f64() * 1e3;
-    if v >= 100.0 {
-        format!("{v:.0}")
-    } else if v >= 10.0 {
-        format!("{v:.1}")
-    } else {
-        format!("{v:.2}")
+    if v >= 100.0 || v <= 0.0 {
+        return format!("{v:.0}");
     }
+    // Digits after the point: 1 from 10 ms, 2 from 1 ms, 3 from 0.1 ms, …
+    let decimals = (2.0 - v.log10().floor()).clamp(0.0, 9.0) as usize;
+    format!("{v:.decimals$}")
 }
 
 /// The ratio `peer / ours` as "3.2×".
@@ -172,6 +350,41 @@ mod tests {
             replaced.find("bench:a").expect("a") < replaced.find("bench:b").expect("b"),
             "a keeps its place"
         );
+        // A known topic goes before the next topic that is there.
+        let doc = with_section(&with_section("", "render", "r"), "fit", "f");
+        let doc = with_section(&doc, "curves", "c");
+        let at = |t: &str| doc.find(&format!("<!-- bench:{t} -->")).expect("present");
+        assert!(at("curves") < at("fit") && at("fit") < at("render"), "topic order: {doc}");
+    }
+
+    #[test]
+    fn the_summary_keeps_other_topics_rows_in_topic_order() {
+        let row = |t: &str, what: &str| vec![t.to_owned(), what.to_owned(), "1".to_owned()];
+        let doc = with_section("", "fit", "## Fitting");
+        let doc = with_summary(&doc, "fit", &[row("fit", "upsampling")]);
+        let doc = with_summary(&doc, "curves", &[row("curves", "old"), row("curves", "two")]);
+        let doc = with_summary(&doc, "curves", &[row("curves", "new")]);
+        let start = doc.find(SUMMARY_START).expect("a summary");
+        assert!(start < doc.find("<!-- bench:fit -->").expect("fit"), "summary first: {doc}");
+        assert!(doc.starts_with("# Performance"), "the header stays on top: {doc}");
+        let curves = doc.find("| curves | new | 1 |").expect("the new curves row");
+        let fit = doc.find("| fit | upsampling | 1 |").expect("the fit row is kept");
+        assert!(curves < fit, "topic order: {doc}");
+        assert!(!doc.contains("| curves | old"), "old rows are replaced: {doc}");
+        assert!(!doc.contains("| curves | two"), "old rows are replaced: {doc}");
+        assert_eq!(doc.matches(SUMMARY_START).count(), 1, "one summary: {doc}");
+    }
+
+    #[test]
+    fn the_slope_is_the_exponent_of_a_power_law() {
+        // t = 3e-6 · n^1.5 exactly: the fitted exponent is 1.5.
+        let points: Vec<(f64, Duration)> = [16.0, 64.0, 256.0, 1024.0]
+            .iter()
+            .map(|&n: &f64| (n, Duration::from_secs_f64(3e-6 * n.powf(1.5))))
+            .collect();
+        let p = slope(&points).expect("four points");
+        assert!((p - 1.5).abs() < 1e-6, "slope {p}");
+        assert_eq!(slope(&points[..1]), None, "one point has no slope");
     }
 
     #[test]
@@ -182,6 +395,14 @@ mod tests {
         assert_eq!(median(Vec::new()), Duration::ZERO, "empty");
         assert_eq!(ms(Duration::from_micros(1234)), "1.23", "ms");
         assert_eq!(ms(Duration::from_millis(250)), "250", "ms");
+        assert_eq!(ms(Duration::from_micros(12_345)), "12.3", "ms");
+        assert_eq!(
+            ms(Duration::from_nanos(3_456)),
+            "0.00346",
+            "three significant digits below 0.01 ms"
+        );
+        assert_eq!(ms(Duration::from_micros(250)), "0.250", "ms");
+        assert_eq!(ms(Duration::ZERO), "0", "zero");
         assert_eq!(ratio(d(30), d(10)), "3.00×", "ratio");
         assert_eq!(ratio(d(300), d(10)), "30×", "ratio");
     }

@@ -12,12 +12,10 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Result;
-use glam::DVec2;
 use hi_raytrace::{TorusMethod, render_torus, torus_scene};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::{machine, median, median_time, ms, table};
-use crate::figures::plot::{Legend, PALETTE, Pen, Plot};
+use super::{Growth, Headline, Section, growth_plot, machine, median, median_time, ms, table};
 
 /// Image sides measured for the growth plot; the last is the table's size.
 const SIDES: [u32; 4] = [64, 128, 256, 512];
@@ -25,11 +23,11 @@ const SIDES: [u32; 4] = [64, 128, 256, 512];
 const RUNS: usize = 3;
 /// The thesis's anchor: "several hours", taken at its lower end.
 const SEVERAL_HOURS: Duration = Duration::from_secs(2 * 3600);
-/// The plot, relative to the workspace root, and as linked from the report.
-const PLOT: &str = "docs/perf-render.svg";
+/// The plot, in `docs/`.
+const PLOT: &str = "perf-render.svg";
 
 /// Runs the measurements and returns the report's section.
-pub(crate) fn run(root: &Path) -> Result<String> {
+pub(crate) fn run(root: &Path) -> Result<Section> {
     let bar = if std::io::stderr().is_terminal() {
         let bar = ProgressBar::new((TorusMethod::ALL.len() * (SIDES.len() + 1)) as u64);
         bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
@@ -38,7 +36,8 @@ pub(crate) fn run(root: &Path) -> Result<String> {
         ProgressBar::hidden()
     };
     let mut rows = Vec::new();
-    let mut curves: Vec<(&str, Vec<DVec2>)> = Vec::new();
+    let mut curves = Vec::new();
+    let mut totals = Vec::new();
     for method in TorusMethod::ALL {
         bar.set_message(format!("{}: preparation", method.name()));
         let preparation = median_time(RUNS, || {
@@ -58,11 +57,12 @@ pub(crate) fn run(root: &Path) -> Result<String> {
                 counts = Some(out.counts);
             }
             let t = median(times);
-            points.push(DVec2::new(f64::from(side * side).log10(), t.as_secs_f64().log10()));
+            points.push((f64::from(side * side), t));
             last = counts.map(|c| (t, c));
             bar.inc(1);
         }
         if let Some((t, c)) = last {
+            totals.push((method, t));
             let rays = c.camera + c.shadow;
             rows.push(vec![
                 method.name().to_owned(),
@@ -76,26 +76,42 @@ pub(crate) fn run(root: &Path) -> Result<String> {
                 format!("≥ {:.0}×", SEVERAL_HOURS.as_secs_f64() / (t + preparation).as_secs_f64()),
             ]);
         }
-        curves.push((method.name(), points));
+        curves.push(Growth { name: method.name().to_owned(), points });
     }
     bar.finish_and_clear();
-    // The time over the mesh's (the last method).
+    // The time over the mesh's (the last method), and the interval Newton time over each.
     let mesh_time = rows.last().and_then(|r| r[6].parse::<f64>().ok()).unwrap_or(f64::NAN);
+    let newton_time = rows.first().and_then(|r| r[6].parse::<f64>().ok()).unwrap_or(f64::NAN);
     for row in &mut rows {
         let t: f64 = row[6].parse().unwrap_or(f64::NAN);
         row[6] = format!("{:.1}×", t / mesh_time);
+        row.insert(7, format!("{:.2}×", newton_time / t));
     }
-    let mut plot = Plot::function(
+    let plot = growth_plot(
+        root,
+        PLOT,
         "Render time of the torus against image size (one sample per pixel)",
-        "log₁₀ pixels",
-        "log₁₀ seconds",
-    )
-    .legend(Legend::UpperLeft);
-    for (k, (name, points)) in curves.into_iter().enumerate() {
-        let color = PALETTE[k % PALETTE.len()];
-        plot = plot.curve(points, Pen::solid(color), Some(name));
+        "pixels",
+        &curves,
+    )?;
+    let time_of = |m: TorusMethod| totals.iter().find(|(x, _)| *x == m).map(|(_, t)| *t);
+    let mut headlines = Vec::new();
+    if let Some(newton) = time_of(TorusMethod::IntervalNewton) {
+        headlines.push(Headline {
+            what: "torus ray traced by interval Newton, 512², shadows".to_owned(),
+            ours: newton,
+            peer: "the thesis's \"several hours\" (≥ 2 h, 2005 hardware)".to_owned(),
+            theirs: Some(SEVERAL_HOURS),
+        });
+        if let Some(bezier) = time_of(TorusMethod::Bezier) {
+            headlines.push(Headline {
+                what: "torus ray traced through Bézier patches, 512², shadows".to_owned(),
+                ours: bezier,
+                peer: "interval Newton on the surface itself (our rigorous baseline)".to_owned(),
+                theirs: Some(newton),
+            });
+        }
     }
-    std::fs::write(root.join(PLOT), plot.render()?)?;
     let mut s = String::new();
     let _ = write!(
         s,
@@ -119,14 +135,14 @@ pub(crate) fn run(root: &Path) -> Result<String> {
             "shadow rays",
             "rays/s",
             "time / mesh",
+            "interval Newton / this",
             "vs several hours",
         ],
         &rows,
     ));
     let _ = write!(
         s,
-        "\nHow the render time grows with the number of pixels (64² … 512², log axes; a slope of 1 is \
-         linear): ![render time against image size](perf-render.svg)\n"
+        "\nHow the render time grows with the number of pixels (64² … 512², log axes):\n\n{plot}"
     );
-    Ok(s)
+    Ok(Section { body: s, headlines })
 }

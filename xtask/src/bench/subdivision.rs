@@ -9,6 +9,10 @@
 //! Catmull-Clark steps (294 912 quads). Our time is one in-memory step, building the new
 //! half-edge mesh included; each peer reads the same mesh from an OFF file and prints the time
 //! of its subdivision call alone (`OpenMesh`: "Done [..]", the CGAL program: "seconds=..").
+//!
+//! How the cost grows: one Loop step (ours, `OpenMesh`, CGAL) and one Catmull-Clark step (ours,
+//! CGAL) on the star refined 2 … 6 times, plotted against the face count on log axes
+//! (`docs/perf-subdivision.svg`).
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -19,7 +23,10 @@ use anyhow::{Context, Result, bail, ensure};
 use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::{machine, median, median_time, ms, output_line, ratio, table};
+use super::{
+    Growth, Headline, Section, growth_plot, machine, median, median_time, ms, output_line, ratio,
+    table,
+};
 
 /// Timed runs of our step (after a warm-up).
 const OUR_RUNS: usize = 5;
@@ -36,6 +43,14 @@ enum Peer {
 }
 
 impl Peer {
+    /// The peer's name in the report.
+    fn name(self) -> &'static str {
+        match self {
+            Peer::OpenMesh => "OpenMesh",
+            Peer::Cgal => "CGAL",
+        }
+    }
+
     /// The peer's name for `scheme`, or `None` if it has no such scheme.
     fn method(self, scheme: Scheme) -> Option<&'static str> {
         match (self, scheme) {
@@ -203,8 +218,55 @@ fn extra_rows() -> Result<Vec<Vec<String>>> {
     ])
 }
 
+/// Refinement levels of the star for the growth plot (faces grow 4× per level).
+const GROWTH_LEVELS: std::ops::RangeInclusive<usize> = 2..=6;
+
+/// One Loop step (ours, `OpenMesh`, CGAL) and one Catmull-Clark step (ours, CGAL) on the star
+/// refined by the same scheme at each of [`GROWTH_LEVELS`], against the face count.
+fn growth(
+    dir: &Path,
+    openmesh: Option<&Path>,
+    cgal: Option<&Path>,
+    bar: &ProgressBar,
+) -> Result<Vec<Growth>> {
+    let mut series = Vec::new();
+    for scheme in [Scheme::Loop(LoopWeights::Loop), Scheme::CatmullClark] {
+        let mut ours = Vec::new();
+        let mut peers: Vec<(Peer, Vec<(f64, Duration)>)> = Vec::new();
+        let mut mesh = scheme.steps(&PolyMesh::star(), *GROWTH_LEVELS.start())?;
+        for level in GROWTH_LEVELS {
+            if level > *GROWTH_LEVELS.start() {
+                mesh = scheme.step(&mesh)?;
+            }
+            bar.set_message(format!("{} growth: {} faces", scheme.name(), mesh.n_faces()));
+            let faces = mesh.n_faces() as f64;
+            let t = median_time(OUR_RUNS, || {
+                std::hint::black_box(scheme.step(&mesh)?);
+                Ok(())
+            })?;
+            ours.push((faces, t));
+            let file = dir.join(format!("growth-{level}.off"));
+            mesh.save(&file)?;
+            for (peer, exe) in [(Peer::OpenMesh, openmesh), (Peer::Cgal, cgal)] {
+                if let Outcome::Time(t) = run_peer(peer, exe, scheme, &file, dir) {
+                    match peers.iter_mut().find(|(p, _)| *p == peer) {
+                        Some((_, points)) => points.push((faces, t)),
+                        None => peers.push((peer, vec![(faces, t)])),
+                    }
+                }
+            }
+            bar.inc(1);
+        }
+        series.push(Growth { name: format!("{} (ours)", scheme.name()), points: ours });
+        for (peer, points) in peers {
+            series.push(Growth { name: format!("{} ({})", scheme.name(), peer.name()), points });
+        }
+    }
+    Ok(series)
+}
+
 /// Measures every scheme and returns the report's section.
-pub(super) fn run(root: &Path) -> Result<String> {
+pub(super) fn run(root: &Path) -> Result<Section> {
     let dir = root.join("target/xtask-bench/subdivision");
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let inputs = inputs()?;
@@ -229,13 +291,15 @@ pub(super) fn run(root: &Path) -> Result<String> {
         })
         .collect();
     let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new(jobs.len() as u64);
+        let levels = GROWTH_LEVELS.count() as u64;
+        let bar = ProgressBar::new(jobs.len() as u64 + 2 * levels);
         bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
         bar
     } else {
         ProgressBar::hidden()
     };
     let mut rows = Vec::new();
+    let mut headlines = Vec::new();
     for &(scheme, i) in &jobs {
         let (label, mesh) = &inputs[i];
         bar.set_message(format!("{} on {label}", scheme.name()));
@@ -249,6 +313,17 @@ pub(super) fn run(root: &Path) -> Result<String> {
         for (peer, exe) in [(Peer::OpenMesh, openmesh.as_deref()), (Peer::Cgal, cgal.as_deref())] {
             match run_peer(peer, exe, scheme, &files[i], &dir) {
                 Outcome::Time(t) => {
+                    // The headlines: Loop against both peers, Catmull-Clark on quads against CGAL.
+                    let headline = matches!(scheme, Scheme::Loop(LoopWeights::Loop))
+                        || (scheme == Scheme::CatmullClark && i == 1);
+                    if headline {
+                        headlines.push(Headline {
+                            what: format!("one {} step, {label}", scheme.name()),
+                            ours,
+                            peer: peer.name().to_owned(),
+                            theirs: Some(t),
+                        });
+                    }
                     row.push(ms(t));
                     row.push(ratio(t, ours));
                 }
@@ -264,7 +339,15 @@ pub(super) fn run(root: &Path) -> Result<String> {
     }
     bar.set_message("harmonic subdivision and the B-spline fit");
     rows.extend(extra_rows()?);
+    let series = growth(&dir, openmesh.as_deref(), cgal.as_deref(), &bar)?;
     bar.finish_and_clear();
+    let plot = growth_plot(
+        root,
+        "perf-subdivision.svg",
+        "One subdivision step against mesh size",
+        "faces",
+        &series,
+    )?;
     if rows.is_empty() {
         bail!("nothing was measured");
     }
@@ -278,7 +361,7 @@ pub(super) fn run(root: &Path) -> Result<String> {
         "CGAL (ms)",
         "CGAL / ours",
     ];
-    Ok(format!(
+    let body = format!(
         "## Subdivision (§4.5, Table 4.1)\n\n\
          One step of each scheme on a closed mesh of at least 100 000 faces: the star \
          (`PolyMesh::star`) after five Loop and two √3 steps, and after seven Catmull-Clark steps. \
@@ -291,12 +374,15 @@ pub(super) fn run(root: &Path) -> Result<String> {
          (`docs/figures/README.md`), which has the counts and interpolation errors of every \
          scheme; their time is one step or one fit (rayon may use every core here). The thesis \
          gives no timings for subdivision.\n\n\
-         Machine: {}.\n\n{}",
+         Machine: {}.\n\n{}\n\
+         How one step's time grows with the mesh: Loop on the star after 2 … 6 Loop steps, and \
+         Catmull-Clark on the star after 2 … 6 Catmull-Clark steps (log axes):\n\n{plot}",
         openmesh_version.as_deref().unwrap_or("not installed"),
         cgal_version.as_deref().unwrap_or("not installed"),
         machine(),
         table(&header, &rows)
-    ))
+    );
+    Ok(Section { body, headlines })
 }
 
 #[cfg(test)]

@@ -110,7 +110,7 @@ figcaption{font-size:0.9rem;color:#444}\
 table{border-collapse:collapse;font-size:0.85rem;margin:0.5rem 0}\
 td,th{border:1px solid #ccc;padding:0.2rem 0.4rem}\
 code{background:#f4f4f4;padding:0 0.2rem}\
-.data,.drawn{font-size:0.92rem}\
+.data,.drawn,.differs{font-size:0.92rem}.differs{border-left:3px solid #d55e00;padding-left:0.5rem}\
 #status{font-weight:bold}";
 
 /// Counts the images that loaded, once the page has.
@@ -150,6 +150,10 @@ pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String 
             inline(f.drawn),
             inline(f.data)
         );
+        if let Some(note) = super::differences::differs(f.number) {
+            let _ =
+                writeln!(s, "<p class=\"differs\">Differs from the thesis: {}</p>", inline(note));
+        }
         for p in f.panels {
             let file = f.file(p);
             let title = escape(&f.title(p));

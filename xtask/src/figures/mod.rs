@@ -40,6 +40,7 @@ mod bspline;
 mod chapter2;
 mod curves;
 mod data;
+mod differences;
 mod fitting;
 pub(crate) mod glb;
 mod html;
@@ -49,7 +50,7 @@ mod nonuniform;
 pub(crate) mod plot;
 mod polygons;
 mod renders;
-mod scans;
+pub(crate) mod scans;
 mod sections;
 mod subdivision;
 mod surfaces;
@@ -258,10 +259,15 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
          `cargo xtask figures --check` (and `cargo test -p xtask`) fails when a file here is stale. \
          The same figures as a page with the images inline: [index.html](index.html).\n\n\
          The thesis does not print its figures' point coordinates: where a figure needs points, a \
-         stand-in is used and named below (coordinates in [Stand-in data](#stand-in-data)).\n"
+         stand-in is used and named below (coordinates in [Stand-in data](#stand-in-data)). The \
+         last column says where a result differs from the thesis's and why (\"–\": it does not, \
+         beyond the data).\n"
     );
-    let _ = writeln!(s, "| figure | caption | files | what is drawn | data |");
-    let _ = writeln!(s, "|---|---|---|---|---|");
+    let _ = writeln!(
+        s,
+        "| figure | caption | files | what is drawn | data | differs from the thesis |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|");
     for f in figures {
         let files: Vec<String> = f
             .panels
@@ -273,19 +279,23 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
             .collect();
         let _ = writeln!(
             s,
-            "| [{}](#figure-{}) | {} | {} | {} | {} |",
+            "| [{}](#figure-{}) | {} | {} | {} | {} | {} |",
             f.label(),
             f.label().replace('.', ""),
             f.caption,
             files.join("<br>"),
             f.drawn,
-            f.data
+            f.data,
+            differences::differs(f.number).unwrap_or("–").replace('|', "\\|")
         );
     }
     let _ = writeln!(s);
     for f in figures {
         let _ = writeln!(s, "## Figure {}\n", f.label());
         let _ = writeln!(s, "*{}.* {} Data: {}\n", f.caption, f.drawn, f.data);
+        if let Some(note) = differences::differs(f.number) {
+            let _ = writeln!(s, "Differs from the thesis: {note}\n");
+        }
         for p in f.panels {
             let file = f.file(p);
             if !p.title.is_empty() {
@@ -446,6 +456,14 @@ mod tests {
         anchors.sort_unstable();
         anchors.dedup();
         assert_eq!(anchors.len(), count, "two tables share an anchor");
+        for n in differences::numbers() {
+            assert!(
+                figures.iter().any(|f| f.number == n),
+                "a difference is noted for figure {}.{}, which is not in the registry",
+                n.0,
+                n.1
+            );
+        }
         for f in &figures {
             assert!(!f.panels.is_empty(), "figure {} has no file", f.label());
             if f.panels.len() > 1 {

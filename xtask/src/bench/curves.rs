@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+//! `cargo xtask bench curves`: uniform sampling of a harmonic curve through n points at N = 16n
+//! parameters, by the thesis's direct sum of the basis (O(nN), the baseline), by our FFT path
+//! (spectral zero-padding, O(N log N), MATH.md §7) and by `scipy.signal.resample`, which
+//! computes the same samples (checked in `crates/hi-curve/tests/peer_scipy.rs`), in one run,
+//! for n = 16 … 16 384; and how each grows with n, on log axes (`docs/perf-curves.svg`).
+//! The peer runs through `xtask/peers/curve_peers.py`.
+
+use std::io::IsTerminal;
+use std::path::Path;
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result, bail};
+use glam::DVec2;
+use hi_curve::HarmonicCurve;
+use indicatif::{ProgressBar, ProgressStyle};
+
+use super::{Growth, Headline, Section, growth_plot, machine, median_time, ms, ratio, table};
+
+/// Curve sizes n (samples N = 16n).
+const SIZES: [usize; 6] = [16, 64, 256, 1024, 4096, 16_384];
+/// The largest n whose direct sum is timed (about 10 s per run at 4096; 16 times that at the
+/// next size).
+const DIRECT_MAX: usize = 4096;
+/// From this n on, the direct sum is timed once, without a warm-up.
+const DIRECT_ONCE: usize = 1024;
+/// Timed runs of each measurement (after a warm-up).
+const RUNS: usize = 7;
+/// Samples per data point.
+const FACTOR: usize = 16;
+
+/// The data of the peer script: xₖ = (3 sin 0.37k, cos 1.3k + 0.01k).
+fn points(n: usize) -> Vec<DVec2> {
+    (0..n)
+        .map(|k| {
+            let k = k as f64;
+            DVec2::new((k * 0.37).sin() * 3.0, (k * 1.3).cos() + 0.01 * k)
+        })
+        .collect()
+}
+
+/// scipy's median times per size; `Ok(None)` when scipy is not installed.
+fn scipy(root: &Path) -> Result<Option<Vec<Duration>>> {
+    let script = root.join("xtask/peers/curve_peers.py");
+    let mut cmd = Command::new("python3");
+    cmd.arg(&script).arg(RUNS.to_string()).args(SIZES.iter().map(ToString::to_string));
+    let Ok(out) = cmd.output() else { return Ok(None) };
+    if out.status.code() == Some(3) {
+        return Ok(None);
+    }
+    if !out.status.success() {
+        bail!("{}: {}", script.display(), String::from_utf8_lossy(&out.stderr).trim());
+    }
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).context("the peer's JSON")?;
+    let times = v["seconds"]
+        .as_array()
+        .context("no \"seconds\" in the peer's JSON")?
+        .iter()
+        .map(|t| t.as_f64().map(Duration::from_secs_f64).context("a time that is not a number"))
+        .collect::<Result<Vec<_>>>()?;
+    if times.len() != SIZES.len() {
+        bail!("the peer timed {} sizes, not {}", times.len(), SIZES.len());
+    }
+    Ok(Some(times))
+}
+
+/// Measures every size and returns the report's section.
+pub(super) fn run(root: &Path) -> Result<Section> {
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new(SIZES.len() as u64 + 1);
+        bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    bar.set_message("scipy.signal.resample");
+    let theirs = scipy(root)?;
+    bar.inc(1);
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
+    let (mut fft_growth, mut direct_growth, mut scipy_growth) =
+        (Vec::new(), Vec::new(), Vec::new());
+    let mut rows = Vec::new();
+    let mut headlines = Vec::new();
+    for (i, &n) in SIZES.iter().enumerate() {
+        bar.set_message(format!("n = {n}"));
+        let curve = HarmonicCurve::try_new(points(n))?;
+        let samples = FACTOR * n;
+        let fft = one.install(|| {
+            median_time(RUNS, || {
+                std::hint::black_box(curve.sample_uniform(samples)?);
+                Ok(())
+            })
+        })?;
+        fft_growth.push((n as f64, fft));
+        let direct = if n <= DIRECT_MAX {
+            let t = if n >= DIRECT_ONCE {
+                let start = Instant::now();
+                std::hint::black_box(one.install(|| curve.sample_uniform_direct(samples))?);
+                start.elapsed()
+            } else {
+                one.install(|| {
+                    median_time(RUNS, || {
+                        std::hint::black_box(curve.sample_uniform_direct(samples)?);
+                        Ok(())
+                    })
+                })?
+            };
+            direct_growth.push((n as f64, t));
+            Some(t)
+        } else {
+            None
+        };
+        // The two paths compute the same samples: the largest difference, relative to the
+        // largest coordinate.
+        let agreement = if n <= DIRECT_ONCE {
+            let (a, b) = (curve.sample_uniform(samples)?, curve.sample_uniform_direct(samples)?);
+            let scale = a.iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
+            let diff = a.iter().zip(&b).map(|(p, q)| (*p - *q).abs().max_element());
+            format!("{:.1e}", diff.fold(0.0, f64::max) / scale)
+        } else {
+            "–".to_owned()
+        };
+        let peer = theirs.as_ref().map(|t| t[i]);
+        if let Some(t) = peer {
+            scipy_growth.push((n as f64, t));
+        }
+        rows.push(vec![
+            n.to_string(),
+            samples.to_string(),
+            direct.map_or_else(|| "not run".to_owned(), ms),
+            ms(fft),
+            direct.map_or_else(|| "–".to_owned(), |d| ratio(d, fft)),
+            peer.map_or_else(|| "scipy not installed".to_owned(), ms),
+            peer.map_or_else(|| "–".to_owned(), |t| ratio(t, fft)),
+            agreement,
+        ]);
+        if n == 1024 {
+            headlines.push(Headline {
+                what: format!("harmonic curve, {n} points sampled at {samples}"),
+                ours: fft,
+                peer: "the thesis's direct sum".to_owned(),
+                theirs: direct,
+            });
+            headlines.push(Headline {
+                what: format!("harmonic curve, {n} points sampled at {samples}"),
+                ours: fft,
+                peer: "`scipy.signal.resample`".to_owned(),
+                theirs: peer,
+            });
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let series = [
+        Growth { name: "FFT (ours)".to_owned(), points: fft_growth },
+        Growth { name: "direct sum (thesis)".to_owned(), points: direct_growth },
+        Growth { name: "scipy.signal.resample".to_owned(), points: scipy_growth },
+    ];
+    let plot = growth_plot(
+        root,
+        "perf-curves.svg",
+        "Sampling a harmonic curve through n points at 16n parameters",
+        "n",
+        &series,
+    )?;
+    let body = format!(
+        "## Harmonic curves (§2.3, MATH.md §7)\n\n\
+         Machine: {}.\n\n\
+         A planar harmonic curve through n points xₖ = (3 sin 0.37k, cos 1.3k + 0.01k), sampled \
+         at N = {FACTOR}n uniform parameters on one thread: by the thesis's direct sum of the \
+         Dirichlet-kernel basis (`HarmonicCurve::sample_uniform_direct`, O(nN); timed once, \
+         without a warm-up, from n = {DIRECT_ONCE}, and not run past n = {DIRECT_MAX}), by our \
+         FFT path (`HarmonicCurve::sample_uniform`, O(N log N)), and by `scipy.signal.resample` \
+         on the same points, which computes the same samples. Medians of {RUNS} runs after a \
+         warm-up, in ms. The last column is the largest difference between the direct and FFT \
+         samples over the largest coordinate. The thesis gives no timings for curves.\n\n{}\n{}",
+        machine(),
+        table(
+            &[
+                "n",
+                "samples N",
+                "direct sum (ms)",
+                "FFT (ms)",
+                "direct / FFT",
+                "scipy (ms)",
+                "scipy / FFT",
+                "largest direct − FFT difference",
+            ],
+            &rows,
+        ),
+        plot
+    );
+    Ok(Section { body, headlines })
+}
