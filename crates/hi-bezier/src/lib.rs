@@ -22,7 +22,7 @@
 //! | conics, exact circular and elliptic arcs, full circles | fig. 2.8 | [`RationalBezierCurve::conic`], [`RationalBezierCurve::circle_arc`], [`ConicType`] (`conic.rs`) |
 //! | piecewise curves, C1 and G1 chains | eq. 2.5, fig. 2.5 | [`PiecewiseBezier`] (`piecewise.rs`) |
 //! | continuity at joins (C0 gap, C1 mismatch, G1 angle) | def. 2.5, 2.6 | [`Join`], [`PiecewiseBezier::joins`] (`continuity.rs`) |
-//! | tensor-product patches: partials, normals, split, elevation, boxes (subdivision) | §4.3, fig. 4.2 | [`BezierPatch`] (`patch.rs`) |
+//! | tensor-product patches: partials, normals, evaluation on parameter grids, split, elevation, boxes (subdivision) | §4.3, fig. 4.2 | [`BezierPatch`] (`patch.rs`) |
 //! | rational patches, exact surfaces of revolution | §4.3 rational | [`RationalBezierPatch`] (`rational_patch.rs`) |
 //! | triangular patches: barycentric de Casteljau, directional derivatives | §4.3, fig. 4.4 | [`TriangularPatch`] (`triangle.rs`) |
 //!

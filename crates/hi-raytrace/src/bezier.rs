@@ -182,6 +182,16 @@ impl BezierObject {
             .map(|(_, h)| h)
     }
 
+    /// Whether the patches meet the ray in [`Ray::t_min`], [`Ray::t_max`] (a shadow ray's
+    /// any-hit query: the BVH stops at the first piece hit).
+    #[must_use]
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        self.bvh.any(ray, |i| {
+            self.intersect_piece(ray, self.pieces[i], Some(self.boxes[i]), self.cones[i], 0)
+                .is_some_and(|h| h.t < ray.t_max)
+        })
+    }
+
     /// The nearest hit in `piece`. If the ray is transversal to the piece's normal cone it meets
     /// the piece at most once, and Newton from the centre finds that root; otherwise (a grazing
     /// ray, which may cross the piece twice), or if Newton fails, the sub-pieces are searched.

@@ -118,6 +118,34 @@ impl Bvh {
         });
         best
     }
+
+    /// Whether `test(primitive)` holds for any primitive whose box the ray may meet: the
+    /// any-hit query of shadow rays, which stops at the first primitive that reports a hit
+    /// instead of looking for the nearest.
+    pub(crate) fn any(&self, ray: &Ray, mut test: impl FnMut(usize) -> bool) -> bool {
+        let Some((t0, t1)) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max) else {
+            return false;
+        };
+        let o = ray.point_at(t0);
+        let d = ray.dir;
+        let bray = BvhRay::new(
+            Vec3A::new(o.x as f32, o.y as f32, o.z as f32),
+            Vec3A::new(d.x as f32, d.y as f32, d.z as f32),
+            0.0,
+            up(t1 - t0),
+        );
+        let indices = &self.bvh.primitive_indices;
+        let mut hit = RayHit::none();
+        let mut found = false;
+        self.bvh.ray_traverse(bray, &mut hit, |_, id| {
+            if !found && test(indices[id] as usize) {
+                found = true;
+            }
+            // Once found, a distance of 0 culls every box still on the traversal's stack.
+            if found { 0.0 } else { f32::INFINITY }
+        });
+        found
+    }
 }
 
 /// The parameter range [t0, t1] ∩ [`t_min`, `t_max`] where the ray is inside the box, by the

@@ -426,6 +426,16 @@ impl HarmonicObject {
             .map(|(_, h)| h)
     }
 
+    /// Whether the surface meets the ray in [`Ray::t_min`], [`Ray::t_max`] (a shadow ray's
+    /// any-hit query: the BVH of cells stops at the first cell with a hit, proven or, past
+    /// the box cap, unproven as in [`HarmonicObject::intersect`]).
+    #[must_use]
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        self.bvh.any(ray, |i| {
+            self.intersect_cell(ray, &self.cells[i], ray.t_max).is_some_and(|h| h.t < ray.t_max)
+        })
+    }
+
     /// The nearest hit in one cell below `t_max`.
     fn intersect_cell(&self, ray: &Ray, cell: &Cell, t_max: f64) -> Option<HarmonicHit> {
         let mut best: Option<HarmonicHit> = None;

@@ -12,7 +12,7 @@
 //!
 //! and a [`Camera`] (look-at, vertical field of view), a [`Scene`] with directional and point
 //! [`Light`]s, Blinn–Phong shading with shadow rays whose origins are offset by the error bound
-//! of the hit ([`offset_ray_origin`]), colours from curvature ([`SurfaceColor`]), vertex colours
+//! of the hit ([`offset_ray_origin`]) and which stop at the first hit ([`Scene::occluded`]), colours from curvature ([`SurfaceColor`]), vertex colours
 //! or per-patch colours, supersampling and parallel tiles ([`render`]), and sRGB PNG output.
 //!
 //! # Examples

@@ -69,6 +69,18 @@ impl MeshObject {
             .map(|(_, hit)| hit)
     }
 
+    /// Whether any triangle meets the ray in [`Ray::t_min`], [`Ray::t_max`] (a shadow ray's
+    /// any-hit query: the BVH stops at the first triangle hit).
+    #[must_use]
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        let p = self.mesh.positions();
+        let tris = self.mesh.triangles();
+        self.bvh.any(ray, |i| {
+            let [a, b, c] = tris[i].map(|k| p[k as usize]);
+            intersect_triangle(ray, a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max)
+        })
+    }
+
     /// The nearest hit by testing every triangle (no BVH): the reference for the BVH.
     #[must_use]
     pub fn intersect_brute_force(&self, ray: &Ray) -> Option<(usize, TriangleHit)> {

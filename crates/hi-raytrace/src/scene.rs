@@ -277,10 +277,15 @@ impl Scene {
         best
     }
 
-    /// Whether anything lies on `ray` between its `t_min` and `t_max`.
+    /// Whether anything lies on `ray` between its `t_min` and `t_max`: the any-hit query of
+    /// shadow rays, which stops at the first hit found rather than the nearest.
     #[must_use]
     pub fn occluded(&self, ray: &Ray) -> bool {
-        self.intersect(ray).is_some()
+        self.objects.iter().any(|object| match &object.geometry {
+            Geometry::Mesh(m) => m.occluded(ray),
+            Geometry::Bezier(b) => b.occluded(ray),
+            Geometry::Harmonic(s) => s.occluded(ray),
+        })
     }
 
     /// The light leaving `hit` towards the eye of `ray` (linear RGB), with the number of shadow

@@ -353,6 +353,48 @@ fn mesh_hits_match_brute_force() {
     assert!(n_hits > 300, "the mesh fills the view: {n_hits}");
 }
 
+/// Shadow rays' any-hit query against the nearest hit: for every object type, a ray is
+/// occluded exactly when the nearest hit exists, with the segment cut short at several
+/// lengths (before, between and after the surface's layers) as a point light cuts it.
+#[test]
+fn any_hit_occlusion_matches_the_nearest_hit() {
+    let surface = bumpy(5, 6, 0.3);
+    let patches =
+        surface.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4)).unwrap();
+    let mesh = TriangleMesh::try_from_surface(
+        &surface,
+        &MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() },
+    )
+    .unwrap();
+    let mesh = MeshObject::new(mesh);
+    let bezier = BezierObject::from_surface(&patches, &BezierSettings::default()).unwrap();
+    let krawczyk =
+        HarmonicObject::try_new(surface.clone(), &settings(IntervalMethod::Krawczyk)).unwrap();
+    let bisection = HarmonicObject::try_new(surface, &settings(IntervalMethod::Bisection)).unwrap();
+    let camera = Camera::try_new(DVec3::new(2.0, -9.0, 4.0), DVec3::ZERO, DVec3::Z, 0.8).unwrap();
+    let (mut n_occluded, mut n_clear) = (0, 0);
+    for ray in rays(&camera, 24) {
+        for t_max in [f64::INFINITY, 12.0, 9.0, 7.0, 3.0] {
+            let r = ray.with_t_max(t_max);
+            let cases = [
+                ("mesh", mesh.intersect(&r).is_some(), mesh.occluded(&r)),
+                ("bezier", bezier.intersect(&r).is_some(), bezier.occluded(&r)),
+                ("krawczyk", krawczyk.intersect(&r).is_some(), krawczyk.occluded(&r)),
+                ("bisection", bisection.intersect(&r).is_some(), bisection.occluded(&r)),
+            ];
+            for (name, nearest, any) in cases {
+                assert_eq!(any, nearest, "{name}, t_max {t_max}: any-hit against nearest hit");
+                if any {
+                    n_occluded += 1;
+                } else {
+                    n_clear += 1;
+                }
+            }
+        }
+    }
+    assert!(n_occluded > 500 && n_clear > 500, "both outcomes: {n_occluded} / {n_clear}");
+}
+
 proptest! {
     #![proptest_config(config(64))]
 
