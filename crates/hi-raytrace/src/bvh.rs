@@ -93,16 +93,8 @@ impl Bvh {
         mut test: impl FnMut(usize, f64) -> Option<(f64, T)>,
     ) -> Option<(f64, T)> {
         let (t0, t1) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max)?;
-        // Start the f32 ray where it enters the object's box.
         let shift = t0;
-        let o = ray.point_at(shift);
-        let d = ray.dir;
-        let bray = BvhRay::new(
-            Vec3A::new(o.x as f32, o.y as f32, o.z as f32),
-            Vec3A::new(d.x as f32, d.y as f32, d.z as f32),
-            0.0,
-            up(t1 - shift),
-        );
+        let bray = f32_ray(ray, t0, t1);
         let mut best: Option<(f64, T)> = None;
         let indices = &self.bvh.primitive_indices;
         let mut hit = RayHit::none();
@@ -126,14 +118,7 @@ impl Bvh {
         let Some((t0, t1)) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max) else {
             return false;
         };
-        let o = ray.point_at(t0);
-        let d = ray.dir;
-        let bray = BvhRay::new(
-            Vec3A::new(o.x as f32, o.y as f32, o.z as f32),
-            Vec3A::new(d.x as f32, d.y as f32, d.z as f32),
-            0.0,
-            up(t1 - t0),
-        );
+        let bray = f32_ray(ray, t0, t1);
         let indices = &self.bvh.primitive_indices;
         let mut hit = RayHit::none();
         let mut found = false;
@@ -146,6 +131,18 @@ impl Bvh {
         });
         found
     }
+}
+
+/// The f32 ray of the traversal over [t0, t1] of `ray`, started where it enters the object's
+/// box (at t0), so that f32 rounding scales with the object, not with the camera distance.
+fn f32_ray(ray: &Ray, t0: f64, t1: f64) -> BvhRay {
+    let (o, d) = (ray.point_at(t0), ray.dir);
+    BvhRay::new(
+        Vec3A::new(o.x as f32, o.y as f32, o.z as f32),
+        Vec3A::new(d.x as f32, d.y as f32, d.z as f32),
+        0.0,
+        up(t1 - t0),
+    )
 }
 
 /// The parameter range [t0, t1] ∩ [`t_min`, `t_max`] where the ray is inside the box, by the

@@ -456,15 +456,7 @@ impl HarmonicObject {
                 // unproven hit (its enclosure meets the ray; typically a pole, where a whole
                 // interval of v maps to one point and boxes cannot be excluded).
                 if best.is_none() {
-                    let t = node.t[0];
-                    let extent = (node.enc.radius * 2.0).max_element();
-                    best = Some(HarmonicHit {
-                        t,
-                        u: 0.5 * (node.u[0] + node.u[1]),
-                        v: 0.5 * (node.v[0] + node.v[1]),
-                        error: DVec3::splat(2.0 * extent) + ray.dir.abs() * (t.abs() * gamma(2)),
-                        proven: false,
-                    });
+                    best = Some(node.unproven_hit(ray, node.t[0]));
                 }
                 break;
             }
@@ -477,15 +469,7 @@ impl HarmonicObject {
                 IntervalMethod::Bisection => {
                     let extent = (node.enc.radius * 2.0).max_element();
                     if extent <= dist_tol || narrow {
-                        let t = 0.5 * (node.t[0] + node.t[1]);
-                        best = Some(HarmonicHit {
-                            t,
-                            u: 0.5 * (node.u[0] + node.u[1]),
-                            v: 0.5 * (node.v[0] + node.v[1]),
-                            error: DVec3::splat(2.0 * extent)
-                                + ray.dir.abs() * (t.abs() * gamma(2)),
-                            proven: false,
-                        });
+                        best = Some(node.unproven_hit(ray, 0.5 * (node.t[0] + node.t[1])));
                         continue;
                     }
                 }
@@ -500,16 +484,7 @@ impl HarmonicObject {
                             continue;
                         }
                         if narrow {
-                            let t = 0.5 * (node.t[0] + node.t[1]);
-                            let extent = (node.enc.radius * 2.0).max_element();
-                            best = Some(HarmonicHit {
-                                t,
-                                u: 0.5 * (node.u[0] + node.u[1]),
-                                v: 0.5 * (node.v[0] + node.v[1]),
-                                error: DVec3::splat(2.0 * extent)
-                                    + ray.dir.abs() * (t.abs() * gamma(2)),
-                                proven: false,
-                            });
+                            best = Some(node.unproven_hit(ray, 0.5 * (node.t[0] + node.t[1])));
                             continue;
                         }
                         if let Some((u, v)) = contracted {
@@ -708,6 +683,21 @@ struct Node {
     v: [f64; 2],
     t: [f64; 2],
     enc: Enclosure,
+}
+
+impl Node {
+    /// An unproven hit at `t` in this box: its (u, v) centre, the error the whole enclosure
+    /// and the rounding of the ray's point at t.
+    fn unproven_hit(&self, ray: &Ray, t: f64) -> HarmonicHit {
+        let extent = (self.enc.radius * 2.0).max_element();
+        HarmonicHit {
+            t,
+            u: 0.5 * (self.u[0] + self.u[1]),
+            v: 0.5 * (self.v[0] + self.v[1]),
+            error: DVec3::splat(2.0 * extent) + ray.dir.abs() * (t.abs() * gamma(2)),
+            proven: false,
+        }
+    }
 }
 
 /// The enclosure of p over a (u, v) box: centre ± radius per coordinate, with pᵤ and pᵥ at the

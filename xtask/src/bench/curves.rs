@@ -6,7 +6,6 @@
 //! for n = 16 … 16 384; and how each grows with n, on log axes (`docs/perf-curves.svg`).
 //! The peer runs through `xtask/peers/curve_peers.py`.
 
-use std::io::IsTerminal;
 use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -14,9 +13,10 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, bail};
 use glam::DVec2;
 use hi_curve::HarmonicCurve;
-use indicatif::{ProgressBar, ProgressStyle};
 
-use super::{Growth, Headline, Section, growth_plot, machine, median_time, ms, ratio, table};
+use super::{
+    Growth, Headline, Section, growth_plot, machine, median_time, ms, progress_bar, ratio, table,
+};
 
 /// Curve sizes n (samples N = 16n).
 const SIZES: [usize; 6] = [16, 64, 256, 1024, 4096, 16_384];
@@ -67,13 +67,7 @@ fn scipy(root: &Path) -> Result<Option<Vec<Duration>>> {
 
 /// Measures every size and returns the report's section.
 pub(super) fn run(root: &Path) -> Result<Section> {
-    let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new(SIZES.len() as u64 + 1);
-        bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
+    let bar = progress_bar(SIZES.len() as u64 + 1)?;
     bar.set_message("scipy.signal.resample");
     let theirs = scipy(root)?;
     bar.inc(1);

@@ -12,7 +12,7 @@
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
-use std::io::{IsTerminal, Write as _};
+use std::io::Write as _;
 use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
@@ -24,9 +24,11 @@ use hi_geomimage::distance::{bounding_diagonal, distances_to_mesh};
 use hi_geomimage::scan::{Scan, read_scan};
 use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
 use hi_surface::HarmonicSurface;
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
-use super::{Growth, Headline, Section, growth_plot, machine, median_time, ms, ratio, table};
+use super::{
+    Growth, Headline, Section, growth_plot, machine, median_time, ms, progress_bar, ratio, table,
+};
 
 /// Timed runs of our upsampling (after a warm-up).
 const RUNS: usize = 5;
@@ -255,13 +257,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
     let dir = root.join("target/xtask-bench/fit");
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let scans = scans(root);
-    let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new((3 * scans.len() + 4 + GROWTH_SIDES.len()) as u64);
-        bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
+    let bar = progress_bar((3 * scans.len() + 4 + GROWTH_SIDES.len()) as u64)?;
     let options = FitOptions {
         layout: Layout::FlatOctahedron,
         rows: IMAGE,

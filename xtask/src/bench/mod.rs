@@ -259,6 +259,22 @@ pub(crate) fn growth_plot(
     ))
 }
 
+/// A progress bar of `len` steps on a terminal, hidden otherwise (so reports and CI logs stay
+/// clean).
+///
+/// # Errors
+///
+/// If the bar's template does not parse.
+pub(crate) fn progress_bar(len: u64) -> Result<indicatif::ProgressBar> {
+    use std::io::IsTerminal as _;
+    if !std::io::stderr().is_terminal() {
+        return Ok(indicatif::ProgressBar::hidden());
+    }
+    let bar = indicatif::ProgressBar::new(len);
+    bar.set_style(indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
+    Ok(bar)
+}
+
 /// One line on the machine and toolchain: CPU model, logical cores, OS, rustc.
 pub(crate) fn machine() -> String {
     let cpu = std::fs::read_to_string("/proc/cpuinfo")

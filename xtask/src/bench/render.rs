@@ -7,15 +7,15 @@
 //! plotted on log axes (`docs/perf-render.svg`).
 
 use std::fmt::Write as _;
-use std::io::IsTerminal;
 use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Result;
 use hi_raytrace::{TorusMethod, render_torus, torus_scene};
-use indicatif::{ProgressBar, ProgressStyle};
 
-use super::{Growth, Headline, Section, growth_plot, machine, median, median_time, ms, table};
+use super::{
+    Growth, Headline, Section, growth_plot, machine, median, median_time, ms, progress_bar, table,
+};
 
 /// Image sides measured for the growth plot; the last is the table's size.
 const SIDES: [u32; 4] = [64, 128, 256, 512];
@@ -28,13 +28,7 @@ const PLOT: &str = "perf-render.svg";
 
 /// Runs the measurements and returns the report's section.
 pub(crate) fn run(root: &Path) -> Result<Section> {
-    let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new((TorusMethod::ALL.len() * (SIDES.len() + 1)) as u64);
-        bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
+    let bar = progress_bar((TorusMethod::ALL.len() * (SIDES.len() + 1)) as u64)?;
     let mut rows = Vec::new();
     let mut curves = Vec::new();
     let mut totals = Vec::new();
@@ -71,20 +65,19 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
                 c.camera.to_string(),
                 c.shadow.to_string(),
                 format!("{:.2e}", rays as f64 / t.as_secs_f64()),
-                // Filled in below, once the mesh has been timed.
-                t.as_secs_f64().to_string(),
                 format!("≥ {:.0}×", SEVERAL_HOURS.as_secs_f64() / (t + preparation).as_secs_f64()),
             ]);
         }
         curves.push(Growth { name: method.name().to_owned(), points });
     }
     bar.finish_and_clear();
-    // The time over the mesh's (the last method), and the interval Newton time over each.
-    let mesh_time = rows.last().and_then(|r| r[6].parse::<f64>().ok()).unwrap_or(f64::NAN);
-    let newton_time = rows.first().and_then(|r| r[6].parse::<f64>().ok()).unwrap_or(f64::NAN);
-    for row in &mut rows {
-        let t: f64 = row[6].parse().unwrap_or(f64::NAN);
-        row[6] = format!("{:.1}×", t / mesh_time);
+    // Each time over the mesh's, and the interval Newton time over each, once all are timed.
+    let time_of = |m: TorusMethod| totals.iter().find(|(x, _)| *x == m).map(|(_, t)| *t);
+    let secs = |m| time_of(m).map_or(f64::NAN, |t: Duration| t.as_secs_f64());
+    let (mesh_time, newton_time) = (secs(TorusMethod::Mesh), secs(TorusMethod::IntervalNewton));
+    for (row, (_, t)) in rows.iter_mut().zip(&totals) {
+        let t = t.as_secs_f64();
+        row.insert(6, format!("{:.1}×", t / mesh_time));
         row.insert(7, format!("{:.2}×", newton_time / t));
     }
     let plot = growth_plot(
@@ -94,7 +87,6 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
         "pixels",
         &curves,
     )?;
-    let time_of = |m: TorusMethod| totals.iter().find(|(x, _)| *x == m).map(|(_, t)| *t);
     let mut headlines = Vec::new();
     if let Some(newton) = time_of(TorusMethod::IntervalNewton) {
         headlines.push(Headline {

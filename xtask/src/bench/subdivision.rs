@@ -14,18 +14,17 @@
 //! CGAL) on the star refined 2 … 6 times, plotted against the face count on log axes
 //! (`docs/perf-subdivision.svg`).
 
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Duration;
 
 use anyhow::{Context, Result, bail, ensure};
 use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
 use super::{
-    Growth, Headline, Section, growth_plot, machine, median, median_time, ms, output_line, ratio,
-    table,
+    Growth, Headline, Section, growth_plot, machine, median, median_time, ms, output_line,
+    progress_bar, ratio, table,
 };
 
 /// Timed runs of our step (after a warm-up).
@@ -290,14 +289,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
             which.iter().map(move |&i| (s, i))
         })
         .collect();
-    let bar = if std::io::stderr().is_terminal() {
-        let levels = GROWTH_LEVELS.count() as u64;
-        let bar = ProgressBar::new(jobs.len() as u64 + 2 * levels);
-        bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
+    let bar = progress_bar(jobs.len() as u64 + 2 * GROWTH_LEVELS.count() as u64)?;
     let mut rows = Vec::new();
     let mut headlines = Vec::new();
     for &(scheme, i) in &jobs {
