@@ -62,6 +62,12 @@ pub enum Error {
         /// Points needed.
         needed: usize,
     },
+    /// A mesh is not what a spherical parameterisation needs (one-sided, of genus above 0,
+    /// no usable triangle), or the parameterisation failed.
+    Topology {
+        /// What is wrong, in words.
+        what: String,
+    },
     /// An error from the surface layer.
     Surface(hi_surface::Error),
 }
@@ -85,6 +91,7 @@ impl fmt::Display for Error {
                 f,
                 "section {slice} of {n_slices} (heights {from:.6} to {to:.6} along the axis) has {found} points, at least {needed} needed: use fewer sections"
             ),
+            Self::Topology { what } => write!(f, "{what}"),
             Self::Surface(e) => write!(f, "{e}"),
         }
     }

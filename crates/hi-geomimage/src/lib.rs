@@ -23,9 +23,11 @@ mod error;
 mod filter;
 pub mod fit;
 mod image;
+pub mod repair;
 pub mod sampling;
 pub mod scan;
 pub mod sections;
+pub mod sphereparam;
 pub mod spherical;
 
 pub use error::Error;
