@@ -8,7 +8,14 @@ usage: fit_peers.py resample ROWS COLS RUNS
        fit_peers.py poisson IN.ply OUT.ply DEPTH
          screened Poisson reconstruction (pymeshlab) of the points of IN.ply, normals estimated
          first for a point cloud (a mesh keeps the normals of its faces); prints {"seconds": ..., "normals_seconds": ...}.
-Exit status 3: the peer (scipy or pymeshlab) is not installed.
+       fit_peers.py distances POINTS.xyz SCAN OUT N SEED
+         trimesh's measurement of a reconstruction OUT (any mesh trimesh reads) against a scan:
+         N of the scan's points (POINTS.xyz, x y z per line), drawn at random with SEED, to
+         their closest points on OUT; N points sampled uniformly on OUT to the scan SCAN (its
+         triangles if it has faces, else its nearest point); the mesh checks (watertight,
+         consistent winding, volume). Prints JSON; distances relative to the diagonal of the
+         points' bounding box.
+Exit status 3: the peer (scipy, pymeshlab or trimesh) is not installed.
 """
 import json, sys, time
 
@@ -50,11 +57,50 @@ def poisson(src, dst, depth):
     print(json.dumps({"seconds": seconds, "normals_seconds": normals}))
 
 
+def distances(points_path, scan_path, out_path, n, seed):
+    try:
+        import numpy as np
+        import trimesh
+        from scipy.spatial import cKDTree
+    except ImportError:
+        sys.exit(3)
+    pts = np.loadtxt(points_path, ndmin=2)
+    diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
+    out = trimesh.load(out_path, force="mesh", process=False)
+    # Watertight as stored (every edge shared by exactly two faces, by vertex index), and after
+    # welding coincident vertices (which a mesh with split seams needs).
+    welded = out.copy()
+    welded.merge_vertices(merge_tex=True, merge_norm=True)
+    rng = np.random.default_rng(seed)
+    pick = pts[rng.choice(len(pts), size=min(n, len(pts)), replace=False)]
+    _, d_scan, _ = trimesh.proximity.closest_point(out, pick)
+    samples, _ = trimesh.sample.sample_surface(out, n, seed=seed)
+    scan = trimesh.load(scan_path, force="mesh", process=False) if scan_path != "-" else None
+    if scan is not None and len(getattr(scan, "faces", [])) > 0:
+        _, d_surf, _ = trimesh.proximity.closest_point(scan, samples)
+    else:
+        d_surf, _ = cKDTree(pts).query(samples)
+    def summary(d):
+        d = np.asarray(d) / diag
+        return {"mean": float(d.mean()), "rms": float(np.sqrt((d * d).mean())), "max": float(d.max())}
+    print(json.dumps({
+        "scan_to_surface": summary(d_scan),
+        "surface_to_scan": summary(d_surf),
+        "watertight": bool(out.is_watertight),
+        "watertight_welded": bool(welded.is_watertight),
+        "winding_consistent": bool(welded.is_winding_consistent),
+        "volume": float(welded.volume) if welded.is_watertight else None,
+        "faces": int(len(out.faces)),
+    }))
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 5 and sys.argv[1] == "resample":
         resample(int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]))
     elif len(sys.argv) == 5 and sys.argv[1] == "poisson":
         poisson(sys.argv[2], sys.argv[3], int(sys.argv[4]))
+    elif len(sys.argv) == 7 and sys.argv[1] == "distances":
+        distances(sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5]), int(sys.argv[6]))
     else:
         print(__doc__, file=sys.stderr)
         sys.exit(2)

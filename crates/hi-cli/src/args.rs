@@ -3,6 +3,7 @@
 //! counts, derivative orders, curve kinds, grid sizes and parameter windows.
 
 use hi_curve::compare::CurveKind;
+use hi_geomimage::regularise::Regularisation;
 
 /// Highest derivative order `--derivatives` accepts. Above it every derivative of a
 /// non-constant basis function or curve has overflowed: its size grows like (2π)ᵖ ≥ 10⁸¹⁷.
@@ -117,6 +118,28 @@ pub(crate) fn parse_size(s: &str) -> Result<Size, String> {
         parse_count(part).map_err(|e| format!("'{trimmed}' is not a size like 128x128: {e}"))
     };
     Ok(Size(count(a)?, count(b)?))
+}
+
+/// Parses `hi fit --regularise`: `auto`, `off`, `gcv`, `noise=S` or a weight W, S and W
+/// finite and ≥ 0.
+///
+/// # Errors
+///
+/// A message naming the problem.
+pub(crate) fn parse_regularisation(s: &str) -> Result<Regularisation, String> {
+    let number = |x: &str| match x.parse::<f64>() {
+        Ok(w) if w >= 0.0 && w.is_finite() => Ok(w),
+        _ => Err(format!("'{}' is not auto, off, gcv, noise=S or a weight W (S, W ≥ 0)", s.trim())),
+    };
+    match s.trim() {
+        "auto" => Ok(Regularisation::Auto),
+        "off" => Ok(Regularisation::Off),
+        "gcv" => Ok(Regularisation::Gcv),
+        other => match other.strip_prefix("noise=") {
+            Some(level) => Ok(Regularisation::Noise(number(level)?)),
+            None => Ok(Regularisation::Weight(number(other)?)),
+        },
+    }
 }
 
 /// A parameter window u0 < u1, v0 < v1 (`--window`).

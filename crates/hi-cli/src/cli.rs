@@ -9,8 +9,9 @@ use hi_curve::compare::CurveKind;
 
 use crate::args::{
     FloatList, Size, Window, parse_count, parse_derivatives, parse_finite, parse_float_list,
-    parse_kind, parse_levels, parse_size, parse_whole, parse_window,
+    parse_kind, parse_levels, parse_regularisation, parse_size, parse_whole, parse_window,
 };
+use hi_geomimage::regularise::Regularisation;
 
 /// The input and output conventions, shown by `hi --help`.
 const MAIN_HELP: &str = "\
@@ -368,12 +369,19 @@ pub(crate) enum ParamName {
     Sections,
 }
 
-/// What a texel of `hi fit`'s geometry image holds.
+/// How `hi fit` makes its geometry image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub(crate) enum TexelsName {
-    /// The distance along the ray, averaged over the points about it (algorithm 2).
+pub(crate) enum MethodName {
+    /// The mesh's spherical parameterisation when the scan is a mesh that closes to genus 0,
+    /// rays from the centre otherwise.
+    Auto,
+    /// A spherical parameterisation of the scan's mesh (any genus-0 shape).
+    Mesh,
+    /// Rays from the centre, the distance along each averaged over the points about it
+    /// (algorithm 2).
     Radial,
-    /// The located scan point; rows made into contours by Theorem 5.3 (§5.8).
+    /// Rays from the centre, each keeping the scan point it located; rows made contours by
+    /// Theorem 5.3 (§5.8 "combined results").
     Contours,
 }
 
@@ -405,23 +413,35 @@ pub(crate) struct FitArgs {
     /// The scan: .obj, .ply, .off, .stl, .xyz or .pts.
     #[arg(value_name = "SCAN")]
     pub(crate) scan: PathBuf,
-    /// The output: a mesh of the surface (.glb, .gltf, .obj) or its grid (.json, for 'hi surface').
+    /// The output: a closed mesh of the surface (.glb, .gltf, .obj) or its grid (.json, for 'hi surface').
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub(crate) output: PathBuf,
-    /// The geometry image's parameterisation.
-    #[arg(long, value_enum, default_value = "sphere")]
+    /// The geometry image's layout (or algorithm 1's cross-sections).
+    #[arg(long, value_enum, default_value = "flat-octahedron")]
     pub(crate) param: ParamName,
-    /// What a texel holds: the distance along its ray averaged over the points about it
-    /// (algorithm 2), or the scan point it located, each row then a contour resampled by
-    /// Theorem 5.3 (§5.8 "combined results").
-    #[arg(long, value_enum, default_value = "radial")]
-    pub(crate) texels: TexelsName,
-    /// Geometry image size, rows×columns (rows even).
-    #[arg(long, value_name = "RxC", default_value = "128x128", value_parser = parse_size)]
-    pub(crate) resolution: Size,
-    /// Smooth the geometry image with a periodic Gaussian of σ = K texels (§5.4).
+    /// How the geometry image is made.
+    #[arg(long, value_enum, default_value = "auto")]
+    pub(crate) method: MethodName,
+    /// Geometry image size, rows×columns (rows even) [default: from the number of points,
+    /// about two distinct texels per point, 64×64 to 512×512].
+    #[arg(long, value_name = "RxC", value_parser = parse_size)]
+    pub(crate) resolution: Option<Size>,
+    /// Smooth the geometry image with a periodic Gaussian of σ = K texels (§5.4); 0 turns all
+    /// smoothing and regularisation off, so that the surface interpolates the image (the thesis).
     #[arg(long, value_name = "K", value_parser = parse_finite)]
     pub(crate) smooth: Option<f64>,
+    /// The thin-plate regularisation of the surface: auto (to the scan's estimated noise for
+    /// images made from points, none for a mesh's), off, gcv (weight by generalised
+    /// cross-validation), noise=S (to the noise level S), or a weight W.
+    #[arg(long, value_name = "auto|off|gcv|noise=S|W", value_parser = parse_regularisation)]
+    pub(crate) regularise: Option<Regularisation>,
+    /// Measure the error exactly, by projecting onto the harmonic surface, rather than onto its
+    /// mesh at the image's resolution.
+    #[arg(long, conflicts_with = "no_error")]
+    pub(crate) exact_error: bool,
+    /// Do not measure the error.
+    #[arg(long)]
+    pub(crate) no_error: bool,
     /// Keep about this fraction of the texels by Theorem 5.3 (§5.8 keeps 0.25).
     #[arg(long, value_name = "F", value_parser = parse_finite)]
     pub(crate) reduce: Option<f64>,

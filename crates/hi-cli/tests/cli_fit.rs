@@ -200,7 +200,7 @@ fn contours_of_located_points_give_the_combined_pipeline_of_section_5_8() {
         glb.path(),
         "--param",
         "flat-octahedron",
-        "--texels",
+        "--method",
         "contours",
         "--resolution",
         "64x64",
@@ -222,7 +222,7 @@ fn contours_of_located_points_give_the_combined_pipeline_of_section_5_8() {
     let plain = ok(&["fit", scan.path(), "-o", glb.path(), "--resolution", "16x16"]);
     assert!(plain["row_points"].is_null());
     bad(
-        &["fit", scan.path(), "-o", glb.path(), "--param", "sections", "--texels", "contours"],
-        "--texels applies to the geometry-image layouts",
+        &["fit", scan.path(), "-o", glb.path(), "--param", "sections", "--method", "contours"],
+        "--method applies to the geometry-image layouts",
     );
 }

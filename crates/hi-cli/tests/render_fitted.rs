@@ -10,7 +10,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::scan::Scan;
-use hi_geomimage::{FitOptions, Layout, Smoothing, fit};
+use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Smoothing, fit};
 use hi_raytrace::{BezierObject, BezierSettings, Camera, HarmonicObject, HarmonicSettings, Ray};
 
 /// Points on r = 1 + 0.15 sin 5θ cos 3φ (a Fibonacci lattice).
@@ -32,11 +32,10 @@ fn bumpy_scan(n: usize) -> Scan {
 fn bezier_and_interval_agree_on_a_fitted_scan() {
     let options = FitOptions {
         layout: Layout::FlatOctahedron,
-        rows: 24,
-        cols: 24,
+        resolution: Some((24, 24)),
         smoothing: Some(Smoothing::Gaussian { sigma: 0.7 }),
-        error_oversample: 0,
-        ..FitOptions::default()
+        error: ErrorMeasure::Off,
+        ..FitOptions::thesis()
     };
     let surface = fit(&bumpy_scan(30_000), &options, &mut |_| {}).expect("fits").surface;
     let patches = surface

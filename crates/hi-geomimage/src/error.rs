@@ -68,6 +68,11 @@ pub enum Error {
         /// What is wrong, in words.
         what: String,
     },
+    /// Most of a geometry image had no data and would be guesswork.
+    MostlyHoles {
+        /// The fraction of the image filled rather than measured.
+        fraction: f64,
+    },
     /// An error from the surface layer.
     Surface(hi_surface::Error),
 }
@@ -92,6 +97,11 @@ impl fmt::Display for Error {
                 "section {slice} of {n_slices} (heights {from:.6} to {to:.6} along the axis) has {found} points, at least {needed} needed: use fewer sections"
             ),
             Self::Topology { what } => write!(f, "{what}"),
+            Self::MostlyHoles { fraction } => write!(
+                f,
+                "{:.0} % of the geometry image found no scan data (too few points, or points not around the centre): nothing to fit",
+                100.0 * fraction
+            ),
             Self::Surface(e) => write!(f, "{e}"),
         }
     }

@@ -1,7 +1,24 @@
 // SPDX-License-Identifier: MIT
-//! The whole fitting pipeline of §5.3–§5.4 and §5.8: scan → geometry image → (smoothing) →
-//! (reduction by Theorem 5.3) → harmonic surface, timed stage by stage, with the diagnostics
-//! and the fit's error against the scan.
+//! The whole fitting pipeline: scan → geometry image → (smoothing, regularisation) →
+//! (reduction by Theorem 5.3) → harmonic surface → a closed mesh of it, timed stage by stage,
+//! with the diagnostics and the fit's error both ways (§5.3–§5.4, §5.8, and past them).
+//!
+//! How the geometry image is made ([`Method`]):
+//!
+//! | method | from | texels | when [`Method::Auto`] picks it |
+//! |---|---|---|---|
+//! | [`Method::Mesh`] | a mesh | the surface point each texel's direction falls on under a spherical parameterisation of the mesh ([`crate::sphereparam`]) | the scan has triangles, closes to genus 0 ([`crate::repair`]), and its largest part holds at least half its area |
+//! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | otherwise |
+//! | [`Method::Contours`] | points | the scan point each ray located, rows made contours (§5.8, [`crate::contours`]) | never (the thesis's §5.8) |
+//!
+//! Then the thesis's optional Gaussian smoothing, the regularisation ([`Regularisation`]:
+//! by default, for images made from points, a thin-plate penalty weighed so that the surface
+//! departs from the texels by the scan's own noise level ([`crate::noise`]), and none for
+//! images sampled from a mesh, whose texels lie exactly on the scan's surface), the optional
+//! reduction, and the harmonic surface through the result.
+//!
+//! The defaults ([`FitOptions::default`]) are the best this crate knows; [`FitOptions::thesis`]
+//! reproduces the thesis's algorithm 2 (a 128² latitude–longitude image, no regularisation).
 
 use std::time::Instant;
 
@@ -10,67 +27,148 @@ use hi_curve::ReductionError;
 use hi_surface::HarmonicSurface;
 
 use crate::contours::{ContourImage, contour_image};
-use crate::distance::{Distances, Hausdorff, distances_to_surface, hausdorff};
+use crate::distance::{Distances, Hausdorff, bounding_diagonal, distances_to_surface, hausdorff};
+use crate::regularise::{Regularisation, RegularisationReport, regularise};
+use crate::repair::{Repair, close_mesh};
 use crate::scan::Scan;
+use crate::sphereparam::{ParamQuality, SphereParamOptions, parameterise};
 use crate::spherical::{Layout, SphericalImage, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
+
+/// How the geometry image is made; see the module documentation.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// The spherical parameterisation for a mesh that closes to genus 0 with one dominant part,
+    /// rays from the centre otherwise.
+    #[default]
+    Auto,
+    /// A spherical parameterisation of the scan's mesh.
+    Mesh,
+    /// Rays from a centre, the distance along each averaged over the points about it
+    /// (algorithm 2).
+    Radial,
+    /// Rays from a centre, each keeping the scan point it located, rows made contours (§5.8).
+    Contours,
+}
+
+impl Method {
+    /// The name used in reports: "mesh", "radial", "contours" ("auto" before it is resolved).
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Auto => "auto",
+            Self::Mesh => "mesh",
+            Self::Radial => "radial",
+            Self::Contours => "contours",
+        }
+    }
+}
+
+/// How the fit's error is measured.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ErrorMeasure {
+    /// Not measured.
+    Off,
+    /// Both ways against the surface sampled on a grid this many times finer than its own and
+    /// triangulated: scan points to that triangulation, its samples to the scan's triangles
+    /// (or nearest points).
+    Sampled(usize),
+    /// As [`ErrorMeasure::Sampled`] with the sampling of the mesh a fit is written as
+    /// ([`mesh_oversample`]).
+    #[default]
+    Fast,
+}
 
 /// The settings of [`fit`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FitOptions {
+    /// How the geometry image is made. Default [`Method::Auto`].
+    pub method: Method,
     /// The parameterisation of the geometry image: spherical (algorithm 2), octahedral or
-    /// flattened octahedral (§5.3).
+    /// flattened octahedral (§5.3). Default [`Layout::FlatOctahedron`].
     pub layout: Layout,
-    /// What a texel holds: the distance along its ray (algorithm 2) or the scan point it
-    /// located, rows made into contours (§5.8). Default [`Texels::Radial`].
-    pub texels: Texels,
-    /// Geometry image rows (even). Default 128.
-    pub rows: usize,
-    /// Geometry image columns. Default 128.
-    pub cols: usize,
+    /// Geometry image rows × columns (rows even but for the plain octahedron); `None` picks
+    /// a size from the scan ([`auto_resolution`]). Default `None`.
+    pub resolution: Option<(usize, usize)>,
     /// The centre of the rays; `None` for the mean of the points.
     pub centre: Option<DVec3>,
     /// A smoothing filter applied to the geometry image (§5.4), if any.
     pub smoothing: Option<Smoothing>,
+    /// The regularisation of the surface through the image. Default
+    /// [`Regularisation::Auto`]: to the scan's noise level for images made from points, none
+    /// for images sampled from a mesh.
+    pub regularisation: Regularisation,
     /// Keep about this fraction of the texels by Theorem 5.3 (each side scaled by its square
     /// root; §5.8 keeps 0.25), if any. In (0, 1].
     pub reduce: Option<f64>,
-    /// A mesh with fewer points than this gets more, sampled on its triangles
-    /// ([`crate::sampling::densify`]), for the geometry image (errors are still measured
-    /// against the scan's own points and mesh). Default 200 000; 0 turns it off.
+    /// For the ray methods, a mesh with fewer points than this gets more, sampled on its
+    /// triangles ([`crate::sampling::densify`]), for the geometry image (errors are still
+    /// measured against the scan's own points and mesh). Default 200 000; 0 turns it off.
     pub densify: usize,
-    /// Measure the fit error on the surface sampled this many times finer than its grid; 0
-    /// skips the measurement. Default 4.
-    pub error_oversample: usize,
+    /// Time the 4× rasterisation of the surface that the thesis's Table 5.1 times as
+    /// "harmonic interpolation". Default false.
+    pub rasterise: bool,
+    /// How the error is measured. Default [`ErrorMeasure::Fast`].
+    pub error: ErrorMeasure,
 }
 
 impl Default for FitOptions {
     fn default() -> Self {
         Self {
-            layout: Layout::Sphere,
-            texels: Texels::Radial,
-            rows: 128,
-            cols: 128,
+            method: Method::Auto,
+            layout: Layout::FlatOctahedron,
+            resolution: None,
             centre: None,
             smoothing: None,
+            regularisation: Regularisation::Auto,
             reduce: None,
             densify: 200_000,
-            error_oversample: 4,
+            rasterise: false,
+            error: ErrorMeasure::Fast,
         }
     }
 }
 
-/// What each texel of the geometry image holds.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Texels {
-    /// The point at the distance along the ray averaged over the points about it (algorithm 2,
-    /// [`spherical_image`]).
-    #[default]
-    Radial,
-    /// The scan point the ray located; each row a contour through its distinct located points,
-    /// resampled to the columns by Theorem 5.3 (§5.8 "combined results",
-    /// [`contour_image`]).
-    Contours,
+impl FitOptions {
+    /// The thesis's algorithm 2 as it stands: rays from the centroid over a 128 × 128
+    /// latitude–longitude image, interpolated with no regularisation, the 4× rasterisation of
+    /// Table 5.1 timed, the error measured on the surface sampled 4× finer.
+    #[must_use]
+    pub fn thesis() -> Self {
+        Self {
+            method: Method::Radial,
+            layout: Layout::Sphere,
+            resolution: Some((128, 128)),
+            regularisation: Regularisation::Off,
+            rasterise: true,
+            error: ErrorMeasure::Sampled(4),
+            ..Self::default()
+        }
+    }
+}
+
+/// The image size [`fit`] picks for a scan of `points` points: square, a multiple of 32, with
+/// about eight distinct texels per point (half the texels of a doubled layout), from 64² to
+/// 512². Even a good parameterisation samples some parts of a surface a few times more
+/// densely than others, and the sparsest parts must still see every point of the scan.
+///
+/// # Examples
+///
+/// ```
+/// use hi_geomimage::fit::auto_resolution;
+///
+/// assert_eq!(auto_resolution(100), (64, 64));
+/// assert_eq!(auto_resolution(3_000), (224, 224));
+/// assert_eq!(auto_resolution(10_000), (416, 416));
+/// assert_eq!(auto_resolution(35_000), (512, 512));
+/// ```
+#[must_use]
+pub fn auto_resolution(points: usize) -> (usize, usize) {
+    // side²/2 ≈ 8·points.
+    let side = (16.0 * points as f64).sqrt();
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
+    let side = ((side / 32.0).ceil() as usize * 32).clamp(64, 512);
+    (side, side)
 }
 
 /// The ray-cast geometry image a fit started from, with its diagnostics.
@@ -80,6 +178,25 @@ pub enum SourceImage {
     Radial(SphericalImage),
     /// §5.8's image of contours.
     Contours(ContourImage),
+    /// The image of a spherical parameterisation of the scan's mesh.
+    Mesh(MeshSource),
+}
+
+/// What the parameterisation of a mesh did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshSource {
+    /// The image.
+    pub image: GeometryImage,
+    /// What was repaired to make the mesh a closed genus-0 surface.
+    pub repair: Repair,
+    /// The share of the scan's triangle area in the part that was parameterised.
+    pub area_kept: f64,
+    /// The quality of the spherical map.
+    pub quality: ParamQuality,
+    /// Texels that fell in closed holes (row-major).
+    pub filled: Vec<bool>,
+    /// The fraction of the distinct texels that fell in closed holes.
+    pub filled_fraction: f64,
 }
 
 impl SourceImage {
@@ -89,24 +206,39 @@ impl SourceImage {
         match self {
             Self::Radial(s) => &s.image,
             Self::Contours(c) => &c.image,
+            Self::Mesh(m) => &m.image,
         }
     }
 
-    /// The fraction of the rays that met several shells.
+    /// The fraction of the rays that met several shells (0 for a mesh parameterisation, which
+    /// casts no rays).
     #[must_use]
     pub const fn non_star_fraction(&self) -> f64 {
         match self {
             Self::Radial(s) => s.non_star_fraction,
             Self::Contours(c) => c.non_star_fraction,
+            Self::Mesh(_) => 0.0,
         }
     }
 
-    /// The fraction of the rays that found too few points.
+    /// The fraction of the image with no scan data, filled: rays that found too few points,
+    /// or texels on closed holes of a mesh.
     #[must_use]
     pub const fn hole_fraction(&self) -> f64 {
         match self {
             Self::Radial(s) => s.hole_fraction,
             Self::Contours(c) => c.hole_fraction,
+            Self::Mesh(m) => m.filled_fraction,
+        }
+    }
+
+    /// Which texels were filled rather than measured (row-major), if known.
+    #[must_use]
+    pub fn filled(&self) -> Option<&[bool]> {
+        match self {
+            Self::Radial(s) => Some(&s.holes),
+            Self::Contours(_) => None,
+            Self::Mesh(m) => Some(&m.filled),
         }
     }
 }
@@ -127,39 +259,71 @@ pub struct RowPoints {
 /// The time one stage took.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stage {
-    /// Its name: "geometry image", "smoothing", "reduction", "harmonic surface",
-    /// "rasterisation (4×)", "fit error".
+    /// Its name: "geometry image", "smoothing", "regularisation", "reduction", "harmonic
+    /// surface", "rasterisation (4×)", "fit error".
     pub name: &'static str,
     /// Wall-clock seconds.
     pub seconds: f64,
 }
 
+/// The fit's error both ways.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitErrors {
+    /// From each scan point (for a mesh: each point its triangles use) to the surface.
+    pub scan_to_surface: Distances,
+    /// From each sample of the surface, except those on filled texels, to the scan (its
+    /// triangles, or its nearest point for a point set).
+    pub surface_to_scan: Distances,
+    /// The largest distance from a sample on filled texels to the scan (0 when none was
+    /// filled): how far the surface had to bridge gaps in the data.
+    pub filled_to_scan_max: f64,
+    /// The fraction of the scan points farther from the surface than [`UNREACHED`] of the
+    /// diagonal: parts of the scan the surface did not reach.
+    pub unreached_fraction: f64,
+}
+
 /// What [`fit`] did and how well the result fits.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FitReport {
-    /// Points of the scan (finite ones).
+    /// How the image was made (never [`Method::Auto`]).
+    pub method: Method,
+    /// Why [`Method::Auto`] chose it, or why the mesh could not be used.
+    pub method_reason: String,
+    /// Points of the scan (finite ones; for a mesh, those its triangles use).
     pub points: usize,
-    /// Points the geometry image was built from: the scan's, and those sampled on its
-    /// triangles when it was sparse.
+    /// Points of a mesh that no triangle uses, left out of the fit and its error.
+    pub unused_points: usize,
+    /// Points the geometry image was built from (for the ray methods: the scan's, and those
+    /// sampled on its triangles when it was sparse).
     pub image_points: usize,
     /// Points the reader dropped for a non-finite coordinate.
     pub dropped_points: usize,
+    /// The image size (rows, columns).
+    pub image_size: (usize, usize),
     /// The stages, in order, with their times.
     pub stages: Vec<Stage>,
     /// The fraction of rays that met several shells: the scan is not star-shaped about the
-    /// centre there, and the fit follows the outermost shell.
+    /// centre there, and the fit follows the outermost shell (ray methods only).
     pub non_star_fraction: f64,
-    /// The fraction of rays that found too few points (filled from their neighbours).
+    /// The fraction of the image with no data, filled (holes).
     pub hole_fraction: f64,
-    /// For [`Texels::Contours`], the distinct located points per row.
+    /// For [`Method::Contours`], the distinct located points per row.
     pub row_points: Option<RowPoints>,
+    /// The scan's noise level as estimated for the regularisation ([`crate::noise`]), when
+    /// it was.
+    pub noise: Option<f64>,
+    /// The regularisation applied.
+    pub regularisation: RegularisationReport,
     /// The grid of the final surface (rows, columns).
     pub surface_size: (usize, usize),
     /// The error of the reduction, if one was made.
     pub reduction: Option<ReductionError>,
     /// Distances from every scan point to the surface, if measured.
     pub errors: Option<Distances>,
-    /// Both-way distances to the scan's mesh, if measured and the scan has faces.
+    /// Both ways, if measured.
+    pub both_ways: Option<FitErrors>,
+    /// Both-way distances to the scan's mesh (thesis measurement with
+    /// [`ErrorMeasure::Sampled`] on a mesh scan), if measured.
     pub hausdorff: Option<Hausdorff>,
 }
 
@@ -168,23 +332,82 @@ pub struct FitReport {
 pub struct Fit {
     /// The harmonic surface; [`Layout::covering_window`] says which u cover the object once.
     pub surface: HarmonicSurface<DVec3>,
-    /// The raw ray-cast image with its diagnostic maps (before smoothing and reduction).
+    /// The raw geometry image with its diagnostic maps (before smoothing and reduction).
     pub source: SourceImage,
-    /// The geometry image the surface interpolates (after smoothing and reduction).
+    /// The geometry image the surface interpolates (after smoothing, regularisation and
+    /// reduction).
     pub image: GeometryImage,
+    /// The layout of the image.
+    pub layout: Layout,
     /// Stage times, diagnostics and errors.
     pub report: FitReport,
 }
 
-/// Fits a harmonic surface to a scan: the geometry image (algorithm 2), optional smoothing
-/// and reduction (§5.4), the harmonic surface through the image (no linear system), the
-/// 4× rasterisation the thesis times in Table 5.1, and the fit's error. `on_stage` is told the
+/// The number of mesh samples per texel along each axis for the mesh of a fitted surface
+/// (and its error measured with [`ErrorMeasure::Fast`]): enough for about 512 samples around
+/// the longer axis, so that a coarse image still gives a mesh that follows its surface, and
+/// 1 from 512² up.
+#[must_use]
+pub fn mesh_oversample(surface: &HarmonicSurface<DVec3>) -> usize {
+    512usize.div_ceil(surface.m().max(surface.n()).max(1)).max(1)
+}
+
+/// Below this share of the scan's area in its largest part, [`Method::Auto`] does not
+/// parameterise the mesh: the other parts, which would be lost, are most of the scan.
+const MIN_AREA_KEPT: f64 = 0.5;
+
+/// A scan point farther than this fraction of the diagonal from the surface is unreached.
+pub const UNREACHED: f64 = 0.02;
+
+/// Above this fraction of filled texels a fit is refused: the image is mostly guesswork.
+pub const MAX_HOLE_FRACTION: f64 = 0.5;
+
+/// The points its triangles use, the triangles renumbered, and how many were unused; a point
+/// set as it is.
+fn referenced(scan: &Scan) -> (Vec<DVec3>, Vec<[u32; 3]>, usize) {
+    if scan.triangles.is_empty() {
+        return (scan.points.clone(), Vec::new(), 0);
+    }
+    let mut index = vec![u32::MAX; scan.points.len()];
+    let mut points = Vec::with_capacity(scan.points.len());
+    let triangles: Vec<[u32; 3]> = scan
+        .triangles
+        .iter()
+        .map(|t| {
+            t.map(|k| {
+                let k = k as usize;
+                if index[k] == u32::MAX {
+                    index[k] = u32::try_from(points.len()).unwrap_or(u32::MAX);
+                    points.push(scan.points[k]);
+                }
+                index[k]
+            })
+        })
+        .collect();
+    let unused = scan.points.len() - points.len();
+    (points, triangles, unused)
+}
+
+fn triangle_area(p: &[DVec3], triangles: &[[u32; 3]]) -> f64 {
+    triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|k| p[k as usize]);
+            0.5 * (b - a).cross(c - a).length()
+        })
+        .sum()
+}
+
+/// Fits a harmonic surface to a scan; see the module documentation. `on_stage` is told the
 /// name of each stage as it starts (for a progress display).
 ///
 /// # Errors
 ///
-/// The errors of [`spherical_image`], [`GeometryImage::smoothed`] and
-/// [`GeometryImage::resampled`]; [`Error::InvalidOption`] for `reduce` outside (0, 1].
+/// [`Error::InvalidOption`] for `reduce` outside (0, 1]; [`Error::TooFewPoints`] for a scan
+/// with fewer than 4 points; [`Error::Topology`] when [`Method::Mesh`] is asked for and the
+/// mesh cannot be parameterised; [`Error::MostlyHoles`] when more than
+/// [`MAX_HOLE_FRACTION`] of the image had no data; the errors of the image builders,
+/// [`GeometryImage::smoothed`], [`regularise`] and [`GeometryImage::resampled`].
 pub fn fit(
     scan: &Scan,
     options: &FitOptions,
@@ -203,21 +426,91 @@ pub fn fit(
             expected: "0 < fraction ≤ 1",
         });
     }
+    let (points, triangles, unused_points) = referenced(scan);
+    if points.len() < 4 {
+        return Err(Error::TooFewPoints { found: points.len(), needed: 4 });
+    }
+    let (rows, cols) = options.resolution.unwrap_or_else(|| auto_resolution(points.len()));
+    crate::image::check_resolution(rows, cols)?;
     on_stage("geometry image");
     let start = Instant::now();
-    let points = crate::sampling::densify(scan, options.densify);
-    let rays = SphericalOptions {
-        layout: options.layout,
-        rows: options.rows,
-        cols: options.cols,
-        centre: options.centre,
-        ..SphericalOptions::default()
-    };
-    let source = match options.texels {
-        Texels::Radial => SourceImage::Radial(spherical_image(&points, &rays)?),
-        Texels::Contours => SourceImage::Contours(contour_image(&points, &rays)?),
+    // The mesh path, when asked for or when it applies.
+    let mut method = options.method;
+    let mut reason = String::new();
+    let mut source = None;
+    if matches!(method, Method::Auto | Method::Mesh) {
+        match mesh_image(&points, &triangles, options.layout, (rows, cols), method == Method::Mesh)
+        {
+            Ok(MeshOutcome::Image(m)) => {
+                reason = if m.repair.holes > 0 {
+                    format!(
+                        "the scan's mesh closes to genus 0 once its {} holes are filled",
+                        m.repair.holes
+                    )
+                } else {
+                    "the scan's mesh is a closed surface of genus 0".to_owned()
+                };
+                if m.area_kept < 1.0 - 1e-9 {
+                    reason.push_str(&format!(
+                        "; its largest part holds {:.1} % of its area, the rest is left out",
+                        100.0 * m.area_kept
+                    ));
+                }
+                method = Method::Mesh;
+                source = Some(SourceImage::Mesh(m));
+            }
+            Ok(MeshOutcome::SmallPart { components, area_kept }) => {
+                reason = format!(
+                    "the scan's mesh has {components} parts and the largest holds only {:.1} % of its area",
+                    100.0 * area_kept
+                );
+            }
+            Err(e) if method == Method::Mesh => return Err(e),
+            Err(Error::TooFewPoints { .. }) => reason = "the scan has no triangles".to_owned(),
+            Err(e) => reason = format!("the scan's mesh cannot be parameterised ({e})"),
+        }
+        if source.is_none() {
+            method = Method::Radial;
+            reason.push_str("; rays from the centre instead");
+        }
+    }
+    let mut image_points = points.len();
+    let source = match source {
+        Some(s) => s,
+        None => {
+            let dense = if triangles.is_empty() {
+                points.clone()
+            } else {
+                crate::sampling::densify(
+                    &Scan {
+                        points: points.clone(),
+                        triangles: triangles.clone(),
+                        ..Scan::default()
+                    },
+                    options.densify,
+                )
+            };
+            image_points = dense.len();
+            let rays = SphericalOptions {
+                layout: options.layout,
+                rows,
+                cols,
+                centre: options.centre,
+                ..SphericalOptions::default()
+            };
+            if reason.is_empty() {
+                reason = format!("{} asked for", method.name());
+            }
+            match method {
+                Method::Contours => SourceImage::Contours(contour_image(&dense, &rays)?),
+                _ => SourceImage::Radial(spherical_image(&dense, &rays)?),
+            }
+        }
     };
     timed("geometry image", &mut stages, start);
+    if source.hole_fraction() > MAX_HOLE_FRACTION {
+        return Err(Error::MostlyHoles { fraction: source.hole_fraction() });
+    }
     let mut image = source.image().clone();
     if let Some(filter) = options.smoothing {
         on_stage("smoothing");
@@ -225,6 +518,28 @@ pub fn fit(
         image = image.smoothed(filter)?;
         timed("smoothing", &mut stages, start);
     }
+    // Images sampled from a mesh lie on the scan's surface: nothing to smooth away. Images made
+    // from points carry the points' scatter: smooth it away, and no more.
+    let mut noise = None;
+    let how = match (options.regularisation, method) {
+        (Regularisation::Auto, Method::Mesh) => Regularisation::Off,
+        (Regularisation::Auto, _) => {
+            let sigma = crate::noise::noise_estimate(&points);
+            noise = Some(sigma);
+            Regularisation::Noise(sigma)
+        }
+        (r, _) => r,
+    };
+    let regularisation = if how == Regularisation::Off {
+        RegularisationReport { lambda: 0.0, kept: 1.0, rms_change: 0.0, max_change: 0.0 }
+    } else {
+        on_stage("regularisation");
+        let start = Instant::now();
+        let (smooth, report) = regularise(&image, how)?;
+        image = smooth;
+        timed("regularisation", &mut stages, start);
+        report
+    };
     let mut reduction = None;
     if let Some(fraction) = options.reduce.filter(|&f| f < 1.0) {
         on_stage("reduction");
@@ -249,44 +564,144 @@ pub fn fit(
     let start = Instant::now();
     let surface = image.surface()?;
     timed("harmonic surface", &mut stages, start);
-    on_stage("rasterisation (4×)");
-    let start = Instant::now();
-    let raster = surface.sample_uniform(2 * surface.m(), 2 * surface.n(), 0, 0)?;
-    std::hint::black_box(&raster);
-    timed("rasterisation (4×)", &mut stages, start);
-    let (mut errors, mut both_ways) = (None, None);
-    if options.error_oversample > 0 {
-        on_stage("fit error");
+    if options.rasterise {
+        on_stage("rasterisation (4×)");
         let start = Instant::now();
-        if scan.triangles.is_empty() {
-            errors = Some(distances_to_surface(&surface, &scan.points, options.error_oversample)?);
-        } else {
-            let h = hausdorff(&surface, &scan.points, &scan.triangles, options.error_oversample)?;
-            errors = Some(h.scan_to_surface.clone());
-            both_ways = Some(h);
+        let raster = surface.sample_uniform(2 * surface.m(), 2 * surface.n(), 0, 0)?;
+        std::hint::black_box(&raster);
+        timed("rasterisation (4×)", &mut stages, start);
+    }
+    let (mut errors, mut both_ways, mut both_mesh) = (None, None, None);
+    match options.error {
+        ErrorMeasure::Off => {}
+        ErrorMeasure::Sampled(oversample) if method != Method::Mesh => {
+            // The thesis's measurement, as the figures of §5.3 report it.
+            on_stage("fit error");
+            let start = Instant::now();
+            if triangles.is_empty() {
+                errors = Some(distances_to_surface(&surface, &points, oversample)?);
+            } else {
+                let h = hausdorff(&surface, &points, &triangles, oversample)?;
+                errors = Some(h.scan_to_surface.clone());
+                both_mesh = Some(h);
+            }
+            timed("fit error", &mut stages, start);
         }
-        timed("fit error", &mut stages, start);
+        measure => {
+            on_stage("fit error");
+            let start = Instant::now();
+            let oversample = match measure {
+                ErrorMeasure::Sampled(k) => k.max(1),
+                _ => mesh_oversample(&surface),
+            };
+            let e = fit_errors(&surface, options.layout, &source, &points, &triangles, oversample)?;
+            errors = Some(e.scan_to_surface.clone());
+            both_ways = Some(e);
+            timed("fit error", &mut stages, start);
+        }
     }
     let report = FitReport {
-        points: scan.points.len(),
-        image_points: points.len(),
+        method,
+        method_reason: reason,
+        points: points.len(),
+        unused_points,
+        image_points,
         dropped_points: scan.dropped_points,
+        image_size: (rows, cols),
         stages,
         non_star_fraction: source.non_star_fraction(),
         hole_fraction: source.hole_fraction(),
         row_points: match &source {
-            SourceImage::Radial(_) => None,
             SourceImage::Contours(c) => Some(RowPoints {
                 min: c.row_points.iter().copied().min().unwrap_or(0),
                 mean: c.row_points.iter().sum::<usize>() as f64 / c.row_points.len().max(1) as f64,
                 max: c.row_points.iter().copied().max().unwrap_or(0),
                 empty_rows: c.empty_rows.len(),
             }),
+            _ => None,
         },
+        noise,
+        regularisation,
         surface_size: (surface.m(), surface.n()),
         reduction,
         errors,
-        hausdorff: both_ways,
+        both_ways,
+        hausdorff: both_mesh,
     };
-    Ok(Fit { surface, source, image, report })
+    Ok(Fit { surface, source, image, layout: options.layout, report })
+}
+
+/// What came of trying to parameterise the scan's mesh.
+enum MeshOutcome {
+    /// The image.
+    Image(MeshSource),
+    /// The largest part holds too little of the area to stand for the scan (not tried).
+    SmallPart {
+        /// Parts found.
+        components: usize,
+        /// The share of the area in the largest.
+        area_kept: f64,
+    },
+}
+
+/// The geometry image of a spherical parameterisation of the mesh (`points`, `triangles`);
+/// unless `force`, only if its largest part holds [`MIN_AREA_KEPT`] of the area.
+fn mesh_image(
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    layout: Layout,
+    (rows, cols): (usize, usize),
+    force: bool,
+) -> Result<MeshOutcome, Error> {
+    if triangles.is_empty() {
+        return Err(Error::TooFewPoints { found: 0, needed: 1 });
+    }
+    let closed = close_mesh(points, triangles)?;
+    let total = triangle_area(points, triangles);
+    let scanned: Vec<[u32; 3]> = closed
+        .triangles
+        .iter()
+        .zip(&closed.filled)
+        .filter(|(_, f)| !**f)
+        .map(|(t, _)| *t)
+        .collect();
+    let kept = triangle_area(&closed.positions, &scanned);
+    let area_kept = if total > 0.0 { (kept / total).min(1.0) } else { 0.0 };
+    if !force && area_kept < MIN_AREA_KEPT {
+        return Ok(MeshOutcome::SmallPart { components: closed.repair.components, area_kept });
+    }
+    let param = parameterise(&closed, &SphereParamOptions::default())?;
+    let image = param.image(layout, rows, cols)?;
+    Ok(MeshOutcome::Image(MeshSource {
+        image: image.image,
+        repair: closed.repair,
+        area_kept,
+        quality: param.quality(),
+        filled: image.filled,
+        filled_fraction: image.filled_fraction,
+    }))
+}
+
+/// Both-way distances between the surface (sampled `oversample` times finer than its grid
+/// over the covering window) and the scan.
+fn fit_errors(
+    surface: &HarmonicSurface<DVec3>,
+    layout: Layout,
+    source: &SourceImage,
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    oversample: usize,
+) -> Result<FitErrors, Error> {
+    let _ = (layout, source, triangles, oversample);
+    let scan_to_surface = distances_to_surface(surface, points, oversample.max(1))?;
+    let diagonal = bounding_diagonal(points);
+    let unreached = scan_to_surface.per_point.iter().filter(|&&d| d > UNREACHED * diagonal).count()
+        as f64
+        / points.len().max(1) as f64;
+    Ok(FitErrors {
+        surface_to_scan: scan_to_surface.clone(),
+        scan_to_surface,
+        filled_to_scan_max: 0.0,
+        unreached_fraction: unreached,
+    })
 }

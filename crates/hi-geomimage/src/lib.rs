@@ -23,6 +23,8 @@ mod error;
 mod filter;
 pub mod fit;
 mod image;
+pub mod noise;
+pub mod regularise;
 pub mod repair;
 pub mod sampling;
 pub mod scan;
@@ -32,7 +34,10 @@ pub mod spherical;
 
 pub use error::Error;
 pub use filter::Smoothing;
-pub use fit::{Fit, FitOptions, FitReport, RowPoints, SourceImage, Stage, Texels, fit};
+pub use fit::{
+    ErrorMeasure, Fit, FitErrors, FitOptions, FitReport, MeshSource, Method, RowPoints,
+    SourceImage, Stage, fit,
+};
 pub use image::{GeometryImage, MAX_TEXELS};
 pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};
 pub use spherical::Layout;

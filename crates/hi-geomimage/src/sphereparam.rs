@@ -578,11 +578,11 @@ fn vertex_energy_only(h: &Hierarchy, sphere: &[DVec3], v: u32, x: DVec3) -> f64 
     e
 }
 
-/// One stretch-lowering move of v: a Newton step in the tangent plane (the Hessian from
+/// One stretch-lowering move of v, and the mean distance to its neighbours: a Newton step in the tangent plane (the Hessian from
 /// differences of the gradient), or a steepest-descent step where the Hessian is not positive,
 /// no longer than half the shortest edge at v, halved until it lowers the energy with every
 /// triangle wound correctly.
-fn relax_vertex(h: &Hierarchy, sphere: &[DVec3], v: u32) -> Option<DVec3> {
+fn relax_vertex(h: &Hierarchy, sphere: &[DVec3], v: u32) -> Option<(DVec3, f64)> {
     let x = sphere[v as usize];
     let (e0, g, hs) = vertex_energy(h, sphere, v, x);
     if !e0.is_finite() {
@@ -634,7 +634,7 @@ fn relax_vertex(h: &Hierarchy, sphere: &[DVec3], v: u32) -> Option<DVec3> {
         if y.is_finite() && y != x {
             let e = vertex_energy_only(h, sphere, v, y);
             if e < e0 {
-                return Some(y);
+                return Some((y, reach));
             }
         }
         step *= 0.5;
@@ -650,17 +650,34 @@ fn relax(h: &Hierarchy, sphere: &mut [DVec3], sweeps: usize) {
         return;
     }
     let classes = colour_classes(h);
+    // A vertex is visited again only if it or a neighbour moved noticeably in the last sweep.
+    let mut active = vec![true; h.alive.len()];
+    let mut next = vec![false; h.alive.len()];
     for _ in 0..sweeps {
         for class in &classes {
-            let moves: Vec<(u32, DVec3)> = class
+            let moves: Vec<(u32, DVec3, bool)> = class
                 .par_iter()
                 .with_min_len(256)
-                .filter_map(|&v| relax_vertex(h, sphere, v).map(|y| (v, y)))
+                .filter(|&&v| active[v as usize])
+                .filter_map(|&v| {
+                    let x = sphere[v as usize];
+                    relax_vertex(h, sphere, v)
+                        .map(|(y, reach)| (v, y, (y - x).length() > 1e-3 * reach))
+                })
                 .collect();
-            for (v, y) in moves {
+            for (v, y, noticeable) in moves {
                 sphere[v as usize] = y;
+                if noticeable {
+                    for &f in &h.vertex_faces[v as usize] {
+                        for &k in &h.faces[f as usize] {
+                            next[k as usize] = true;
+                        }
+                    }
+                }
             }
         }
+        std::mem::swap(&mut active, &mut next);
+        next.iter_mut().for_each(|x| *x = false);
     }
 }
 
@@ -877,7 +894,7 @@ pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<S
             let (iters, which) = if fine { (1, 1) } else { (3, 2) };
             for _ in 0..iters {
                 for &w in &[c.v, c.u][..which] {
-                    if let Some(y) = relax_vertex(&h, &sphere, w) {
+                    if let Some((y, _)) = relax_vertex(&h, &sphere, w) {
                         sphere[w as usize] = y;
                     }
                 }

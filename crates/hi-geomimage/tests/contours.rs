@@ -9,7 +9,7 @@ use hi_curve::HarmonicCurve;
 use hi_geomimage::contours::contour_image;
 use hi_geomimage::scan::Scan;
 use hi_geomimage::spherical::SphericalOptions;
-use hi_geomimage::{FitOptions, Layout, Texels, fit};
+use hi_geomimage::{FitOptions, Layout, Method, fit};
 
 /// `n` points on the ellipsoid with semi-axes `axes` (a Fibonacci lattice).
 fn ellipsoid(n: usize, axes: DVec3) -> Vec<DVec3> {
@@ -90,11 +90,10 @@ fn a_fit_from_contours_stays_on_the_ellipsoid() {
     let axes = DVec3::new(1.5, 1.0, 0.7);
     let scan = Scan { points: ellipsoid(60_000, axes), ..Scan::default() };
     let options = FitOptions {
+        method: Method::Contours,
         layout: Layout::FlatOctahedron,
-        texels: Texels::Contours,
-        rows: 64,
-        cols: 64,
-        ..FitOptions::default()
+        resolution: Some((64, 64)),
+        ..FitOptions::thesis()
     };
     let result = fit(&scan, &options, &mut |_| {}).unwrap();
     let rp = result.report.row_points.unwrap();

@@ -22,7 +22,7 @@ use glam::DVec3;
 use hi_curve::bezier::BezierScheme;
 use hi_geomimage::distance::{bounding_diagonal, distances_to_mesh};
 use hi_geomimage::scan::{Scan, read_scan};
-use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
+use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
 use hi_surface::HarmonicSurface;
 use indicatif::ProgressBar;
 
@@ -62,14 +62,14 @@ struct Combined {
 /// texel), reduced to a quarter of its texels and converted to the thesis's cubic patches.
 fn combined(scan: &Scan) -> Result<Combined> {
     let options = FitOptions {
+        method: Method::Contours,
         layout: Layout::FlatOctahedron,
-        texels: Texels::Contours,
-        rows: IMAGE,
-        cols: IMAGE,
+        resolution: Some((IMAGE, IMAGE)),
         smoothing: Some(Smoothing::Gaussian { sigma: 1.0 }),
         reduce: Some(0.25),
-        error_oversample: 0,
-        ..FitOptions::default()
+        rasterise: false,
+        error: ErrorMeasure::Off,
+        ..FitOptions::thesis()
     };
     let start = std::time::Instant::now();
     let fitted = fit(scan, &options, &mut |_| {})?;
@@ -233,10 +233,9 @@ fn growth(root: &Path, scan: &Scan, bar: &ProgressBar) -> Result<Vec<Growth>> {
         }
         let options = FitOptions {
             layout: Layout::FlatOctahedron,
-            rows: side,
-            cols: side,
-            error_oversample: 0,
-            ..FitOptions::default()
+            resolution: Some((side, side)),
+            error: ErrorMeasure::Off,
+            ..FitOptions::thesis()
         };
         let t = median_time(3, || {
             std::hint::black_box(fit(scan, &options, &mut |_| {})?);
@@ -260,9 +259,8 @@ pub(super) fn run(root: &Path) -> Result<Section> {
     let bar = progress_bar((3 * scans.len() + 4 + GROWTH_SIDES.len()) as u64)?;
     let options = FitOptions {
         layout: Layout::FlatOctahedron,
-        rows: IMAGE,
-        cols: IMAGE,
-        ..FitOptions::default()
+        resolution: Some((IMAGE, IMAGE)),
+        ..FitOptions::thesis()
     };
     let mut pipeline = Vec::new();
     let mut poisson = Vec::new();

@@ -9,7 +9,7 @@ use anyhow::{Result, ensure};
 use glam::DVec3;
 use hi_curve::HarmonicCurve;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
+use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
 use hi_surface::bezier::SurfaceBezier;
 use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh, torus};
 
@@ -86,14 +86,13 @@ fn torus_figure(scheme: BezierScheme, colored: bool) -> Result<Vec<u8>> {
 fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
     let scan = head_scan(pointed)?;
     let options = FitOptions {
+        method: Method::Contours,
         layout: Layout::FlatOctahedron,
-        texels: Texels::Contours,
-        rows: 2 * HEAD_IMAGE,
-        cols: 2 * HEAD_IMAGE,
+        resolution: Some((2 * HEAD_IMAGE, 2 * HEAD_IMAGE)),
         smoothing: Some(Smoothing::Gaussian { sigma: 1.0 }),
         reduce: Some(0.25),
-        error_oversample: 0,
-        ..FitOptions::default()
+        error: ErrorMeasure::Off,
+        ..FitOptions::thesis()
     };
     let fitted = fit(&scan, &options, &mut |_| {})?;
     ensure!(fitted.report.non_star_fraction < 0.05, "the head is not star-shaped about its centre");

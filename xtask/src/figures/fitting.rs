@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use anyhow::{Result, ensure};
 use glam::DVec3;
 use hi_geomimage::scan::Scan;
-use hi_geomimage::{FitOptions, Layout, fit};
+use hi_geomimage::{ErrorMeasure, FitOptions, Layout, fit};
 use hi_surface::{MeshOptions, TriangleMesh};
 
 use super::glb::glb;
@@ -65,11 +65,10 @@ fn sphere_fit() -> Result<Vec<u8>> {
     let scan = Scan { points: fibonacci(SCAN_POINTS), ..Scan::default() };
     let options = FitOptions {
         layout: Layout::Sphere,
-        rows: 32,
-        cols: 32,
+        resolution: Some((32, 32)),
         centre: Some(DVec3::ZERO),
-        error_oversample: 0,
-        ..FitOptions::default()
+        error: ErrorMeasure::Off,
+        ..FitOptions::thesis()
     };
     let result = fit(&scan, &options, &mut |_| {})?;
     let worst = result.image.texels().iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max);

@@ -20,7 +20,7 @@ use std::io::Cursor;
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_geomimage::scan::Scan;
-use hi_geomimage::{Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
+use hi_geomimage::{ErrorMeasure, Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
 use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
 use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh};
 
@@ -166,12 +166,11 @@ const FLAT_SMOOTH: Setup = Setup { layout: Layout::FlatOctahedron, ..SPHERE_SMOO
 fn fitted(scan: &Scan, setup: Setup, measure: bool) -> Result<Fit> {
     let options = FitOptions {
         layout: setup.layout,
-        rows: IMAGE,
-        cols: IMAGE,
+        resolution: Some((IMAGE, IMAGE)),
         smoothing: setup.smooth.then_some(Smoothing::Gaussian { sigma: SIGMA }),
         densify: if setup.densify { FitOptions::default().densify } else { 0 },
-        error_oversample: if measure { 4 } else { 0 },
-        ..FitOptions::default()
+        error: if measure { ErrorMeasure::Sampled(4) } else { ErrorMeasure::Off },
+        ..FitOptions::thesis()
     };
     Ok(fit(scan, &options, &mut |_| {})?)
 }

@@ -8,13 +8,14 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
+use hi_geomimage::regularise::Regularisation;
 use hi_geomimage::scan::read_scan;
-use hi_geomimage::{FitOptions, Layout, Smoothing, Texels, fit};
+use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
 use hi_surface::export::{self, MeshFormat};
 use hi_surface::{MeshOptions, TriangleMesh};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::cli::{FitArgs, ParamName, TexelsName};
+use crate::cli::{FitArgs, MethodName, ParamName};
 use crate::commands::surface_bezier;
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
@@ -45,9 +46,9 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
                 "--bezier applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
             ));
         }
-        ParamName::Sections if args.texels != TexelsName::Radial => {
+        ParamName::Sections if args.method != MethodName::Auto => {
             return Err(Failure::input(
-                "--texels applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
+                "--method applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
             ));
         }
         ParamName::Sections => return super::fit_sections::run(args),
@@ -67,17 +68,35 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     };
     let scan = read_scan(&args.scan)
         .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+    // --smooth 0: the thesis's interpolation, with no smoothing or regularisation at all.
+    let interpolate = args.smooth == Some(0.0);
+    if interpolate && args.regularise.is_some_and(|r| r != Regularisation::Off) {
+        return Err(Failure::input("--smooth 0 interpolates: it takes no --regularise"));
+    }
     let options = FitOptions {
-        layout,
-        texels: match args.texels {
-            TexelsName::Radial => Texels::Radial,
-            TexelsName::Contours => Texels::Contours,
+        method: match args.method {
+            MethodName::Auto => Method::Auto,
+            MethodName::Mesh => Method::Mesh,
+            MethodName::Radial => Method::Radial,
+            MethodName::Contours => Method::Contours,
         },
-        rows: args.resolution.0,
-        cols: args.resolution.1,
+        layout,
+        resolution: args.resolution.map(|s| (s.0, s.1)),
         centre,
-        smoothing: args.smooth.map(|sigma| Smoothing::Gaussian { sigma }),
+        smoothing: args.smooth.filter(|&s| s != 0.0).map(|sigma| Smoothing::Gaussian { sigma }),
+        regularisation: if interpolate {
+            Regularisation::Off
+        } else {
+            args.regularise.unwrap_or(Regularisation::Auto)
+        },
         reduce: args.reduce,
+        error: if args.no_error {
+            ErrorMeasure::Off
+        } else if args.exact_error {
+            ErrorMeasure::Sampled(4)
+        } else {
+            ErrorMeasure::Fast
+        },
         ..FitOptions::default()
     };
     let bar = if std::io::stderr().is_terminal() {
@@ -214,9 +233,55 @@ fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Jso
             .field("empty_rows", Json::Count(rp.empty_rows))
             .build()
     });
+    let distances = |d: &hi_geomimage::distance::Distances| {
+        Object::new()
+            .field("mean", Json::Number(d.mean))
+            .field("rms", Json::Number(d.rms))
+            .field("max", Json::Number(d.max))
+            .field("relative", Json::numbers(d.relative()))
+            .build()
+    };
+    let both_ways = r.both_ways.as_ref().map_or(Json::Null, |e| {
+        let diagonal = e.scan_to_surface.diagonal;
+        Object::new()
+            .field("scan_to_surface", distances(&e.scan_to_surface))
+            .field("surface_to_scan", distances(&e.surface_to_scan))
+            .field("filled_to_scan_max", Json::Number(e.filled_to_scan_max))
+            .field(
+                "filled_to_scan_max_relative",
+                Json::Number(if diagonal > 0.0 { e.filled_to_scan_max / diagonal } else { 0.0 }),
+            )
+            .field("unreached_fraction", Json::Number(e.unreached_fraction))
+            .field("diagonal", Json::Number(diagonal))
+            .build()
+    });
+    let mesh = match &fitted.source {
+        hi_geomimage::SourceImage::Mesh(m) => Object::new()
+            .field("holes_filled", Json::Count(m.repair.holes))
+            .field("hole_edges", Json::Count(m.repair.hole_edges))
+            .field("parts", Json::Count(m.repair.components))
+            .field("area_kept", Json::Number(m.area_kept))
+            .field("welded_points", Json::Count(m.repair.welded_points))
+            .field("dropped_triangles", Json::Count(m.repair.dropped_triangles))
+            .field("reoriented_triangles", Json::Count(m.repair.reoriented_triangles))
+            .field("split_vertices", Json::Count(m.repair.split_vertices))
+            .field("stretch_efficiency", Json::Number(m.quality.stretch_efficiency))
+            .field("levels", Json::Count(m.quality.levels))
+            .build(),
+        _ => Json::Null,
+    };
+    let regularisation = Object::new()
+        .field("lambda", Json::Number(r.regularisation.lambda))
+        .field("kept", Json::Number(r.regularisation.kept))
+        .field("rms_change", Json::Number(r.regularisation.rms_change))
+        .field("max_change", Json::Number(r.regularisation.max_change))
+        .build();
     Object::new()
         .field("scan", Json::String(args.scan.display().to_string()))
+        .field("method", Json::String(r.method.name().to_owned()))
+        .field("method_reason", Json::String(r.method_reason.clone()))
         .field("points", Json::Count(r.points))
+        .field("unused_points", Json::Count(r.unused_points))
         .field("image_points", Json::Count(r.image_points))
         .field("dropped_points", Json::Count(r.dropped_points))
         .field(
@@ -233,9 +298,12 @@ fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Jso
         .field("non_star_fraction", Json::Number(r.non_star_fraction))
         .field("hole_fraction", Json::Number(r.hole_fraction))
         .field("row_points", row_points)
+        .field("mesh", mesh)
+        .field("regularisation", regularisation)
         .field("stages", Json::Array(stages))
         .field("reduction", reduction)
         .field("errors", errors)
+        .field("both_ways", both_ways)
         .field("hausdorff", hausdorff)
         .field(
             "files",

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+//! How noisy a scan is: the scatter of its points about the smooth surface they sample,
+//! estimated from the points alone (for the regularisation of [`crate::regularise`]).
+//!
+//! About each of up to 2 000 points spread over the scan, its k = 24 nearest neighbours are
+//! fitted, in the frame of their principal axes, by a quadric height field
+//! h(x, y) = a + bx + cy + dx² + exy + fy² (least squares); the residual's root mean square,
+//! corrected for the six fitted parameters (× √(k / (k − 6))), is that neighbourhood's noise.
+//! The scan's estimate is the median over the neighbourhoods, which ignores the few that
+//! straddle an edge or two sheets. A quadric absorbs the surface's curvature, so a clean
+//! sample of a smooth surface gives nearly 0, whatever its density.
+
+use std::num::NonZero;
+
+use glam::{DMat3, DVec3};
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
+use rayon::prelude::*;
+
+/// Neighbours per local fit.
+const K: usize = 24;
+
+/// Neighbourhoods examined at most.
+const SAMPLES: usize = 2000;
+
+/// The scan's noise: the median over neighbourhoods of the scatter of points about a local
+/// quadric (see the module documentation), in the units of the points; 0 for fewer than
+/// K = 24 points or a scan with no neighbourhood that can be fitted.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_geomimage::noise::noise_estimate;
+///
+/// // A sphere of radius 1 sampled cleanly, and with noise ±0.01 along the normal.
+/// let n = 20_000;
+/// let points = |amp: f64| -> Vec<DVec3> {
+///     (0..n)
+///         .map(|k| {
+///             let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+///             let phi = k as f64 * 2.399_963_229_728_653;
+///             let s = (1.0 - z * z).sqrt();
+///             let wobble = amp * if k % 2 == 0 { 1.0 } else { -1.0 };
+///             DVec3::new(s * phi.cos(), s * phi.sin(), z) * (1.0 + wobble)
+///         })
+///         .collect()
+/// };
+/// assert!(noise_estimate(&points(0.0)) < 1e-5);
+/// let noisy = noise_estimate(&points(0.01));
+/// assert!((noisy - 0.01).abs() < 0.002, "{noisy}");
+/// ```
+#[must_use]
+pub fn noise_estimate(points: &[DVec3]) -> f64 {
+    if points.len() < K || points.iter().any(|p| !p.is_finite()) {
+        return 0.0;
+    }
+    let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> =
+        ImmutableKdTree::new_from_slice(&points.iter().map(|p| p.to_array()).collect::<Vec<_>>())
+    else {
+        return 0.0;
+    };
+    let k = NonZero::new(K).unwrap_or(NonZero::<usize>::MIN);
+    let step = points.len().div_ceil(SAMPLES).max(1);
+    let mut noise: Vec<f64> = (0..points.len())
+        .step_by(step)
+        .collect::<Vec<_>>()
+        .par_iter()
+        .filter_map(|&i| {
+            let near =
+                tree.query(&points[i].to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+            let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
+            quadric_residual(&hood)
+        })
+        .collect();
+    if noise.is_empty() {
+        return 0.0;
+    }
+    noise.sort_by(f64::total_cmp);
+    noise[noise.len() / 2]
+}
+
+/// The corrected RMS residual of the least-squares quadric height field through `hood`, over
+/// its principal plane; `None` if the fit is degenerate.
+fn quadric_residual(hood: &[DVec3]) -> Option<f64> {
+    let n = hood.len();
+    let centre = hood.iter().copied().sum::<DVec3>() / n as f64;
+    let mut cov = DMat3::ZERO;
+    for p in hood {
+        let d = *p - centre;
+        cov += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
+    }
+    let normal = smallest_eigenvector(cov)?;
+    let e1 = normal.any_orthonormal_vector();
+    let e2 = normal.cross(e1);
+    // Normal equations of h = a + bx + cy + dx² + exy + fy², 6 × 6.
+    let mut ata = [[0.0f64; 6]; 6];
+    let mut atb = [0.0f64; 6];
+    let mut rows = Vec::with_capacity(n);
+    for p in hood {
+        let d = *p - centre;
+        let (x, y, h) = (d.dot(e1), d.dot(e2), d.dot(normal));
+        let r = [1.0, x, y, x * x, x * y, y * y];
+        for i in 0..6 {
+            for j in 0..6 {
+                ata[i][j] += r[i] * r[j];
+            }
+            atb[i] += r[i] * h;
+        }
+        rows.push((r, h));
+    }
+    let coeffs = solve6(ata, atb)?;
+    let ss: f64 = rows
+        .iter()
+        .map(|(r, h)| {
+            let fit: f64 = r.iter().zip(&coeffs).map(|(a, b)| a * b).sum();
+            (h - fit).powi(2)
+        })
+        .sum();
+    Some((ss / (n as f64 - 6.0).max(1.0)).sqrt())
+}
+
+/// The unit eigenvector of the smallest eigenvalue of a symmetric 3 × 3 matrix, by inverse
+/// iteration on the matrix shifted below its spectrum.
+fn smallest_eigenvector(m: DMat3) -> Option<DVec3> {
+    let scale = m
+        .x_axis
+        .abs()
+        .max_element()
+        .max(m.y_axis.abs().max_element())
+        .max(m.z_axis.abs().max_element());
+    if scale <= 0.0 || !scale.is_finite() {
+        return None;
+    }
+    let shifted = m - DMat3::from_diagonal(DVec3::splat(-1e-9 * scale));
+    if shifted.determinant().abs() <= f64::MIN_POSITIVE {
+        return None;
+    }
+    let inv = shifted.inverse();
+    let mut v = DVec3::new(0.577, 0.579, 0.575).normalize();
+    for _ in 0..30 {
+        let w = (inv * v).normalize_or_zero();
+        if w == DVec3::ZERO {
+            return None;
+        }
+        v = w;
+    }
+    Some(v)
+}
+
+/// Solves the 6 × 6 system by Gaussian elimination with partial pivoting.
+fn solve6(mut a: [[f64; 6]; 6], mut b: [f64; 6]) -> Option<[f64; 6]> {
+    let scale = a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    for col in 0..6 {
+        let pivot = (col..6).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
+        if a[pivot][col].abs() <= 1e-12 * scale {
+            return None;
+        }
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        let pivot_row = a[col];
+        for row in col + 1..6 {
+            let f = a[row][col] / pivot_row[col];
+            for (x, p) in a[row][col..].iter_mut().zip(&pivot_row[col..]) {
+                *x -= f * p;
+            }
+            b[row] -= f * b[col];
+        }
+    }
+    let mut x = [0.0; 6];
+    for row in (0..6).rev() {
+        let s: f64 = (row + 1..6).map(|k| a[row][k] * x[k]).sum();
+        x[row] = (b[row] - s) / a[row][row];
+    }
+    Some(x)
+}
