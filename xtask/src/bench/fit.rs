@@ -12,7 +12,6 @@
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
-use std::io::Write as _;
 use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
@@ -20,7 +19,6 @@ use std::time::Duration;
 use anyhow::{Context, Result, bail};
 use glam::DVec3;
 use hi_curve::bezier::BezierScheme;
-use hi_geomimage::distance::{bounding_diagonal, distances_to_mesh};
 use hi_geomimage::scan::{Scan, read_scan};
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
 use hi_surface::HarmonicSurface;
@@ -82,9 +80,6 @@ fn combined(scan: &Scan) -> Result<Combined> {
     Ok(Combined { stages, total: end - start, patches: patches.report.patches })
 }
 
-/// Depth of the screened Poisson octree.
-const POISSON_DEPTH: usize = 8;
-
 /// The real models used when present, relative to the workspace root.
 const REAL: &[&str] = &[
     "../shared/data/models/bunny.obj",
@@ -141,21 +136,6 @@ fn scans(root: &Path) -> Vec<(String, String, Result<Scan>)> {
     out
 }
 
-/// Writes `points` as an ASCII PLY point cloud.
-fn write_ply(points: &[DVec3], path: &Path) -> Result<()> {
-    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
-    writeln!(
-        w,
-        "ply\nformat ascii 1.0\nelement vertex {}\nproperty double x\nproperty double y\nproperty double z\nend_header",
-        points.len()
-    )?;
-    for p in points {
-        writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
-    }
-    w.flush()?;
-    Ok(())
-}
-
 /// Runs the peer script; `Ok(None)` when the peer is not installed.
 fn peer(root: &Path, args: &[&str]) -> Result<Option<serde_json::Value>> {
     let script = root.join("xtask/peers/fit_peers.py");
@@ -175,17 +155,6 @@ fn peer(root: &Path, args: &[&str]) -> Result<Option<serde_json::Value>> {
 /// Seconds from a peer's JSON.
 fn seconds(v: &serde_json::Value, key: &str) -> Duration {
     Duration::from_secs_f64(v[key].as_f64().unwrap_or(f64::NAN).max(0.0))
-}
-
-/// The relative distances [mean, RMS, max] from `points` to a triangle mesh, over `diagonal`.
-fn relative(
-    points: &[DVec3],
-    vertices: &[DVec3],
-    triangles: &[[u32; 3]],
-    diagonal: f64,
-) -> Result<[f64; 3]> {
-    let d = distances_to_mesh(points, vertices, triangles)?;
-    Ok([d.mean / diagonal, d.rms / diagonal, d.max / diagonal])
 }
 
 /// "1.2e-3 / 2.0e-3 / 9.9e-3".
@@ -263,7 +232,6 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         ..FitOptions::thesis()
     };
     let mut pipeline = Vec::new();
-    let mut poisson = Vec::new();
     let mut sources = Vec::new();
     let mut headlines = Vec::new();
     let mut slowest_interpolation = Duration::ZERO;
@@ -301,46 +269,6 @@ pub(super) fn run(root: &Path) -> Result<Section> {
             ours.map_or_else(|| "–".to_owned(), errors),
             format!("{:.1}%", 100.0 * r.non_star_fraction),
         ]);
-        bar.inc(1);
-        bar.set_message(format!("screened Poisson {name}"));
-        let (input, output) =
-            (dir.join(format!("{name}.ply")), dir.join(format!("{name}-poisson.ply")));
-        write_ply(&scan.points, &input)?;
-        let depth = POISSON_DEPTH.to_string();
-        let args = ["poisson", &path_str(&input)?, &path_str(&output)?, depth.as_str()];
-        let row = match peer(root, &args)? {
-            None => vec![
-                name.clone(),
-                "pymeshlab not installed".to_owned(),
-                "–".to_owned(),
-                "–".to_owned(),
-                "–".to_owned(),
-            ],
-            Some(v) => {
-                let poisson_time = seconds(&v, "seconds") + seconds(&v, "normals_seconds");
-                if name == "bunny" || (name == "ellipsoid" && !scans.iter().any(|s| s.0 == "bunny"))
-                {
-                    headlines.push(Headline {
-                        what: format!("surface from the {name} scan's points"),
-                        ours: Duration::from_secs_f64(without_error),
-                        peer: "screened Poisson (pymeshlab)".to_owned(),
-                        theirs: Some(poisson_time),
-                    });
-                }
-                let mesh =
-                    read_scan(&output).map_err(|e| anyhow::anyhow!("{}: {e}", output.display()))?;
-                let diagonal = bounding_diagonal(&scan.points);
-                let theirs = relative(&scan.points, &mesh.points, &mesh.triangles, diagonal)?;
-                vec![
-                    name.clone(),
-                    format!("{without_error:.3}"),
-                    format!("{:.3}", poisson_time.as_secs_f64()),
-                    ours.map_or_else(|| "–".to_owned(), errors),
-                    errors(theirs),
-                ]
-            }
-        };
-        poisson.push(row);
         bar.inc(1);
     }
     let mut upsampling = Vec::new();
@@ -477,23 +405,9 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         &["scan", "points", "patches", "total (s)", "stages (s)", "the thesis / ours"],
         &pipeline58,
     ));
-    let _ = write!(
-        s,
-        "\n### Against screened Poisson reconstruction\n\n\
-         The same points given to pymeshlab's `generate_surface_reconstruction_screened_poisson` \
-         (depth {POISSON_DEPTH}, normals estimated from 10 neighbours first; its time includes \
-         that), and the distances from every scan point to its mesh measured as ours are.\n\n"
-    );
-    s.push_str(&table(
-        &[
-            "scan",
-            "harmonic fit, error not measured (s)",
-            "screened Poisson (s)",
-            "harmonic: mean / RMS / max",
-            "Poisson: mean / RMS / max",
-        ],
-        &poisson,
-    ));
+    let (versus, more) = super::poisson::versus_poisson(root, &bar)?;
+    s.push_str(&versus);
+    headlines.extend(more);
     let plot = growth_plot(
         root,
         "perf-fit.svg",
@@ -510,9 +424,4 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         GROWTH_SIDES.map(|n| format!("{n}²")).join(", ")
     );
     Ok(Section { body: s, headlines })
-}
-
-/// A path as a UTF-8 string for a command line.
-fn path_str(p: &Path) -> Result<String> {
-    p.to_str().map(str::to_owned).context("a non-UTF-8 path")
 }

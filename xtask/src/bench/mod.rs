@@ -22,6 +22,7 @@
 
 mod curves;
 mod fit;
+mod poisson;
 mod render;
 mod subdivision;
 
