@@ -200,6 +200,33 @@ impl SampleGrid {
     }
 }
 
+/// The distance from each of `queries` to the nearest of `points` (a kd-tree), in parallel.
+///
+/// # Errors
+///
+/// [`Error::NonFinite`] for a non-finite point; [`Error::TooFewPoints`] for no points.
+pub fn nearest_point_distances(queries: &[DVec3], points: &[DVec3]) -> Result<Vec<f64>, Error> {
+    check_points(points, "point")?;
+    check_points(queries, "query")?;
+    if points.is_empty() {
+        return Err(Error::TooFewPoints { found: 0, needed: 1 });
+    }
+    let tree: ImmutableKdTree<f64, 3> =
+        ImmutableKdTree::new_from_slice(&points.iter().map(|p| p.to_array()).collect::<Vec<_>>())
+            .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
+    Ok(queries
+        .par_iter()
+        .with_min_len(256)
+        .map(|q| {
+            tree.query(&q.to_array())
+                .nearest_one::<SquaredEuclidean<f64>>()
+                .execute()
+                .distance
+                .sqrt()
+        })
+        .collect())
+}
+
 /// The distance from each of `points` to the triangle mesh (`vertices`, `triangles`), exact
 /// (closest point on every triangle that could be nearest); relative numbers are against the
 /// mesh's bounding box.

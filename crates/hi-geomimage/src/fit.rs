@@ -26,8 +26,10 @@ use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_surface::HarmonicSurface;
 
+use crate::closest::{NearMesh, TriangleBvh};
 use crate::contours::{ContourImage, contour_image};
 use crate::distance::{Distances, Hausdorff, bounding_diagonal, distances_to_surface, hausdorff};
+use crate::layout_mesh::{LayoutMesh, layout_mesh};
 use crate::regularise::{Regularisation, RegularisationReport, regularise};
 use crate::repair::{Repair, close_mesh};
 use crate::scan::Scan;
@@ -73,10 +75,17 @@ pub enum ErrorMeasure {
     /// triangulated: scan points to that triangulation, its samples to the scan's triangles
     /// (or nearest points).
     Sampled(usize),
-    /// As [`ErrorMeasure::Sampled`] with the sampling of the mesh a fit is written as
-    /// ([`mesh_oversample`]).
+    /// Both ways against the closed mesh the fit is written as ([`Fit::mesh`], sampled
+    /// [`mesh_oversample`] times per texel): every scan point to its closest point on the
+    /// mesh, every mesh vertex to the scan's triangles (or nearest point), exactly, by a
+    /// bounding-volume hierarchy ([`crate::closest`]).
     #[default]
     Fast,
+    /// As [`ErrorMeasure::Fast`] with the exact hierarchy both ways, then each scan point's
+    /// closest point on the mesh refined onto the harmonic surface itself by Gauss–Newton
+    /// steps (on the bicubic Hermite interpolant of its values and derivatives at the grid,
+    /// O(h⁴) from the surface): the distance to the surface, not to its mesh.
+    Exact,
 }
 
 /// The settings of [`fit`].
@@ -339,17 +348,20 @@ pub struct Fit {
     pub image: GeometryImage,
     /// The layout of the image.
     pub layout: Layout,
+    /// The closed mesh of the surface the error was measured on (and that `hi fit` writes),
+    /// when the error was measured by [`ErrorMeasure::Fast`] or [`ErrorMeasure::Exact`].
+    pub mesh: Option<LayoutMesh>,
     /// Stage times, diagnostics and errors.
     pub report: FitReport,
 }
 
 /// The number of mesh samples per texel along each axis for the mesh of a fitted surface
-/// (and its error measured with [`ErrorMeasure::Fast`]): enough for about 512 samples around
-/// the longer axis, so that a coarse image still gives a mesh that follows its surface, and
-/// 1 from 512² up.
+/// (and its error measured with [`ErrorMeasure::Fast`]): enough for at least 192 samples
+/// around the longer axis, so that a coarse image still gives a mesh that follows its surface,
+/// and 1 from 192² up, where the texels are as close as the scan's points.
 #[must_use]
 pub fn mesh_oversample(surface: &HarmonicSurface<DVec3>) -> usize {
-    512usize.div_ceil(surface.m().max(surface.n()).max(1)).max(1)
+    192usize.div_ceil(surface.m().max(surface.n()).max(1)).max(1)
 }
 
 /// Below this share of the scan's area in its largest part, [`Method::Auto`] does not
@@ -571,7 +583,7 @@ pub fn fit(
         std::hint::black_box(&raster);
         timed("rasterisation (4×)", &mut stages, start);
     }
-    let (mut errors, mut both_ways, mut both_mesh) = (None, None, None);
+    let (mut errors, mut both_ways, mut both_mesh, mut fit_mesh) = (None, None, None, None);
     match options.error {
         ErrorMeasure::Off => {}
         ErrorMeasure::Sampled(oversample) if method != Method::Mesh => {
@@ -590,13 +602,26 @@ pub fn fit(
         measure => {
             on_stage("fit error");
             let start = Instant::now();
-            let oversample = match measure {
-                ErrorMeasure::Sampled(k) => k.max(1),
-                _ => mesh_oversample(&surface),
-            };
-            let e = fit_errors(&surface, options.layout, &source, &points, &triangles, oversample)?;
+            let filled = source.filled().map(|f| {
+                // The texels of the surface's grid, in the source image's (they differ after a
+                // reduction).
+                let (rows, cols) = (source.image().rows(), source.image().cols());
+                let (sm, sn) = (surface.m(), surface.n());
+                (0..sm * sn)
+                    .map(|t| f[(t / sn * rows / sm) * cols + (t % sn) * cols / sn])
+                    .collect::<Vec<bool>>()
+            });
+            let (e, m) = measure_fit(
+                &surface,
+                options.layout,
+                filled.as_deref(),
+                &points,
+                &triangles,
+                measure,
+            )?;
             errors = Some(e.scan_to_surface.clone());
             both_ways = Some(e);
+            fit_mesh = Some(m);
             timed("fit error", &mut stages, start);
         }
     }
@@ -628,7 +653,7 @@ pub fn fit(
         both_ways,
         hausdorff: both_mesh,
     };
-    Ok(Fit { surface, source, image, layout: options.layout, report })
+    Ok(Fit { surface, source, image, layout: options.layout, mesh: fit_mesh, report })
 }
 
 /// What came of trying to parameterise the scan's mesh.
@@ -682,26 +707,263 @@ fn mesh_image(
     }))
 }
 
-/// Both-way distances between the surface (sampled `oversample` times finer than its grid
-/// over the covering window) and the scan.
-fn fit_errors(
+/// The both-way distances between a fitted surface (an image's harmonic surface in `layout`)
+/// and a scan (`points`, with `triangles` if it is a mesh), as [`fit`] measures them with
+/// `measure` ([`ErrorMeasure::Fast`] or [`ErrorMeasure::Exact`]; [`ErrorMeasure::Sampled`]
+/// uses that many samples per texel for the mesh), and the closed mesh they were measured on.
+/// `filled` flags the texels of the surface's grid that bridge holes in the scan: the mesh's
+/// samples there are summarised apart.
+///
+/// # Errors
+///
+/// [`Error::InvalidOption`] for [`ErrorMeasure::Off`] or a `filled` mask of the wrong size;
+/// the errors of [`layout_mesh`], [`TriangleBvh::try_new`] and [`NearMesh::try_new`].
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_geomimage::fit::{ErrorMeasure, measure_fit};
+/// use hi_geomimage::Layout;
+///
+/// // The exact unit sphere, and points 0.1 outside it.
+/// let sphere = hi_surface::sphere(1.0);
+/// let points: Vec<DVec3> = [DVec3::X, DVec3::Y, DVec3::new(0.6, 0.0, 0.8)]
+///     .map(|d| d * 1.1)
+///     .to_vec();
+/// let (e, _) = measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Exact)
+///     .unwrap();
+/// assert!(e.scan_to_surface.per_point.iter().all(|d| (d - 0.1).abs() < 1e-6));
+/// ```
+pub fn measure_fit(
     surface: &HarmonicSurface<DVec3>,
     layout: Layout,
-    source: &SourceImage,
+    filled: Option<&[bool]>,
     points: &[DVec3],
     triangles: &[[u32; 3]],
-    oversample: usize,
+    measure: ErrorMeasure,
+) -> Result<(FitErrors, LayoutMesh), Error> {
+    let per_texel = match measure {
+        ErrorMeasure::Off => {
+            return Err(Error::InvalidOption {
+                name: "error measure",
+                value: 0.0,
+                expected: "a measure other than Off",
+            });
+        }
+        ErrorMeasure::Sampled(k) => k.max(1),
+        _ => mesh_oversample(surface),
+    };
+    if let Some(f) = filled
+        && f.len() != surface.m() * surface.n()
+    {
+        return Err(Error::InvalidOption {
+            name: "filled texels",
+            value: f.len() as f64,
+            expected: "one flag per texel of the surface's grid",
+        });
+    }
+    // The plain octahedron's mesh needs an even refinement.
+    let per_texel =
+        if layout == Layout::Octahedron { per_texel.next_multiple_of(2) } else { per_texel };
+    let m = layout_mesh(surface, layout, per_texel)?;
+    let e = fit_errors(
+        surface,
+        &m,
+        per_texel,
+        filled,
+        points,
+        triangles,
+        measure == ErrorMeasure::Exact,
+    )?;
+    Ok((e, m))
+}
+
+/// Both-way distances between the surface's closed mesh `m` and the scan (`points`, and its
+/// `triangles` if any); samples on `filled` texels (of the surface's grid) are summarised
+/// apart. With `exact`, each scan point's distance is refined onto the surface itself.
+fn fit_errors(
+    surface: &HarmonicSurface<DVec3>,
+    m: &LayoutMesh,
+    per_texel: usize,
+    filled: Option<&[bool]>,
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    exact: bool,
 ) -> Result<FitErrors, Error> {
-    let _ = (layout, source, triangles, oversample);
-    let scan_to_surface = distances_to_surface(surface, points, oversample.max(1))?;
+    let mesh = &m.mesh;
     let diagonal = bounding_diagonal(points);
+    let per_point: Vec<f64> = if exact {
+        use rayon::prelude::*;
+        let bvh = TriangleBvh::try_new(mesh.positions(), mesh.triangles())?;
+        let grid = HermiteGrid::of(surface, per_texel)?;
+        points
+            .par_iter()
+            .map(|x| {
+                let c = bvh.closest(*x);
+                project(&grid, mesh, *x, c.triangle, c.point)
+            })
+            .collect()
+    } else {
+        NearMesh::try_new(mesh.positions(), mesh.triangles())?.distances(points)
+    };
+    let scan_to_surface = Distances::from_values(per_point, diagonal);
+    // Surface → scan: every vertex of the mesh, and the centroid of every other triangle (one
+    // per grid quad, away from the texels: for the mesh of a parameterisation, the vertices at
+    // the texels lie on the scan).
+    let tri = mesh.triangles();
+    let centroids: Vec<DVec3> = tri
+        .iter()
+        .step_by(2)
+        .map(|t| t.iter().map(|&k| mesh.positions()[k as usize]).sum::<DVec3>() / 3.0)
+        .collect();
+    let samples: Vec<DVec3> = mesh.positions().iter().copied().chain(centroids).collect();
+    let back: Vec<f64> = if triangles.is_empty() {
+        crate::distance::nearest_point_distances(&samples, points)?
+    } else {
+        // The scan's triangles can be long and thin (scanners leave slivers at folds and
+        // holes), which the nearest-vertex query misjudges: this side is always exact.
+        TriangleBvh::try_new(points, triangles)?.distances(&samples)
+    };
+    let n_vertices = mesh.positions().len();
+    // A centroid is on a fill if any of its corners is.
+    let texel_of = |s: usize| -> Vec<u32> {
+        if s < n_vertices {
+            vec![m.texel[s]]
+        } else {
+            tri[2 * (s - n_vertices)].iter().map(|&k| m.texel[k as usize]).collect()
+        }
+    };
+    let on_fill = |s: usize| {
+        filled.is_some_and(|f| {
+            texel_of(s).iter().any(|&t| f.get(t as usize).copied().unwrap_or(false))
+        })
+    };
+    let (mut kept, mut filled_max) = (Vec::with_capacity(back.len()), 0.0f64);
+    for (v, d) in back.into_iter().enumerate() {
+        if on_fill(v) {
+            filled_max = filled_max.max(d);
+        } else {
+            kept.push(d);
+        }
+    }
+    let surface_to_scan = Distances::from_values(kept, diagonal);
     let unreached = scan_to_surface.per_point.iter().filter(|&&d| d > UNREACHED * diagonal).count()
         as f64
         / points.len().max(1) as f64;
     Ok(FitErrors {
-        surface_to_scan: scan_to_surface.clone(),
         scan_to_surface,
-        filled_to_scan_max: 0.0,
+        surface_to_scan,
+        filled_to_scan_max: filled_max,
         unreached_fraction: unreached,
     })
+}
+
+/// The harmonic surface near its grid, for Gauss–Newton projections: p and its derivatives
+/// ∂u, ∂v and ∂u∂v sampled on the grid of the fit's mesh (by FFT), and between grid points the bicubic Hermite
+/// interpolant of those, which differs from the surface by O(h⁴) (h the grid's spacing): far
+/// below any distance this measures (the mesh's own departure from the surface is O(h²)).
+struct HermiteGrid {
+    m: usize,
+    n: usize,
+    p: Vec<DVec3>,
+    pu: Vec<DVec3>,
+    pv: Vec<DVec3>,
+    puv: Vec<DVec3>,
+}
+
+impl HermiteGrid {
+    /// The grid `per_texel` times finer than the surface's along each axis.
+    fn of(surface: &HarmonicSurface<DVec3>, per_texel: usize) -> Result<Self, Error> {
+        let (m, n) = (surface.m() * per_texel, surface.n() * per_texel);
+        let s = |a, b| surface.sample_uniform(m, n, a, b).map(|g| g.values);
+        Ok(Self { m, n, p: s(0, 0)?, pu: s(1, 0)?, pv: s(0, 1)?, puv: s(1, 1)? })
+    }
+
+    /// p and its derivatives in u and in v at (u, v).
+    fn eval(&self, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
+        let (x, y) = (u.rem_euclid(1.0) * self.m as f64, v.rem_euclid(1.0) * self.n as f64);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "in 0..m, 0..n"
+        )]
+        let (i, j) = ((x.floor() as usize).min(self.m - 1), (y.floor() as usize).min(self.n - 1));
+        let (s, t) = (x - i as f64, y - j as f64);
+        let (hu, hv) = (1.0 / self.m as f64, 1.0 / self.n as f64);
+        // Cubic Hermite basis [h00, h10, h01, h11] and its derivative.
+        let basis = |s: f64| {
+            let (s2, s3) = (s * s, s * s * s);
+            (
+                [2.0 * s3 - 3.0 * s2 + 1.0, s3 - 2.0 * s2 + s, -2.0 * s3 + 3.0 * s2, s3 - s2],
+                [
+                    6.0 * s2 - 6.0 * s,
+                    3.0 * s2 - 4.0 * s + 1.0,
+                    -6.0 * s2 + 6.0 * s,
+                    3.0 * s2 - 2.0 * s,
+                ],
+            )
+        };
+        let ((bs, ds), (bt, dt)) = (basis(s), basis(t));
+        let (mut p, mut ps, mut pt) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+        for (a, ia) in [(0usize, i), (1, (i + 1) % self.m)] {
+            for (b, jb) in [(0usize, j), (1, (j + 1) % self.n)] {
+                let k = ia * self.n + jb;
+                // Value, u-slope, v-slope and twist at this corner, in cell units.
+                let terms = [
+                    (2 * a, 2 * b, self.p[k]),
+                    (2 * a + 1, 2 * b, self.pu[k] * hu),
+                    (2 * a, 2 * b + 1, self.pv[k] * hv),
+                    (2 * a + 1, 2 * b + 1, self.puv[k] * (hu * hv)),
+                ];
+                for (ka, kb, c) in terms {
+                    // Basis order [h00, h10, h01, h11]: corner 0 uses h00/h10, corner 1 h01/h11.
+                    let (fa, fb) = ([0, 1, 2, 3][ka], [0, 1, 2, 3][kb]);
+                    p += c * (bs[fa] * bt[fb]);
+                    ps += c * (ds[fa] * bt[fb]);
+                    pt += c * (bs[fa] * dt[fb]);
+                }
+            }
+        }
+        (p, ps / hu, pt / hv)
+    }
+}
+
+/// The distance from x to the surface near the point `q` of mesh triangle `t`: from the (u, v)
+/// of q (barycentric in the triangle's UVs, unwrapped across the period), Gauss–Newton steps
+/// on |p(u, v) − x|², the least distance seen (every iterate is a point of the surface).
+fn project(grid: &HermiteGrid, mesh: &hi_surface::TriangleMesh, x: DVec3, t: u32, q: DVec3) -> f64 {
+    let tri = mesh.triangles()[t as usize];
+    let [a, b, c] = tri.map(|k| mesh.positions()[k as usize]);
+    let [ua, ub, uc] = tri.map(|k| mesh.uvs()[k as usize]);
+    let unwrap = |w: glam::DVec2| w - (w - ua).round();
+    let (ub, uc) = (unwrap(ub), unwrap(uc));
+    // Barycentric coordinates of q in abc.
+    let (e1, e2, f) = (b - a, c - a, q - a);
+    let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+    let det = d11 * d22 - d12 * d12;
+    let (mut uv, mut best) = (ua, f64::INFINITY);
+    if det > 0.0 {
+        let (r1, r2) = (f.dot(e1), f.dot(e2));
+        let s = (d22 * r1 - d12 * r2) / det;
+        let r = (d11 * r2 - d12 * r1) / det;
+        uv = ua + (ub - ua) * s + (uc - ua) * r;
+    }
+    for _ in 0..8 {
+        let (p, pu, pv) = grid.eval(uv.x, uv.y);
+        let d = p - x;
+        best = best.min(d.length());
+        let (g11, g12, g22) = (pu.dot(pu), pu.dot(pv), pv.dot(pv));
+        let det = g11 * g22 - g12 * g12;
+        if det.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            break;
+        }
+        let (r1, r2) = (d.dot(pu), d.dot(pv));
+        let step = glam::DVec2::new((g22 * r1 - g12 * r2) / det, (g11 * r2 - g12 * r1) / det);
+        uv -= step;
+        if step.length() < 1e-12 {
+            break;
+        }
+    }
+    best.min(grid.eval(uv.x, uv.y).0.distance(x))
 }

@@ -17,12 +17,14 @@
 //! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
 //! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
 
+pub mod closest;
 pub mod contours;
 pub mod distance;
 mod error;
 mod filter;
 pub mod fit;
 mod image;
+pub mod layout_mesh;
 pub mod noise;
 pub mod regularise;
 pub mod repair;

@@ -8,11 +8,12 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
+use hi_geomimage::fit::mesh_oversample;
+use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::regularise::Regularisation;
 use hi_geomimage::scan::read_scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
 use hi_surface::export::{self, MeshFormat};
-use hi_surface::{MeshOptions, TriangleMesh};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::cli::{FitArgs, MethodName, ParamName};
@@ -93,7 +94,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         error: if args.no_error {
             ErrorMeasure::Off
         } else if args.exact_error {
-            ErrorMeasure::Sampled(4)
+            ErrorMeasure::Exact
         } else {
             ErrorMeasure::Fast
         },
@@ -157,22 +158,21 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         write_file(&args.output, &grid_json(&fitted.surface.rows()), false)?;
         vec![args.output.clone()]
     } else {
-        let (u0, u1) = options.layout.covering_window();
-        let (m, n) = (fitted.surface.m(), fitted.surface.n());
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "a window of at most one period times a grid size"
-        )]
-        let n_u = ((2 * m) as f64 * (u1 - u0)).round().max(3.0) as usize;
-        let mesh_options = MeshOptions {
-            n_u,
-            n_v: 2 * n,
-            u_range: [u0, u1],
-            v_range: [0.0, 1.0],
-            ..MeshOptions::default()
+        // The closed mesh the error was measured on, or the same made now.
+        let mesh = match &fitted.mesh {
+            Some(m) => m.mesh.clone(),
+            None => {
+                let per_texel = mesh_oversample(&fitted.surface);
+                let per_texel = if layout == Layout::Octahedron {
+                    per_texel.next_multiple_of(2)
+                } else {
+                    per_texel
+                };
+                layout_mesh(&fitted.surface, layout, per_texel)
+                    .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?
+                    .mesh
+            }
         };
-        let mesh = TriangleMesh::try_from_surface(&fitted.surface, &mesh_options)?;
         export::save(&mesh, &args.output)?
     };
     let mut summary = summary(args, &fitted, &files);
