@@ -373,10 +373,12 @@ pub(crate) enum ParamName {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub(crate) enum MethodName {
     /// The mesh's spherical parameterisation when the scan is a mesh that closes to genus 0,
-    /// rays from the centre otherwise.
+    /// the points shrink-wrapped otherwise.
     Auto,
     /// A spherical parameterisation of the scan's mesh (any genus-0 shape).
     Mesh,
+    /// The radial image shrink-wrapped onto the points' surface (for point sets).
+    ShrinkWrap,
     /// Rays from the centre, the distance along each averaged over the points about it
     /// (algorithm 2).
     Radial,

@@ -33,6 +33,7 @@ use crate::layout_mesh::{LayoutMesh, layout_mesh};
 use crate::regularise::{Regularisation, RegularisationReport, regularise};
 use crate::repair::{Repair, close_mesh};
 use crate::scan::Scan;
+use crate::shrinkwrap::{ShrinkWrapImage, ShrinkWrapOptions, shrink_wrap};
 use crate::sphereparam::{ParamQuality, SphereParamOptions, parameterise};
 use crate::spherical::{Layout, SphericalImage, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
@@ -46,6 +47,8 @@ pub enum Method {
     Auto,
     /// A spherical parameterisation of the scan's mesh.
     Mesh,
+    /// The radial image shrink-wrapped onto the points' surface ([`crate::shrinkwrap`]).
+    ShrinkWrap,
     /// Rays from a centre, the distance along each averaged over the points about it
     /// (algorithm 2).
     Radial,
@@ -60,6 +63,7 @@ impl Method {
         match self {
             Self::Auto => "auto",
             Self::Mesh => "mesh",
+            Self::ShrinkWrap => "shrink-wrap",
             Self::Radial => "radial",
             Self::Contours => "contours",
         }
@@ -180,6 +184,24 @@ pub fn auto_resolution(points: usize) -> (usize, usize) {
     (side, side)
 }
 
+/// The image size [`fit`] picks for a point set of `points` points: square, a multiple of 32,
+/// about two distinct texels per point (half the texels of a doubled layout), from 64² to 512².
+/// A point set's texels are projections onto the surface its points sample, no denser than
+/// the points themselves can support.
+///
+/// # Examples
+///
+/// ```
+/// use hi_geomimage::fit::auto_resolution_points;
+///
+/// assert_eq!(auto_resolution_points(3_000), (128, 128));
+/// assert_eq!(auto_resolution_points(18_000), (288, 288));
+/// ```
+#[must_use]
+pub fn auto_resolution_points(points: usize) -> (usize, usize) {
+    auto_resolution(points / 4)
+}
+
 /// The ray-cast geometry image a fit started from, with its diagnostics.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SourceImage {
@@ -189,6 +211,8 @@ pub enum SourceImage {
     Contours(ContourImage),
     /// The image of a spherical parameterisation of the scan's mesh.
     Mesh(MeshSource),
+    /// The radial image shrink-wrapped onto the points.
+    ShrinkWrap(ShrinkWrapImage),
 }
 
 /// What the parameterisation of a mesh did.
@@ -216,6 +240,7 @@ impl SourceImage {
             Self::Radial(s) => &s.image,
             Self::Contours(c) => &c.image,
             Self::Mesh(m) => &m.image,
+            Self::ShrinkWrap(w) => &w.image,
         }
     }
 
@@ -227,6 +252,7 @@ impl SourceImage {
             Self::Radial(s) => s.non_star_fraction,
             Self::Contours(c) => c.non_star_fraction,
             Self::Mesh(_) => 0.0,
+            Self::ShrinkWrap(w) => w.non_star_fraction,
         }
     }
 
@@ -238,6 +264,7 @@ impl SourceImage {
             Self::Radial(s) => s.hole_fraction,
             Self::Contours(c) => c.hole_fraction,
             Self::Mesh(m) => m.filled_fraction,
+            Self::ShrinkWrap(w) => w.filled_fraction,
         }
     }
 
@@ -248,6 +275,7 @@ impl SourceImage {
             Self::Radial(s) => Some(&s.holes),
             Self::Contours(_) => None,
             Self::Mesh(m) => Some(&m.filled),
+            Self::ShrinkWrap(w) => Some(&w.filled),
         }
     }
 }
@@ -442,7 +470,13 @@ pub fn fit(
     if points.len() < 4 {
         return Err(Error::TooFewPoints { found: points.len(), needed: 4 });
     }
-    let (rows, cols) = options.resolution.unwrap_or_else(|| auto_resolution(points.len()));
+    let (rows, cols) = options.resolution.unwrap_or_else(|| {
+        if triangles.is_empty() {
+            auto_resolution_points(points.len())
+        } else {
+            auto_resolution(points.len())
+        }
+    });
     crate::image::check_resolution(rows, cols)?;
     on_stage("geometry image");
     let start = Instant::now();
@@ -482,8 +516,8 @@ pub fn fit(
             Err(e) => reason = format!("the scan's mesh cannot be parameterised ({e})"),
         }
         if source.is_none() {
-            method = Method::Radial;
-            reason.push_str("; rays from the centre instead");
+            method = Method::ShrinkWrap;
+            reason.push_str("; the points shrink-wrapped instead");
         }
     }
     let mut image_points = points.len();
@@ -515,6 +549,17 @@ pub fn fit(
             }
             match method {
                 Method::Contours => SourceImage::Contours(contour_image(&dense, &rays)?),
+                Method::ShrinkWrap => {
+                    let wrap = ShrinkWrapOptions {
+                        layout: options.layout,
+                        rows,
+                        cols,
+                        centre: options.centre,
+                        ..ShrinkWrapOptions::default()
+                    };
+                    let normals = if triangles.is_empty() { scan.normals.as_deref() } else { None };
+                    SourceImage::ShrinkWrap(shrink_wrap(&points, normals, &wrap)?)
+                }
                 _ => SourceImage::Radial(spherical_image(&dense, &rays)?),
             }
         }

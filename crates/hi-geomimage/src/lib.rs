@@ -31,6 +31,7 @@ pub mod repair;
 pub mod sampling;
 pub mod scan;
 pub mod sections;
+pub mod shrinkwrap;
 pub mod sphereparam;
 pub mod spherical;
 

@@ -121,7 +121,7 @@ fn quadric_residual(hood: &[DVec3]) -> Option<f64> {
 
 /// The unit eigenvector of the smallest eigenvalue of a symmetric 3 × 3 matrix, by inverse
 /// iteration on the matrix shifted below its spectrum.
-fn smallest_eigenvector(m: DMat3) -> Option<DVec3> {
+pub(crate) fn smallest_eigenvector(m: DMat3) -> Option<DVec3> {
     let scale = m
         .x_axis
         .abs()
@@ -148,7 +148,7 @@ fn smallest_eigenvector(m: DMat3) -> Option<DVec3> {
 }
 
 /// Solves the 6 × 6 system by Gaussian elimination with partial pivoting.
-fn solve6(mut a: [[f64; 6]; 6], mut b: [f64; 6]) -> Option<[f64; 6]> {
+pub(crate) fn solve6(mut a: [[f64; 6]; 6], mut b: [f64; 6]) -> Option<[f64; 6]> {
     let scale = a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
     for col in 0..6 {
         let pivot = (col..6).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;

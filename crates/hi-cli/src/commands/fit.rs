@@ -78,6 +78,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         method: match args.method {
             MethodName::Auto => Method::Auto,
             MethodName::Mesh => Method::Mesh,
+            MethodName::ShrinkWrap => Method::ShrinkWrap,
             MethodName::Radial => Method::Radial,
             MethodName::Contours => Method::Contours,
         },

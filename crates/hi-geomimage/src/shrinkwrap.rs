@@ -1,0 +1,466 @@
+// SPDX-License-Identifier: MIT
+//! A geometry image of a point set, shrink-wrapped onto its surface (beyond §5.3, whose texels
+//! are distances along rays from a centre).
+//!
+//! Algorithm 2's radial image is the start: it follows the outermost shell where a ray meets the
+//! surface more than once, and its texels are averages of distances. Then, a few times over,
+//! every texel moves:
+//! 1. onto the point set's surface near it: about every point a quadric height field is
+//!    fitted once to its 16 nearest points (weighted least squares, over the plane across the
+//!    point's normal — the file's when it has one, else the least principal axis of the
+//!    neighbours), and a texel goes to the Gaussian-weighted blend of its projections onto the
+//!    patches of its three nearest points;
+//! 2. along the surface towards the mean of its four grid neighbours (only the tangential part
+//!    of that move), so that texels spread over the surface instead of piling up where the
+//!    radial image crowded them — the move that lets them slide around ears and into
+//!    concavities the rays never saw.
+//!
+//! A texel whose nearest point is farther than a few point spacings has no data there: it moves
+//! halfway between its neighbours' mean and its projection (a membrane shrinking onto the
+//! points, which closes over thin parts the rays missed and spans true holes), and if it is
+//! still that far at the end it is flagged [`ShrinkWrapImage::filled`]. The doubled layouts' half-turn symmetry is restored after every step (each texel and
+//! its mirror take their mean), so the result is a valid doubled image.
+//!
+//! The texels end on the surface of the points (the last step is a projection), so the harmonic
+//! surface through them is accurate where they are dense; [`crate::fit`] then regularises it to
+//! the points' noise level.
+
+use std::num::NonZero;
+
+use glam::{DMat3, DVec3};
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
+use rayon::prelude::*;
+
+use crate::spherical::{Layout, SphericalOptions, spherical_image};
+use crate::{Error, GeometryImage};
+
+/// The settings of [`shrink_wrap`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShrinkWrapOptions {
+    /// The layout of the image. Default [`Layout::FlatOctahedron`].
+    pub layout: Layout,
+    /// Rows (even for the doubled layouts). Default 256.
+    pub rows: usize,
+    /// Columns. Default 256.
+    pub cols: usize,
+    /// The centre of the radial start; `None` for the mean of the points.
+    pub centre: Option<DVec3>,
+    /// Rounds of projection and spreading. Default 4.
+    pub iterations: usize,
+    /// Points in each local quadric fit. Default 16.
+    pub neighbours: usize,
+}
+
+impl Default for ShrinkWrapOptions {
+    fn default() -> Self {
+        Self {
+            layout: Layout::FlatOctahedron,
+            rows: 256,
+            cols: 256,
+            centre: None,
+            iterations: 4,
+            neighbours: 16,
+        }
+    }
+}
+
+/// A shrink-wrapped geometry image with its diagnostics.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShrinkWrapImage {
+    /// The image: texels on the point set's surface, or bridging holes in it.
+    pub image: GeometryImage,
+    /// Texels with no point near them (row-major), following their neighbours only.
+    pub filled: Vec<bool>,
+    /// The fraction of the distinct texels flagged in [`ShrinkWrapImage::filled`].
+    pub filled_fraction: f64,
+    /// The fraction of the radial start's rays that met several shells.
+    pub non_star_fraction: f64,
+    /// Whether the final image was sampled from a spherical parameterisation of the coarse
+    /// wrap (else from rays, when the coarse wrap could not be parameterised).
+    pub reparameterised: bool,
+    /// The root mean square distance the texels moved from the radial start.
+    pub rms_move: f64,
+}
+
+/// A local quadric patch about one point: a frame (origin, tangents, normal) and the height
+/// h(x, y) = c₀ + c₁x + c₂y + c₃x² + c₄xy + c₅y² over its tangent plane, fitted by least
+/// squares to the point's neighbours.
+#[derive(Clone, Copy, Debug)]
+struct Patch {
+    origin: DVec3,
+    e1: DVec3,
+    e2: DVec3,
+    normal: DVec3,
+    c: [f64; 6],
+}
+
+impl Patch {
+    /// The same patch seen from the other side: the normal and second tangent reversed,
+    /// h(x, y) ↦ −h(x, −y).
+    fn flip(&mut self) {
+        self.normal = -self.normal;
+        self.e2 = -self.e2;
+        let c = self.c;
+        self.c = [-c[0], -c[1], c[2], -c[3], c[4], -c[5]];
+    }
+
+    /// The point of the patch over x's foot on the tangent plane.
+    fn project(&self, x: DVec3) -> DVec3 {
+        let d = x - self.origin;
+        let (u, v) = (d.dot(self.e1), d.dot(self.e2));
+        let c = &self.c;
+        let h = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
+        self.origin + self.e1 * u + self.e2 * v + self.normal * h
+    }
+}
+
+/// The point set's local surface: a kd-tree over the points, a quadric patch about each, and
+/// the median spacing of the points.
+struct Patches {
+    tree: ImmutableKdTree<f64, 3>,
+    patches: Vec<Patch>,
+    spacing: f64,
+}
+
+/// Patches blended per projection.
+const BLEND: usize = 3;
+
+/// Nearest points examined per projection, for patches that face the texel's way.
+const CANDIDATES: usize = 8;
+
+impl Patches {
+    fn new(points: &[DVec3], normals: Option<&[DVec3]>, k: usize) -> Result<Self, Error> {
+        let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(
+            &points.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
+        )
+        .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
+        let k = NonZero::new(k.max(8)).unwrap_or(NonZero::<usize>::MIN);
+        let given = normals.filter(|n| n.len() == points.len());
+        let fitted: Vec<(Patch, f64)> = points
+            .par_iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let near =
+                    tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+                let spacing = near.get(1).map_or(0.0, |n| n.distance.sqrt());
+                let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
+                let normal = given
+                    .and_then(|n| n[i].try_normalize())
+                    .or_else(|| least_axis(&hood))
+                    .unwrap_or(DVec3::Z);
+                (fit_patch(*p, normal, &hood), spacing)
+            })
+            .collect();
+        let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
+        spacings.sort_by(f64::total_cmp);
+        let spacing = spacings[spacings.len() / 2].max(f64::MIN_POSITIVE);
+        let mut patches: Vec<Patch> = fitted.into_iter().map(|f| f.0).collect();
+        if given.is_none() {
+            // A first guess: away from the centroid (corrected by `orient` once a surface is
+            // wrapped round the points).
+            let centre = points.iter().copied().sum::<DVec3>() / points.len().max(1) as f64;
+            for p in &mut patches {
+                if p.normal.dot(p.origin - centre) < 0.0 {
+                    p.flip();
+                }
+            }
+        }
+        Ok(Self { tree, patches, spacing })
+    }
+
+    /// The projection of x onto the surface (the patches of its nearest points facing the way
+    /// `normal` does, if it is given and any do, blended by a Gaussian of their distance), and
+    /// the distance from x to its nearest point.
+    fn project(&self, x: DVec3, normal: DVec3) -> (DVec3, f64) {
+        let k = NonZero::new(CANDIDATES).unwrap_or(NonZero::<usize>::MIN);
+        let near = self.tree.query(&x.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+        let nearest = near.first().map_or(f64::INFINITY, |n| n.distance.sqrt());
+        // Where two sheets lie close (the two sides of a thin part), only the sheet the texel
+        // belongs to.
+        let facing: Vec<_> = near
+            .iter()
+            .filter(|n| self.patches[n.item as usize].normal.dot(normal) > 0.0)
+            .take(BLEND)
+            .collect();
+        let chosen: Vec<_> =
+            if facing.is_empty() { near.iter().take(BLEND).collect() } else { facing };
+        let h2 = chosen.last().map_or(0.0, |n| n.distance).max(self.spacing * self.spacing);
+        let (mut q, mut w) = (DVec3::ZERO, 0.0);
+        for n in chosen {
+            let wi = (-n.distance / h2).exp();
+            q += self.patches[n.item as usize].project(x) * wi;
+            w += wi;
+        }
+        (if w > 0.0 { q / w } else { x }, nearest)
+    }
+
+    /// Turns each patch to face as the nearest of `samples` (points of a surface wrapped round
+    /// the point set, with their outward `normals`) does.
+    fn orient(&mut self, samples: &[DVec3], normals: &[DVec3]) {
+        let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(
+            &samples.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
+        ) else {
+            return;
+        };
+        self.patches.par_iter_mut().for_each(|patch| {
+            let n = tree
+                .query(&patch.origin.to_array())
+                .nearest_one::<SquaredEuclidean<f64>>()
+                .execute();
+            if patch.normal.dot(normals[n.item as usize]) < 0.0 {
+                patch.flip();
+            }
+        });
+    }
+}
+
+/// The quadric patch about `p` across `normal`, fitted to `hood` (weights falling off with the
+/// distance from p); a plane if the fit is degenerate.
+fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
+    let e1 = normal.any_orthonormal_vector();
+    let e2 = normal.cross(e1);
+    let h2 = hood.iter().map(|q| q.distance_squared(p)).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
+    let mut ata = [[0.0f64; 6]; 6];
+    let mut atb = [0.0f64; 6];
+    for q in hood {
+        let d = *q - p;
+        let (x, y, h) = (d.dot(e1), d.dot(e2), d.dot(normal));
+        let w = (-d.length_squared() / h2).exp();
+        let r = [1.0, x, y, x * x, x * y, y * y];
+        for i in 0..6 {
+            for j in 0..6 {
+                ata[i][j] += w * r[i] * r[j];
+            }
+            atb[i] += w * r[i] * h;
+        }
+    }
+    let c = crate::noise::solve6(ata, atb).unwrap_or([0.0; 6]);
+    Patch { origin: p, e1, e2, normal, c }
+}
+
+/// The unit eigenvector of the least eigenvalue of the points' covariance.
+fn least_axis(hood: &[DVec3]) -> Option<DVec3> {
+    let c = hood.iter().copied().sum::<DVec3>() / hood.len().max(1) as f64;
+    let mut m = DMat3::ZERO;
+    for p in hood {
+        let d = *p - c;
+        m += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
+    }
+    crate::noise::smallest_eigenvector(m)
+}
+
+/// Builds the shrink-wrapped image of `points` (with their `normals`, if given: one per point);
+/// see the module documentation.
+///
+/// # Errors
+///
+/// The errors of [`spherical_image`] for the radial start (too few points, non-finite input,
+/// bad resolution); [`Error::InvalidOption`] for a normal count other than the point count.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_geomimage::shrinkwrap::{ShrinkWrapOptions, shrink_wrap};
+///
+/// // Points on a sphere of radius 2: every texel ends on it.
+/// let points: Vec<DVec3> = (0..5000)
+///     .map(|k| {
+///         let z = 1.0 - (2 * k + 1) as f64 / 5000.0;
+///         let phi = k as f64 * 2.399_963_229_728_653;
+///         let s = (1.0 - z * z).sqrt();
+///         DVec3::new(s * phi.cos(), s * phi.sin(), z) * 2.0
+///     })
+///     .collect();
+/// let options = ShrinkWrapOptions { rows: 32, cols: 32, ..ShrinkWrapOptions::default() };
+/// let wrapped = shrink_wrap(&points, None, &options).unwrap();
+/// assert!(wrapped.image.texels().iter().all(|p| (p.length() - 2.0).abs() < 1e-3));
+/// assert_eq!(wrapped.filled_fraction, 0.0);
+/// ```
+pub fn shrink_wrap(
+    points: &[DVec3],
+    normals: Option<&[DVec3]>,
+    options: &ShrinkWrapOptions,
+) -> Result<ShrinkWrapImage, Error> {
+    let &ShrinkWrapOptions { layout, rows, cols, centre, iterations, neighbours } = options;
+    if let Some(n) = normals
+        && n.len() != points.len()
+    {
+        return Err(Error::InvalidOption {
+            name: "normals",
+            value: n.len() as f64,
+            expected: "one normal per point",
+        });
+    }
+    if let Some(k) = points.iter().position(|p| !p.is_finite()) {
+        return Err(Error::NonFinite { what: format!("point {k}") });
+    }
+    if points.len() < neighbours.max(8) {
+        return Err(Error::TooFewPoints { found: points.len(), needed: neighbours.max(8) });
+    }
+    crate::image::check_resolution(rows, cols)?;
+    let patches = Patches::new(points, normals, neighbours)?;
+    // The coarse wrap, then its mesh parameterised: the texels of the final image spread over
+    // the wrapped surface evenly, however the rays crowded them.
+    let (cr, cc) = (rows.min(COARSE), cols.min(COARSE));
+    let start = spherical_image(
+        points,
+        &SphericalOptions { layout, rows: cr, cols: cc, centre, ..SphericalOptions::default() },
+    )?;
+    let mut patches = patches;
+    let (coarse, _) = wrap(&patches, start.image.texels().to_vec(), layout, cr, cc, iterations);
+    // Every patch faces out as the wrapped surface does: a point set's fitted normals have no
+    // sign of their own, and a file's may point in.
+    patches.orient(&coarse, &grid_normals(&coarse, cr, cc));
+    let resampled = GeometryImage::try_new(cr, cc, coarse)
+        .and_then(|image| image.surface())
+        .and_then(|surface| crate::layout_mesh::layout_mesh(&surface, layout, 1))
+        .and_then(|m| crate::repair::close_mesh(m.mesh.positions(), m.mesh.triangles()))
+        .and_then(|closed| {
+            crate::sphereparam::parameterise(
+                &closed,
+                &crate::sphereparam::SphereParamOptions::default(),
+            )
+        })
+        .and_then(|param| param.image(layout, rows, cols));
+    let (first, reparameterised) = match resampled {
+        Ok(image) => (image.image.texels().to_vec(), true),
+        // Should the coarse surface fold too much to be parameterised, the rays at full size.
+        Err(_) => {
+            let full = spherical_image(
+                points,
+                &SphericalOptions { layout, rows, cols, centre, ..SphericalOptions::default() },
+            )?;
+            (full.image.texels().to_vec(), false)
+        }
+    };
+    let rounds = if reparameterised { FINE_ROUNDS } else { iterations };
+    let (x, filled) = wrap(&patches, first.clone(), layout, rows, cols, rounds);
+    // Each direction once, for the fractions.
+    let distinct = match layout {
+        Layout::Sphere | Layout::FlatOctahedron => rows / 2 * cols,
+        Layout::Octahedron => rows * cols,
+    };
+    let filled_fraction =
+        filled[..distinct].iter().filter(|&&f| f).count() as f64 / distinct as f64;
+    let rms_move = (x.iter().zip(&first).map(|(a, b)| a.distance_squared(*b)).sum::<f64>()
+        / x.len() as f64)
+        .sqrt();
+    Ok(ShrinkWrapImage {
+        image: GeometryImage::try_new(rows, cols, x)?,
+        filled,
+        filled_fraction,
+        non_star_fraction: start.non_star_fraction,
+        reparameterised,
+        rms_move,
+    })
+}
+
+/// The normal of each texel of a `rows × cols` image, across the grid's directions to its
+/// neighbours (zero where they are degenerate).
+fn grid_normals(x: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
+    (0..rows * cols)
+        .into_par_iter()
+        .map(|t| {
+            let (i, j) = (t / cols, t % cols);
+            let up = x[((i + rows - 1) % rows) * cols + j];
+            let down = x[((i + 1) % rows) * cols + j];
+            let left = x[i * cols + (j + cols - 1) % cols];
+            let right = x[i * cols + (j + 1) % cols];
+            (down - up).cross(right - left).normalize_or_zero()
+        })
+        .collect()
+}
+
+/// The side of the coarse wrap.
+const COARSE: usize = 96;
+
+/// Rounds of projection and spreading on the final image.
+const FINE_ROUNDS: usize = 2;
+
+/// `rounds` of projection and spreading of the texels `x` of a `rows × cols` image (the last
+/// step a projection), with the doubled layouts' symmetry kept; the texels and which of them
+/// had no point near.
+fn wrap(
+    patches: &Patches,
+    mut x: Vec<DVec3>,
+    layout: Layout,
+    rows: usize,
+    cols: usize,
+    rounds: usize,
+) -> (Vec<DVec3>, Vec<bool>) {
+    // Beyond this from every point a texel has no data.
+    let reach = 4.0 * patches.spacing;
+    let mirror = layout.mirror(rows, cols);
+    let symmetrise = |v: &mut [DVec3]| {
+        if layout == Layout::Sphere {
+            // The pole rows are one point each.
+            for i in [0, rows / 2] {
+                let mean = v[i * cols..(i + 1) * cols].iter().copied().sum::<DVec3>() / cols as f64;
+                v[i * cols..(i + 1) * cols].iter_mut().for_each(|x| *x = mean);
+            }
+        }
+        if let Some(mirror) = &mirror {
+            for i in 0..rows {
+                for j in 0..cols {
+                    let (a, b) = mirror(i, j);
+                    let (s, t) = (i * cols + j, a * cols + b);
+                    if s < t {
+                        let mean = 0.5 * (v[s] + v[t]);
+                        v[s] = mean;
+                        v[t] = mean;
+                    }
+                }
+            }
+        }
+    };
+    let mut filled = vec![false; rows * cols];
+    let neighbours_of = |t: usize| {
+        let (i, j) = (t / cols, t % cols);
+        [
+            ((i + rows - 1) % rows) * cols + j,
+            ((i + 1) % rows) * cols + j,
+            i * cols + (j + cols - 1) % cols,
+            i * cols + (j + 1) % cols,
+        ]
+    };
+    for round in 0..=rounds {
+        // Onto the surface, each texel onto the sheet facing its way (its normal across the
+        // grid's two directions, outward in every layout).
+        let normals = grid_normals(&x, rows, cols);
+        let projected: Vec<(DVec3, f64)> =
+            x.par_iter().zip(&normals).map(|(p, n)| patches.project(*p, *n)).collect();
+        let mut target = vec![DVec3::ZERO; rows * cols];
+        for (t, (q, d)) in projected.iter().enumerate() {
+            filled[t] = *d > reach;
+            target[t] = *q;
+            if !filled[t] {
+                x[t] = *q;
+            }
+        }
+        symmetrise(&mut x);
+        if round == rounds {
+            break;
+        }
+        // Along it, towards the neighbours' mean; filled texels follow it wholly.
+        let spread: Vec<DVec3> = (0..rows * cols)
+            .into_par_iter()
+            .map(|t| {
+                let around = neighbours_of(t).map(|s| x[s]);
+                let mean = around.iter().copied().sum::<DVec3>() / 4.0;
+                if filled[t] {
+                    // Far from every point: shrink towards the surface, smoothly.
+                    return 0.5 * (mean + target[t]);
+                }
+                let step = mean - x[t];
+                // The surface's normal here: across the two grid directions.
+                let [up, down, left, right] = around;
+                let n = (down - up).cross(right - left).try_normalize().unwrap_or(DVec3::ZERO);
+                x[t] + 0.5 * (step - n * step.dot(n))
+            })
+            .collect();
+        x = spread;
+        symmetrise(&mut x);
+    }
+    (x, filled)
+}
