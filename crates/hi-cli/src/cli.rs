@@ -73,17 +73,29 @@ Example: hi subdivide --scheme catmull-clark --steps 2 cube.obj -o cube2.glb";
 
 /// The output of `hi fit`.
 const FIT_HELP: &str = "\
-Output (stdout, and --report): {\"scan\": …, \"points\": P, \"image_points\": Q, \"dropped_points\": D,
+Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-wrap\" | \"radial\" | \"contours\",
+  \"method_reason\": …, \"points\": P, \"unused_points\": U, \"image_points\": Q, \"dropped_points\": D,
   \"image\": [R, C], \"surface\": [M, N], \"non_star_fraction\": s, \"hole_fraction\": h,
+  \"mesh\": {\"holes_filled\", \"hole_edges\", \"parts\", \"area_kept\", \"welded_points\",
+  \"dropped_triangles\", \"reoriented_triangles\", \"split_vertices\", \"stretch_efficiency\",
+  \"levels\"} | null, \"regularisation\": {\"lambda\", \"kept\", \"rms_change\", \"max_change\"} | null,
   \"stages\": [{\"name\": …, \"seconds\": t}, …], \"reduction\": {\"max_deviation\", \"upper_bound\"} | null,
   \"errors\": {\"mean\", \"rms\", \"max\", \"diagonal\", \"relative\": [mean, rms, max]},
+  \"both_ways\": {\"scan_to_surface\", \"surface_to_scan\": {\"mean\", \"rms\", \"max\", \"relative\"},
+  \"filled_to_scan_max\", \"filled_to_scan_max_relative\", \"unreached_fraction\", \"diagonal\"},
   \"hausdorff\": {\"distance\", \"relative\"} | null, \"files\": [...]}
-  Rays from the centre sample the scan into a geometry image; the harmonic surface through its
-  texels is written as a mesh over the part of the parameters that covers the object once
-  (2x the image's resolution), or as its grid. non_star_fraction: the rays that met the scan
-  more than once (not star-shaped about the centre; the surface follows the outermost shell
-  there; above 5% a warning is printed). errors: distances from the scan's points to the
-  surface; hausdorff: both ways against the scan's mesh, when it has faces.
+  --method auto (the default) fits a mesh scan that closes to genus 0 (holes filled, parts
+  other than the largest dropped) through a spherical parameterisation of the mesh itself
+  (mesh), and anything else, point sets included, by wrapping a surface onto the points
+  (shrink-wrap); method_reason says why. radial is the thesis's algorithm 2 (rays from the
+  centre: non_star_fraction counts the rays that met the scan more than once, above 5% a
+  warning). The image size follows the point count unless --resolution is given. A surface
+  through points is regularised to the scan's own noise (--regularise); --smooth 0 interpolates.
+  The output mesh is closed, welded at every seam and faces outwards. errors: the scan's
+  points to the output mesh (kd-tree, or with --exact-error Gauss-Newton onto the surface);
+  both_ways adds the surface to the scan (its mesh when it has one), the largest distance from
+  filled texels (holes) apart, and the fraction of the surface farther than 2% of the diagonal
+  from the scan (unreached). An image more than half holes is refused.
 --param sections is algorithm 1 (§5.3) instead: sections across --axis (K equal slabs with
   --slices K, else the thesis's recursive subdivision), a harmonic curve through each (points in
   --order), insertion to equal counts, rotation alignment, the reversed traversal. Its output
@@ -96,7 +108,8 @@ Output (stdout, and --report): {\"scan\": …, \"points\": P, \"image_points\": 
   patches, .obj free-form surfaces or a .glb/.gltf mesh with one colour per patch (the patches
   of one cover of the object), and adds \"bezier\": {\"scheme\", \"patches\", \"patches_once\",
   \"degree\", \"max_deviation\", \"rms_deviation\", \"bound\", \"max_normal_jump\", \"seconds\"}.
-Example: hi fit bunny.obj -o bunny.glb --param flat-octahedron --smooth 1 --reduce 0.25
+Example: hi fit bunny.obj -o bunny.glb
+         hi fit bunny.obj -o bunny.glb --method radial --param sphere --resolution 128x128 --smooth 0
          hi fit scan.xyz -o fit.glb --param sections --slices 24 --axis y";
 
 /// Prefixes a curve subcommand's help text with the input shape.
@@ -412,7 +425,8 @@ pub(crate) enum OrderName {
 /// Options of `hi fit`.
 #[derive(Debug, Args)]
 pub(crate) struct FitArgs {
-    /// The scan: .obj, .ply, .off, .stl, .xyz or .pts.
+    /// The scan: .obj, .ply, .off, .stl, .xyz, .pts, .gltf or .glb (every mesh the scene places,
+    /// in world space).
     #[arg(value_name = "SCAN")]
     pub(crate) scan: PathBuf,
     /// The output: a closed mesh of the surface (.glb, .gltf, .obj) or its grid (.json, for 'hi surface').

@@ -226,3 +226,39 @@ fn contours_of_located_points_give_the_combined_pipeline_of_section_5_8() {
         "--method applies to the geometry-image layouts",
     );
 }
+
+#[test]
+fn a_glb_scan_without_normals_is_fitted_where_its_node_puts_it() {
+    let axes = [1.5f32, 1.0, 0.7];
+    let (positions, triangles) = common::ellipsoid_mesh(24, 48, axes);
+    let scan = TempFile::path_with("glb");
+    let bytes = common::glb_without_normals(&positions, &triangles, 2.0, [10.0, 0.0, 0.0]);
+    std::fs::write(scan.as_path(), bytes).expect("temp file is writable");
+    let out_file = TempFile::path_with("glb");
+    let out = ok(&["fit", scan.path(), "-o", out_file.path()]);
+    assert_eq!(out["method"], "mesh", "{out}");
+    assert_eq!(out["points"].as_u64(), Some(positions.len() as u64));
+    // The output lies on the ellipsoid scaled by 2 about (10, 0, 0), where the node put it.
+    let (doc, buffers, _) = gltf::import(out_file.as_path()).expect("the GLB reads back");
+    let mesh = doc.meshes().next().expect("a mesh");
+    let mut seen = 0;
+    for primitive in mesh.primitives() {
+        let reader = primitive.reader(|b| Some(&buffers[b.index()]));
+        for [x, y, z] in reader.read_positions().expect("positions") {
+            let q = ((x - 10.0) / (2.0 * axes[0])).powi(2)
+                + (y / (2.0 * axes[1])).powi(2)
+                + (z / (2.0 * axes[2])).powi(2);
+            assert!((q - 1.0).abs() < 0.02, "({x}, {y}, {z}): {q}");
+            seen += 1;
+        }
+    }
+    assert!(seen > 100);
+}
+
+#[test]
+fn an_image_with_no_scan_data_is_refused() {
+    let few = scan_file("0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.1 0.1 0.1\n", "xyz");
+    let out = TempFile::path_with("glb");
+    bad(&["fit", few.path(), "-o", out.path(), "--method", "radial"], "found no scan data");
+    bad(&["fit", few.path(), "-o", out.path()], "too few points");
+}

@@ -139,3 +139,27 @@ fn bad_input_exits_2_with_one_line() {
     bad(&["render", "--quick", grid.path(), "-o", "out.jpg"], ".png");
     bad(&["render", "-o", png.path()], "SCENE");
 }
+
+#[test]
+fn a_glb_without_normals_renders() {
+    let (positions, triangles) = common::ellipsoid_mesh(12, 24, [1.0, 0.8, 0.6]);
+    let scene = TempFile::path_with("glb");
+    let bytes = common::glb_without_normals(&positions, &triangles, 1.0, [0.0; 3]);
+    std::fs::write(scene.as_path(), bytes).expect("temp file is writable");
+    let png = TempFile::path_with("png");
+    let out = ok(&[
+        "render",
+        "--quick",
+        scene.path(),
+        "--width",
+        "24",
+        "--height",
+        "16",
+        "--spp",
+        "1",
+        "-o",
+        png.path(),
+    ]);
+    assert_eq!(png_size(png.as_path()), (24, 16));
+    assert!(out["rays"]["hits"].as_u64().unwrap() > 20, "the ellipsoid is in view: {out}");
+}

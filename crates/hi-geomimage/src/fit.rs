@@ -123,6 +123,11 @@ pub struct FitOptions {
     pub rasterise: bool,
     /// How the error is measured. Default [`ErrorMeasure::Fast`].
     pub error: ErrorMeasure,
+    /// Refuse a fit whose image has more than this fraction of filled texels (texels no scan
+    /// data reached), with [`Error::MostlyHoles`]: such a surface is mostly guesswork.
+    /// Default [`MAX_HOLE_FRACTION`]; 1 accepts any image with at least one measured texel
+    /// (an image with none is always refused).
+    pub max_hole_fraction: f64,
 }
 
 impl Default for FitOptions {
@@ -138,6 +143,7 @@ impl Default for FitOptions {
             densify: 200_000,
             rasterise: false,
             error: ErrorMeasure::Fast,
+            max_hole_fraction: MAX_HOLE_FRACTION,
         }
     }
 }
@@ -145,7 +151,8 @@ impl Default for FitOptions {
 impl FitOptions {
     /// The thesis's algorithm 2 as it stands: rays from the centroid over a 128 × 128
     /// latitude–longitude image, interpolated with no regularisation, the 4× rasterisation of
-    /// Table 5.1 timed, the error measured on the surface sampled 4× finer.
+    /// Table 5.1 timed, the error measured on the surface sampled 4× finer; images with many
+    /// holes are fitted (the thesis fills them, and shows what that does, Figure 5.24).
     #[must_use]
     pub fn thesis() -> Self {
         Self {
@@ -155,6 +162,7 @@ impl FitOptions {
             regularisation: Regularisation::Off,
             rasterise: true,
             error: ErrorMeasure::Sampled(4),
+            max_hole_fraction: 1.0,
             ..Self::default()
         }
     }
@@ -399,7 +407,8 @@ const MIN_AREA_KEPT: f64 = 0.5;
 /// A scan point farther than this fraction of the diagonal from the surface is unreached.
 pub const UNREACHED: f64 = 0.02;
 
-/// Above this fraction of filled texels a fit is refused: the image is mostly guesswork.
+/// Above this fraction of filled texels a fit is refused by default
+/// ([`FitOptions::max_hole_fraction`]): the image is mostly guesswork.
 pub const MAX_HOLE_FRACTION: f64 = 0.5;
 
 /// The points its triangles use, the triangles renumbered, and how many were unused; a point
@@ -443,10 +452,11 @@ fn triangle_area(p: &[DVec3], triangles: &[[u32; 3]]) -> f64 {
 ///
 /// # Errors
 ///
-/// [`Error::InvalidOption`] for `reduce` outside (0, 1]; [`Error::TooFewPoints`] for a scan
+/// [`Error::InvalidOption`] for `reduce` outside (0, 1] or `max_hole_fraction` outside
+/// [0, 1]; [`Error::TooFewPoints`] for a scan
 /// with fewer than 4 points; [`Error::Topology`] when [`Method::Mesh`] is asked for and the
 /// mesh cannot be parameterised; [`Error::MostlyHoles`] when more than
-/// [`MAX_HOLE_FRACTION`] of the image had no data; the errors of the image builders,
+/// [`FitOptions::max_hole_fraction`] of the image (or all of it) had no data; the errors of the image builders,
 /// [`GeometryImage::smoothed`], [`regularise`] and [`GeometryImage::resampled`].
 pub fn fit(
     scan: &Scan,
@@ -464,6 +474,13 @@ pub fn fit(
             name: "reduce",
             value: r,
             expected: "0 < fraction ≤ 1",
+        });
+    }
+    if !(0.0..=1.0).contains(&options.max_hole_fraction) {
+        return Err(Error::InvalidOption {
+            name: "max_hole_fraction",
+            value: options.max_hole_fraction,
+            expected: "0 ≤ fraction ≤ 1",
         });
     }
     let (points, triangles, unused_points) = referenced(scan);
@@ -565,7 +582,7 @@ pub fn fit(
         }
     };
     timed("geometry image", &mut stages, start);
-    if source.hole_fraction() > MAX_HOLE_FRACTION {
+    if source.hole_fraction() > options.max_hole_fraction || source.hole_fraction() >= 1.0 {
         return Err(Error::MostlyHoles { fraction: source.hole_fraction() });
     }
     let mut image = source.image().clone();

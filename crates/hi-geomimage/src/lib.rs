@@ -1,14 +1,22 @@
 // SPDX-License-Identifier: MIT
 //! Geometry images and surface fitting from scans (Hardy 2005, §5.3, §5.4, §5.8).
 //!
-//! This crate will turn an unorganised set of points into a geometry image (spherical or
-//! octahedral parametrisation), the geometry image into a harmonic surface, and that surface
-//! into cubic Bézier patches, with smoothing and reduction that report their error. It builds on
-//! `hi-surface`.
+//! This crate turns a scan (a mesh or bare points) into a geometry image (spherical or
+//! octahedral layout), the geometry image into a harmonic surface, and that surface into a
+//! closed mesh or cubic Bézier patches, with smoothing, regularisation and reduction that
+//! report their effect and a fit error measured both ways. Where the thesis's rays fail (a
+//! shape that is not star-shaped) it goes past them: a mesh is parameterised over the sphere,
+//! points are shrink-wrapped. It builds on `hi-surface`.
 //!
 //! | what | thesis | where |
 //! |---|---|---|
-//! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS | §5.8 | [`scan`] |
+//! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS, glTF, GLB | §5.8 | [`scan`] |
+//! | closing a scan mesh to one genus-0 surface (weld, clean, orient, fill holes) | | [`repair`] |
+//! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
+//! | shrink-wrapping a point set: the radial image projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
+//! | noise estimate and spectral regularisation (discrepancy principle, GCV) | beyond §5.4 | [`noise`], [`regularise`] |
+//! | the closed, outward mesh of a fitted surface in every layout | §5.3 | [`layout_mesh`] |
+//! | closest points on triangles (BVH) and near a mesh (kd-tree) | | [`closest`] |
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
 //! | ray-cast geometry images (algorithm 2): spherical, octahedral and flattened octahedral layouts, with star-shape and hole diagnostics | §5.3 | [`spherical`], [`Layout`] |
 //! | periodic smoothing (box, Gaussian), Theorem 5.3 resampling with the reduction error | §5.4 | [`Smoothing`], [`GeometryImage::smoothed`], [`GeometryImage::resampled`] |

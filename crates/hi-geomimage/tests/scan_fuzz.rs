@@ -58,8 +58,42 @@ fn seed(format: ScanFormat) -> Vec<u8> {
         }
         ScanFormat::Xyz => b"0 0 0 0 0 1\n1,0,0,0,0,1\n".to_vec(),
         ScanFormat::Pts => b"# x\np 0 0 0\np 1 0 0\n".to_vec(),
+        ScanFormat::Gltf => format!(
+            r#"{{"asset":{{"version":"2.0"}},"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}}}}]}}],
+"nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}],
+"buffers":[{{"byteLength":36,"uri":"data:application/octet-stream;base64,{TRIANGLE_BASE64}"}}],
+"bufferViews":[{{"buffer":0,"byteLength":36}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}}]}}"#
+        )
+        .into_bytes(),
+        ScanFormat::Glb => {
+            let mut json = br#"{"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"buffers":[{"byteLength":36}],
+"bufferViews":[{"buffer":0,"byteLength":36}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]}"#
+                .to_vec();
+            while !json.len().is_multiple_of(4) {
+                json.push(b' ');
+            }
+            let length = |n: usize| u32::try_from(n).expect("a small file").to_le_bytes();
+            let mut b = b"glTF".to_vec();
+            b.extend(2u32.to_le_bytes());
+            b.extend(length(12 + 8 + json.len() + 8 + 36));
+            b.extend(length(json.len()));
+            b.extend(b"JSON");
+            b.extend(&json);
+            b.extend(length(36));
+            b.extend(b"BIN\0");
+            for v in [0.0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+                b.extend(v.to_le_bytes());
+            }
+            b
+        }
     }
 }
+
+/// The positions (0, 0, 0), (1, 0, 0), (0, 1, 0) as little-endian `f32`, in base64.
+const TRIANGLE_BASE64: &str = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA";
 
 /// An edit of a file: replace, insert or remove a byte, or cut the file.
 #[derive(Clone, Debug)]
@@ -74,7 +108,7 @@ fn edit() -> impl Strategy<Value = Edit> {
     // Bytes that matter to the parsers are more likely than others.
     let byte = prop_oneof![
         any::<u8>(),
-        prop::sample::select(b"0123456789-+.eE \n\r\t/#pvfn,\xff\x00".to_vec()),
+        prop::sample::select(b"0123456789-+.eE \n\r\t/#pvfn,{}[]\":\xff\x00".to_vec()),
     ];
     prop_oneof![
         (any::<usize>(), byte.clone()).prop_map(|(i, b)| Edit::Set(i, b)),
@@ -102,7 +136,7 @@ proptest! {
 
     /// Random bytes: an error or a scan, never a panic.
     #[test]
-    fn random_bytes(bytes in prop::collection::vec(any::<u8>(), 0..400), f in 0usize..6) {
+    fn random_bytes(bytes in prop::collection::vec(any::<u8>(), 0..400), f in 0usize..ScanFormat::ALL.len()) {
         let format = ScanFormat::ALL[f];
         if let Ok(scan) = parse_scan(&bytes, format) {
             prop_assert!(scan.points.iter().all(|p| p.is_finite()));
@@ -111,7 +145,7 @@ proptest! {
 
     /// Valid files with a few edits: an error or a consistent scan, never a panic.
     #[test]
-    fn edited_files(f in 0usize..6, edits in prop::collection::vec(edit(), 1..6)) {
+    fn edited_files(f in 0usize..ScanFormat::ALL.len(), edits in prop::collection::vec(edit(), 1..6)) {
         let format = ScanFormat::ALL[f];
         let mut bytes = seed(format);
         for e in &edits {

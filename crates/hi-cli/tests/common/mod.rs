@@ -126,3 +126,97 @@ pub(crate) fn dist(a: &[f64], b: &[f64]) -> f64 {
 pub(crate) fn json_points(pts: &[Vec<f64>]) -> String {
     serde_json::to_string(pts).expect("points serialise")
 }
+
+/// A binary glTF of one triangle mesh with positions and `u32` indices and no normals, placed
+/// by a node that scales by `scale` and then translates by `translation`: written byte by
+/// byte here, not by the library's writer.
+pub(crate) fn glb_without_normals(
+    positions: &[[f32; 3]],
+    triangles: &[[u32; 3]],
+    scale: f32,
+    translation: [f32; 3],
+) -> Vec<u8> {
+    let mut bin = Vec::new();
+    for c in positions.iter().flatten() {
+        bin.extend(c.to_le_bytes());
+    }
+    let index_offset = bin.len();
+    for k in triangles.iter().flatten() {
+        bin.extend(k.to_le_bytes());
+    }
+    let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+    for p in positions {
+        for i in 0..3 {
+            min[i] = min[i].min(p[i]);
+            max[i] = max[i].max(p[i]);
+        }
+    }
+    let [tx, ty, tz] = translation;
+    let json = format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0]}}],
+"nodes":[{{"translation":[{tx},{ty},{tz}],"scale":[{scale},{scale},{scale}],"mesh":0}}],
+"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}},"indices":1}}]}}],
+"buffers":[{{"byteLength":{len}}}],
+"bufferViews":[{{"buffer":0,"byteOffset":0,"byteLength":{index_offset}}},
+ {{"buffer":0,"byteOffset":{index_offset},"byteLength":{index_len}}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"count":{count},"type":"VEC3","min":{min:?},"max":{max:?}}},
+ {{"bufferView":1,"componentType":5125,"count":{indices},"type":"SCALAR"}}]}}"#,
+        len = bin.len(),
+        index_len = bin.len() - index_offset,
+        count = positions.len(),
+        indices = 3 * triangles.len(),
+    );
+    let mut json = json.into_bytes();
+    while !json.len().is_multiple_of(4) {
+        json.push(b' ');
+    }
+    let length = |n: usize| u32::try_from(n).expect("a small file").to_le_bytes();
+    let mut out = b"glTF".to_vec();
+    out.extend(2u32.to_le_bytes());
+    out.extend(length(12 + 8 + json.len() + 8 + bin.len()));
+    out.extend(length(json.len()));
+    out.extend(b"JSON");
+    out.extend(&json);
+    out.extend(length(bin.len()));
+    out.extend(b"BIN\0");
+    out.extend(&bin);
+    out
+}
+
+/// A closed, outward latitude–longitude mesh of the ellipsoid with semi-axes `axes`: `rings`
+/// rings of `segments` points between two poles.
+pub(crate) fn ellipsoid_mesh(
+    rings: usize,
+    segments: usize,
+    axes: [f32; 3],
+) -> (Vec<[f32; 3]>, Vec<[u32; 3]>) {
+    let index = |k: usize| u32::try_from(k).expect("a small mesh");
+    let mut positions = vec![[0.0, 0.0, axes[2]]];
+    for i in 1..=rings {
+        let theta = std::f32::consts::PI * i as f32 / (rings + 1) as f32;
+        for j in 0..segments {
+            let phi = std::f32::consts::TAU * j as f32 / segments as f32;
+            positions.push([
+                axes[0] * theta.sin() * phi.cos(),
+                axes[1] * theta.sin() * phi.sin(),
+                axes[2] * theta.cos(),
+            ]);
+        }
+    }
+    positions.push([0.0, 0.0, -axes[2]]);
+    let south = positions.len() - 1;
+    let at = |i: usize, j: usize| 1 + (i - 1) * segments + j % segments;
+    let mut triangles = Vec::new();
+    for j in 0..segments {
+        triangles.push([0, index(at(1, j)), index(at(1, j + 1))]);
+        triangles.push([index(south), index(at(rings, j + 1)), index(at(rings, j))]);
+    }
+    for i in 1..rings {
+        for j in 0..segments {
+            let [a, b, c, d] = [at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)];
+            triangles.push([index(a), index(c), index(d)]);
+            triangles.push([index(a), index(d), index(b)]);
+        }
+    }
+    (positions, triangles)
+}

@@ -10,6 +10,7 @@
 //! | STL | `.stl` | ASCII and binary; the repeated corners of each facet are welded into shared points |
 //! | XYZ | `.xyz` | `x y z` or `x y z nx ny nz` per line (spaces, tabs or commas), `#` comments |
 //! | Hoppe's PTS | `.pts` | `p x y z` lines; every other line is skipped |
+//! | glTF 2.0 | `.gltf`, `.glb` | the positions of every mesh primitive the scene places, node transforms applied; triangles of `TRIANGLES`, `TRIANGLE_STRIP` and `TRIANGLE_FAN` primitives; normals when every primitive has them; `read_scan` resolves external buffers beside the file |
 //!
 //! Every reader returns a [`ScanError`] naming the format, the line (text) or byte offset
 //! (binary) and what is wrong for malformed input; none panics or allocates more than the input
@@ -35,6 +36,7 @@
 //! assert_eq!(err.to_string(), "PTS, line 1: expected 3 coordinates after `p`, found 2");
 //! ```
 
+mod gltf;
 mod obj;
 mod off;
 mod ply;
@@ -62,11 +64,16 @@ pub enum ScanFormat {
     Xyz,
     /// Hoppe's point format: `p x y z` lines.
     Pts,
+    /// glTF 2.0 as JSON (`.gltf`), buffers embedded or in files beside it.
+    Gltf,
+    /// glTF 2.0 binary (`.glb`).
+    Glb,
 }
 
 impl ScanFormat {
     /// Every format, in the order of the module table.
-    pub const ALL: [Self; 6] = [Self::Obj, Self::Ply, Self::Off, Self::Stl, Self::Xyz, Self::Pts];
+    pub const ALL: [Self; 8] =
+        [Self::Obj, Self::Ply, Self::Off, Self::Stl, Self::Xyz, Self::Pts, Self::Gltf, Self::Glb];
 
     /// The format named by a file extension (case-insensitive, without the dot), if any.
     #[must_use]
@@ -85,7 +92,7 @@ impl ScanFormat {
             format: None,
             location: Location::None,
             message: format!(
-                "{}: unknown scan format {:?}; expected one of .obj, .ply, .off, .stl, .xyz, .pts",
+                "{}: unknown scan format {:?}; expected one of .obj, .ply, .off, .stl, .xyz, .pts, .gltf, .glb",
                 path.display(),
                 ext
             ),
@@ -102,6 +109,8 @@ impl ScanFormat {
             Self::Stl => "stl",
             Self::Xyz => "xyz",
             Self::Pts => "pts",
+            Self::Gltf => "gltf",
+            Self::Glb => "glb",
         }
     }
 
@@ -115,6 +124,8 @@ impl ScanFormat {
             Self::Stl => "STL",
             Self::Xyz => "XYZ",
             Self::Pts => "PTS",
+            Self::Gltf => "glTF",
+            Self::Glb => "GLB",
         }
     }
 }
@@ -250,6 +261,11 @@ pub fn read_scan(path: &Path) -> Result<Scan, ScanError> {
         location: Location::None,
         message: format!("cannot read {}: {e}", path.display()),
     })?;
+    if matches!(format, ScanFormat::Gltf | ScanFormat::Glb) {
+        // External buffers are files beside this one.
+        let base = path.parent().unwrap_or_else(|| Path::new("."));
+        return checked(gltf::parse(&bytes, Some(base), format)?, format);
+    }
     parse_scan(&bytes, format)
 }
 
@@ -259,7 +275,7 @@ pub fn read_scan(path: &Path) -> Result<Scan, ScanError> {
 ///
 /// [`ScanError`] naming the line (text formats) or byte offset (binary PLY and STL) of the
 /// first malformed record, or the problem with the file as a whole (empty, no points,
-/// truncated).
+/// truncated, a glTF buffer in another file, which bytes alone cannot reach).
 pub fn parse_scan(bytes: &[u8], format: ScanFormat) -> Result<Scan, ScanError> {
     let scan = match format {
         ScanFormat::Obj => obj::parse(bytes),
@@ -268,7 +284,13 @@ pub fn parse_scan(bytes: &[u8], format: ScanFormat) -> Result<Scan, ScanError> {
         ScanFormat::Stl => stl::parse(bytes),
         ScanFormat::Xyz => xyz::parse_xyz(bytes),
         ScanFormat::Pts => xyz::parse_pts(bytes),
+        ScanFormat::Gltf | ScanFormat::Glb => gltf::parse(bytes, None, format),
     }?;
+    checked(scan, format)
+}
+
+/// The scan, unless it has no (finite) point.
+fn checked(scan: Scan, format: ScanFormat) -> Result<Scan, ScanError> {
     if scan.points.is_empty() && scan.dropped_points == 0 {
         return Err(ScanError::file(format, "the file holds no points"));
     }

@@ -9,7 +9,7 @@ use std::io::Write;
 use std::path::Path;
 
 use ::gltf::json;
-use glam::{DVec2, DVec3, Vec3};
+use glam::{DMat3, DMat4, DVec2, DVec3, Vec3};
 use json::validation::Checked::Valid;
 use json::validation::USize64;
 
@@ -269,48 +269,98 @@ fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
     }
 }
 
-/// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives of all its
-/// meshes, concatenated, ignoring node transforms.
+/// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives (`TRIANGLES`,
+/// `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh the scene places, concatenated in world space.
+///
+/// The scene is the default one, or every scene when there is none (a file with no scene at
+/// all has its meshes read as they are). Each node's world transform is applied to its mesh's
+/// positions, and its inverse transpose to the normals (renormalised); a transform that mirrors
+/// (negative determinant) reverses the triangles' winding, as the glTF 2.0 specification says
+/// (§3.7.4). A primitive without `NORMAL` gets flat normals, as the specification asks of a client
+/// (§3.7.2.1): each triangle its own normal, its corners not shared with its neighbours. A
+/// primitive without `TEXCOORD_0` gets UV (0, 0). Vertex colours are kept when every primitive
+/// has them.
 pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
     let (document, buffers, _images) =
         ::gltf::import(path).map_err(|e| gltf_error(e, Some(path)))?;
     let (mut positions, mut normals, mut uvs, mut colors, mut triangles) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut all_colored = true;
-    for mesh in document.meshes() {
+    let mut instances: Vec<(::gltf::Mesh<'_>, DMat4)> = Vec::new();
+    let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
+        Some(s) => vec![s],
+        None => document.scenes().collect(),
+    };
+    if scenes.is_empty() {
+        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
+    }
+    for scene in scenes {
+        // Depth first in document order: the stack holds siblings last first.
+        let mut stack: Vec<(::gltf::Node<'_>, DMat4, usize)> =
+            scene.nodes().map(|n| (n, DMat4::IDENTITY, 0)).collect();
+        stack.reverse();
+        while let Some((node, parent, depth)) = stack.pop() {
+            if depth > 1024 {
+                return Err(format_error("the node hierarchy is more than 1024 deep", Some(path)));
+            }
+            let local = node.transform().matrix().map(|c| c.map(f64::from));
+            let world = parent * DMat4::from_cols_array_2d(&local);
+            if let Some(mesh) = node.mesh() {
+                instances.push((mesh, world));
+            }
+            let first = stack.len();
+            stack.extend(node.children().map(|c| (c, world, depth + 1)));
+            stack[first..].reverse();
+        }
+    }
+    for (mesh, world) in &instances {
+        let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
+        let mirrors = world.determinant() < 0.0;
         for primitive in mesh.primitives() {
-            if primitive.mode() != ::gltf::mesh::Mode::Triangles {
+            use ::gltf::mesh::Mode;
+            if !matches!(
+                primitive.mode(),
+                Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+            ) {
                 return Err(format_error(
-                    format!("primitive mode {:?} is not TRIANGLES", primitive.mode()),
+                    format!(
+                        "primitive mode {:?} is not TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN",
+                        primitive.mode()
+                    ),
                     None,
                 ));
             }
             let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
-            let base = u32::try_from(positions.len())
-                .map_err(|_| format_error("too many vertices", None))?;
             let p: Vec<DVec3> = reader
                 .read_positions()
                 .ok_or_else(|| format_error("a primitive has no POSITION", None))?
-                .map(|p| Vec3::from(p).as_dvec3())
+                .map(|p| world.transform_point3(Vec3::from(p).as_dvec3()))
                 .collect();
             let n = p.len();
-            let nrm: Vec<DVec3> = reader
-                .read_normals()
-                .ok_or_else(|| format_error("a primitive has no NORMAL", None))?
-                .map(|v| Vec3::from(v).as_dvec3())
-                .collect();
-            let uv: Vec<DVec2> = reader
-                .read_tex_coords(0)
-                .ok_or_else(|| format_error("a primitive has no TEXCOORD_0", None))?
-                .into_f32()
-                .map(|t| glam::Vec2::from(t).as_dvec2())
-                .collect();
-            if nrm.len() != n || uv.len() != n {
+            let nrm: Option<Vec<DVec3>> = reader.read_normals().map(|it| {
+                it.map(|v| {
+                    let n = Vec3::from(v).as_dvec3();
+                    // Untransformed normals are kept bit for bit (a written file reads back
+                    // exactly); transformed ones are unit again.
+                    if *world == DMat4::IDENTITY {
+                        n
+                    } else {
+                        (normal_matrix * n).normalize_or(DVec3::Z)
+                    }
+                })
+                .collect()
+            });
+            let uv: Vec<DVec2> = match reader.read_tex_coords(0) {
+                Some(t) => t.into_f32().map(|t| glam::Vec2::from(t).as_dvec2()).collect(),
+                None => vec![DVec2::ZERO; n],
+            };
+            let col: Option<Vec<[f32; 3]>> =
+                reader.read_colors(0).map(|c| c.into_rgb_f32().collect());
+            if nrm.as_ref().is_some_and(|v| v.len() != n)
+                || uv.len() != n
+                || col.as_ref().is_some_and(|c| c.len() != n)
+            {
                 return Err(format_error("attribute counts differ within a primitive", None));
-            }
-            match reader.read_colors(0) {
-                Some(c) => colors.extend(c.into_rgb_f32()),
-                None => all_colored = false,
             }
             let idx: Vec<u32> = match reader.read_indices() {
                 Some(i) => i.into_u32().collect(),
@@ -318,15 +368,63 @@ pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
                     .map_err(|_| format_error("too many vertices", None))?)
                     .collect(),
             };
-            if !idx.len().is_multiple_of(3) {
-                return Err(format_error("index count is not a multiple of 3", None));
+            if idx.iter().any(|&k| k as usize >= n) {
+                return Err(format_error("an index is beyond the primitive's vertices", None));
             }
-            triangles.extend(
-                idx.chunks_exact(3).map(|t| [t[0], t[1], t[2]].map(|k| k.saturating_add(base))),
-            );
-            positions.extend(p);
-            normals.extend(nrm);
-            uvs.extend(uv);
+            let mut tris: Vec<[u32; 3]> = match primitive.mode() {
+                Mode::TriangleStrip => idx
+                    .windows(3)
+                    .enumerate()
+                    .map(|(k, t)| if k % 2 == 0 { [t[0], t[1], t[2]] } else { [t[1], t[0], t[2]] })
+                    .collect(),
+                Mode::TriangleFan => match idx.split_first() {
+                    Some((&first, rest)) => rest.windows(2).map(|t| [first, t[0], t[1]]).collect(),
+                    None => Vec::new(),
+                },
+                _ => {
+                    if !idx.len().is_multiple_of(3) {
+                        return Err(format_error("index count is not a multiple of 3", None));
+                    }
+                    idx.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect()
+                }
+            };
+            if mirrors {
+                tris.iter_mut().for_each(|t| t.swap(1, 2));
+            }
+            let base = u32::try_from(positions.len())
+                .map_err(|_| format_error("too many vertices", None))?;
+            match (nrm, &col) {
+                (Some(nrm), _) => {
+                    positions.extend(p);
+                    normals.extend(nrm);
+                    uvs.extend(uv);
+                    match col {
+                        Some(c) => colors.extend(c),
+                        None => all_colored = false,
+                    }
+                    triangles.extend(tris.iter().map(|t| t.map(|k| k.saturating_add(base))));
+                }
+                (None, _) => {
+                    // Flat normals: every corner its own vertex with its triangle's normal.
+                    for (f, t) in tris.iter().enumerate() {
+                        let [a, b, c] = t.map(|k| p[k as usize]);
+                        let normal = (b - a).cross(c - a).normalize_or(DVec3::Z);
+                        for &k in t {
+                            positions.push(p[k as usize]);
+                            normals.push(normal);
+                            uvs.push(uv[k as usize]);
+                            if let Some(c) = &col {
+                                colors.push(c[k as usize]);
+                            }
+                        }
+                        let first = base.saturating_add(u32::try_from(3 * f).unwrap_or(u32::MAX));
+                        triangles.push([first, first.saturating_add(1), first.saturating_add(2)]);
+                    }
+                    if col.is_none() {
+                        all_colored = false;
+                    }
+                }
+            }
         }
     }
     if triangles.is_empty() {

@@ -236,14 +236,15 @@ fn percent_encode(name: &str) -> String {
     out
 }
 
-/// Reads the triangle mesh in an OBJ, `.gltf` or `.glb` file (all objects, or all primitives
-/// of all meshes, concatenated; node transforms are ignored), undoing what the writers do:
-/// OBJ's t is flipped back and its sRGB colours made linear again.
+/// Reads the triangle mesh in an OBJ, `.gltf` or `.glb` file (all objects; or the triangle
+/// primitives of every mesh the glTF scene places, node transforms applied, flat normals where a
+/// primitive has none, as the glTF specification asks), undoing what the writers do: OBJ's t is
+/// flipped back and its sRGB colours made linear again.
 ///
 /// # Errors
 ///
 /// [`FileError::UnknownExtension`], [`FileError::Io`] (a missing file), [`FileError::Format`]
-/// (not parseable, no triangles, no normals or UVs), and the errors of
+/// (not parseable, no triangles), and the errors of
 /// [`TriangleMesh::try_new`] for what the file holds (normals not of unit length, indices out
 /// of range).
 pub fn load(path: impl AsRef<Path>) -> Result<TriangleMesh, Error> {

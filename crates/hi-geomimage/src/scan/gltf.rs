@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: MIT
+//! glTF 2.0 scans (`.gltf` with embedded or external buffers, and binary `.glb`): the positions
+//! of every mesh primitive that the scene places, in world space.
+//!
+//! The scene read is the default one, or, when there is none, every scene; each node's world
+//! transform (its own matrix or translation–rotation–scale, after its parents') is applied to the
+//! positions of its mesh, and normals, when every primitive has them, by the inverse transpose.
+//! A file with no scene at all has its meshes read as they are. Triangles come from
+//! `TRIANGLES`, `TRIANGLE_STRIP` and `TRIANGLE_FAN` primitives (indexed or not); `POINTS` and `LINES`
+//! primitives give points only. Malformed files are a [`ScanError`]: the `gltf` crate parses and
+//! validates the document, the GLB header is checked here first, and an accessor that claims
+//! more elements than the file could hold is refused before anything is allocated for it.
+
+use std::path::Path;
+
+use glam::{DMat3, DMat4, DVec3};
+
+use super::{Scan, ScanError, ScanFormat};
+
+/// An accessor may not claim more elements than this many per byte of the file (a sparse
+/// accessor with no buffer view is all zeros but for its few listed values).
+const ELEMENTS_PER_BYTE: usize = 4;
+
+/// Reads a glTF or GLB scan from its bytes; external buffers are resolved against `base`, and
+/// refused when there is none.
+pub(super) fn parse(
+    bytes: &[u8],
+    base: Option<&Path>,
+    format: ScanFormat,
+) -> Result<Scan, ScanError> {
+    let error = |message: String| ScanError::file(format, message);
+    if bytes.starts_with(b"glTF") {
+        check_glb_header(bytes).map_err(|m| error(m.to_owned()))?;
+    }
+    // The `gltf` crate validates; a panic inside it on hostile input must not escape.
+    let result = std::panic::catch_unwind(|| read(bytes, base));
+    match result {
+        Ok(Ok(raw)) => Ok(raw),
+        Ok(Err(message)) => Err(error(message)),
+        Err(_) => Err(error("malformed glTF (the parser gave up on it)".to_owned())),
+    }
+}
+
+/// The GLB header: magic, version 2, and a length that covers the header and no more than the
+/// bytes there are.
+fn check_glb_header(bytes: &[u8]) -> Result<(), &'static str> {
+    if bytes.len() < 12 {
+        return Err("the GLB header is cut short");
+    }
+    let word = |k: usize| u32::from_le_bytes([bytes[k], bytes[k + 1], bytes[k + 2], bytes[k + 3]]);
+    if word(4) != 2 {
+        return Err("only glTF 2 binaries are read");
+    }
+    let length = word(8) as usize;
+    if length < 12 || length > bytes.len() {
+        return Err("the GLB header's length does not match the file");
+    }
+    Ok(())
+}
+
+fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
+    let gltf = ::gltf::Gltf::from_slice(bytes).map_err(|e| format!("glTF: {e}"))?;
+    let ::gltf::Gltf { document, blob } = gltf;
+    let buffers = ::gltf::import_buffers(&document, base, blob).map_err(|e| match e {
+        ::gltf::Error::ExternalReferenceInSliceImport => {
+            "a buffer is in another file, which cannot be read from the bytes alone".to_owned()
+        }
+        other => format!("glTF buffers: {other}"),
+    })?;
+    let limit = ELEMENTS_PER_BYTE * bytes.len() + 1024;
+    // (mesh, world transform) pairs.
+    let mut instances: Vec<(::gltf::Mesh<'_>, DMat4)> = Vec::new();
+    let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
+        Some(s) => vec![s],
+        None => document.scenes().collect(),
+    };
+    if scenes.is_empty() {
+        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
+    }
+    for scene in scenes {
+        // Depth first in document order: the stack holds siblings last first.
+        let mut stack: Vec<(::gltf::Node<'_>, DMat4, usize)> =
+            scene.nodes().map(|n| (n, DMat4::IDENTITY, 0)).collect();
+        stack.reverse();
+        while let Some((node, parent, depth)) = stack.pop() {
+            // Validation rejects cycles; the depth cap guards the stack all the same.
+            if depth > 1024 {
+                return Err("the node hierarchy is more than 1024 deep".to_owned());
+            }
+            let local = node.transform().matrix().map(|c| c.map(f64::from));
+            let world = parent * DMat4::from_cols_array_2d(&local);
+            if let Some(mesh) = node.mesh() {
+                instances.push((mesh, world));
+            }
+            let first = stack.len();
+            stack.extend(node.children().map(|c| (c, world, depth + 1)));
+            stack[first..].reverse();
+        }
+    }
+    let (mut points, mut normals, mut faces): (Vec<DVec3>, Vec<DVec3>, Vec<Vec<u32>>) =
+        (Vec::new(), Vec::new(), Vec::new());
+    let mut all_normals = true;
+    for (mesh, world) in &instances {
+        let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
+        let flips = world.determinant() < 0.0;
+        for primitive in mesh.primitives() {
+            let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+            let Some(accessor) = primitive.get(&::gltf::Semantic::Positions) else { continue };
+            if accessor.count() > limit {
+                return Err(format!(
+                    "a POSITION accessor claims {} elements, more than the file can hold",
+                    accessor.count()
+                ));
+            }
+            let Some(positions) = reader.read_positions() else {
+                return Err("a POSITION accessor cannot be read".to_owned());
+            };
+            let base = u32::try_from(points.len()).map_err(|_| "too many points".to_owned())?;
+            let before = points.len();
+            points.extend(positions.map(|p| world.transform_point3(DVec3::from(p.map(f64::from)))));
+            let n = points.len() - before;
+            match (primitive.get(&::gltf::Semantic::Normals), reader.read_normals()) {
+                (Some(a), Some(ns)) if a.count() == n => {
+                    normals.extend(ns.map(|v| {
+                        (normal_matrix * DVec3::from(v.map(f64::from))).normalize_or_zero()
+                    }))
+                }
+                _ => all_normals = false,
+            }
+            let indices: Vec<u32> = match (primitive.indices(), reader.read_indices()) {
+                (Some(a), _) if a.count() > limit => {
+                    return Err(format!(
+                        "an index accessor claims {} elements, more than the file can hold",
+                        a.count()
+                    ));
+                }
+                (Some(_), Some(i)) => i.into_u32().collect(),
+                (Some(_), None) => return Err("an index accessor cannot be read".to_owned()),
+                (None, _) => {
+                    (0..u32::try_from(n).map_err(|_| "too many points".to_owned())?).collect()
+                }
+            };
+            if let Some(&k) = indices.iter().find(|&&k| k as usize >= n) {
+                return Err(format!("index {k} is beyond the primitive's {n} positions"));
+            }
+            let tri = |a: u32, b: u32, c: u32| {
+                let t = [a + base, b + base, c + base];
+                if flips { vec![t[0], t[2], t[1]] } else { t.to_vec() }
+            };
+            use ::gltf::mesh::Mode;
+            match primitive.mode() {
+                Mode::Triangles => {
+                    faces.extend(indices.chunks_exact(3).map(|t| tri(t[0], t[1], t[2])))
+                }
+                Mode::TriangleStrip => {
+                    faces.extend(indices.windows(3).enumerate().map(|(k, t)| {
+                        if k % 2 == 0 { tri(t[0], t[1], t[2]) } else { tri(t[1], t[0], t[2]) }
+                    }))
+                }
+                Mode::TriangleFan => {
+                    if let Some((&first, rest)) = indices.split_first() {
+                        faces.extend(rest.windows(2).map(|t| tri(first, t[0], t[1])));
+                    }
+                }
+                Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip => {}
+            }
+        }
+    }
+    let normals = (all_normals && normals.len() == points.len()).then_some(normals);
+    Ok(Scan::assemble(points, normals, &faces))
+}
