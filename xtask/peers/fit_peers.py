@@ -67,6 +67,16 @@ def distances(points_path, scan_path, out_path, n, seed):
     pts = np.loadtxt(points_path, ndmin=2)
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
     out = trimesh.load(out_path, force="mesh", process=False)
+    # trimesh's point-triangle test (trimesh.triangles.closest_point) compares barycentric
+    # terms against absolute tolerances, and misjudges triangles with edges near 1e-3 (a
+    # dense scan in metres): a point 2e-5 from a triangle's interior is put on its edge, 9e-5
+    # away. Distances relative to the diagonal do not depend on the scale, so everything is
+    # measured with the diagonal scaled to 100.
+    origin = pts.min(0)
+    scale = 100.0 / diag if diag > 0 else 1.0
+    pts = (pts - origin) * scale
+    out.vertices = (out.vertices - origin) * scale
+    diag = 100.0
     # Watertight as stored (every edge shared by exactly two faces, by vertex index), and after
     # welding coincident vertices (which a mesh with split seams needs).
     welded = out.copy()
@@ -77,6 +87,7 @@ def distances(points_path, scan_path, out_path, n, seed):
     samples, _ = trimesh.sample.sample_surface(out, n, seed=seed)
     scan = trimesh.load(scan_path, force="mesh", process=False) if scan_path != "-" else None
     if scan is not None and len(getattr(scan, "faces", [])) > 0:
+        scan.vertices = (scan.vertices - origin) * scale
         _, d_surf, _ = trimesh.proximity.closest_point(scan, samples)
     else:
         d_surf, _ = cKDTree(pts).query(samples)

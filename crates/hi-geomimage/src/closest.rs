@@ -72,19 +72,7 @@ impl TriangleBvh {
     /// assert_eq!(c.distance, 2.0);
     /// ```
     pub fn try_new(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Self, Error> {
-        if triangles.is_empty() {
-            return Err(Error::TooFewPoints { found: 0, needed: 1 });
-        }
-        if let Some(&k) = triangles.iter().flatten().find(|&&k| k as usize >= vertices.len()) {
-            return Err(Error::InvalidOption {
-                name: "triangle index",
-                value: f64::from(k),
-                expected: "below the vertex count",
-            });
-        }
-        if let Some(k) = vertices.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinite { what: format!("vertex {k}") });
-        }
+        check_mesh(vertices, triangles)?;
         let corners: Vec<[DVec3; 3]> =
             triangles.iter().map(|t| t.map(|k| vertices[k as usize])).collect();
         let centroids: Vec<DVec3> = corners.iter().map(|c| (c[0] + c[1] + c[2]) / 3.0).collect();
@@ -118,12 +106,29 @@ impl TriangleBvh {
     /// The closest point of the mesh to `p`.
     #[must_use]
     pub fn closest(&self, p: DVec3) -> Closest {
+        self.closest_from(p, None).0
+    }
+
+    /// The closest point of the mesh to `p`, the search bounded from the start by the distance
+    /// to triangle `hint` (in the leaves' order) when given: for a query near the previous one,
+    /// its closest triangle is close too, and most boxes are skipped at once. Returns the
+    /// closest point and its triangle in the leaves' order.
+    fn closest_from(&self, p: DVec3, hint: Option<u32>) -> (Closest, u32) {
         let mut best = Closest { point: p, distance: f64::INFINITY, triangle: 0 };
         let mut best2 = f64::INFINITY;
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
-        stack.push(0);
-        while let Some(n) = stack.pop() {
-            let node = self.nodes[n as usize];
+        let mut best_t = 0;
+        if let Some(t) = hint {
+            let [a, b, c] = self.corners[t as usize];
+            let q = closest_point_on_triangle(p, a, b, c);
+            best2 = q.distance_squared(p);
+            best = Closest { point: q, distance: 0.0, triangle: self.index[t as usize] };
+            best_t = t;
+        }
+        let mut stack = [0u32; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = self.nodes[stack[top] as usize];
             if box_distance2(p, node.lo, node.hi) >= best2 {
                 continue;
             }
@@ -136,6 +141,7 @@ impl TriangleBvh {
                         best2 = d2;
                         best =
                             Closest { point: q, distance: 0.0, triangle: self.index[t as usize] };
+                        best_t = t;
                     }
                 }
             } else {
@@ -148,25 +154,58 @@ impl TriangleBvh {
                     let c = self.nodes[r as usize];
                     box_distance2(p, c.lo, c.hi)
                 };
-                // The nearer child is visited first (pushed last).
-                if dl < dr {
-                    stack.push(r);
-                    stack.push(l);
-                } else {
-                    stack.push(l);
-                    stack.push(r);
+                // The nearer child is visited first (pushed last); a child beyond the best
+                // distance is not pushed at all. Each level splits on one of the 30 Morton bits
+                // or halves a range of equal codes (at most 30 times for 2³² triangles), so
+                // the tree is at most 60 levels deep and the stack, one node more per level,
+                // holds at most 61.
+                let (near, far, d_far) = if dl < dr { (l, r, dr) } else { (r, l, dl) };
+                if d_far < best2 {
+                    stack[top] = far;
+                    top += 1;
                 }
+                stack[top] = near;
+                top += 1;
             }
         }
         best.distance = best2.sqrt();
-        best
+        (best, best_t)
     }
 
-    /// The distance from each of `points` to the mesh, in parallel.
+    /// The distance from each of `points` to the mesh, in parallel. Consecutive points are
+    /// best near each other (a grid, a mesh's vertices in order): each query starts from the
+    /// previous one's triangle.
     #[must_use]
     pub fn distances(&self, points: &[DVec3]) -> Vec<f64> {
-        points.par_iter().with_min_len(256).map(|p| self.closest(*p).distance).collect()
+        let mut out = vec![0.0; points.len()];
+        out.par_chunks_mut(256).zip(points.par_chunks(256)).for_each(|(out, points)| {
+            let mut hint = None;
+            for (d, p) in out.iter_mut().zip(points) {
+                let (c, t) = self.closest_from(*p, hint);
+                *d = c.distance;
+                hint = Some(t);
+            }
+        });
+        out
     }
+}
+
+/// At least one triangle, every index in range, every vertex finite.
+fn check_mesh(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<(), Error> {
+    if triangles.is_empty() {
+        return Err(Error::TooFewPoints { found: 0, needed: 1 });
+    }
+    if let Some(&k) = triangles.iter().flatten().find(|&&k| k as usize >= vertices.len()) {
+        return Err(Error::InvalidOption {
+            name: "triangle index",
+            value: f64::from(k),
+            expected: "below the vertex count",
+        });
+    }
+    if let Some(k) = vertices.iter().position(|p| !p.is_finite()) {
+        return Err(Error::NonFinite { what: format!("vertex {k}") });
+    }
+    Ok(())
 }
 
 fn box_distance2(p: DVec3, lo: DVec3, hi: DVec3) -> f64 {
@@ -261,19 +300,7 @@ impl NearMesh {
     /// assert_eq!(near.distance(DVec3::new(0.25, 0.25, -3.0)), 3.0);
     /// ```
     pub fn try_new(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Self, Error> {
-        if triangles.is_empty() {
-            return Err(Error::TooFewPoints { found: 0, needed: 1 });
-        }
-        if let Some(&k) = triangles.iter().flatten().find(|&&k| k as usize >= vertices.len()) {
-            return Err(Error::InvalidOption {
-                name: "triangle index",
-                value: f64::from(k),
-                expected: "below the vertex count",
-            });
-        }
-        if let Some(k) = vertices.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinite { what: format!("vertex {k}") });
-        }
+        check_mesh(vertices, triangles)?;
         let tree = kiddo::ImmutableKdTree::new_from_slice(
             &vertices.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
         )

@@ -541,7 +541,8 @@ pub fn fit(
     let source = match source {
         Some(s) => s,
         None => {
-            let dense = if triangles.is_empty() {
+            // Shrink-wrapping works on the scan's own points; the rays want many.
+            let dense = if triangles.is_empty() || method == Method::ShrinkWrap {
                 points.clone()
             } else {
                 crate::sampling::densify(

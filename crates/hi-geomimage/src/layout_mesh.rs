@@ -145,7 +145,10 @@ pub fn layout_mesh(
     // compared by direction. In the plain octahedron every point of the square's border can.
     let key = |d: DVec3| d.to_array().map(|x| (x * 1e9).round() as i64);
     let mut vertex_of = vec![0u32; nr * nc];
-    let mut groups: Vec<Vec<usize>> = Vec::with_capacity(nr * nc);
+    // Per vertex: the sum of its grid points' values, how many, and the first one's sample.
+    let mut sum: Vec<DVec3> = Vec::with_capacity(nr * nc);
+    let mut count: Vec<u32> = Vec::with_capacity(nr * nc);
+    let mut first: Vec<usize> = Vec::with_capacity(nr * nc);
     let mut by_key: HashMap<[i64; 3], u32> = HashMap::new();
     for (a, &i) in row_range.iter().enumerate() {
         for (b, &j) in col_range.iter().enumerate() {
@@ -153,25 +156,27 @@ pub fn layout_mesh(
                 Layout::Octahedron => a == 0 || b == 0 || a + 1 == nr || b + 1 == nc,
                 _ => a == 0 || a + 1 == nr,
             };
+            let s = source(i, j);
+            let mut new_vertex = || {
+                sum.push(DVec3::ZERO);
+                count.push(0);
+                first.push(s);
+                (sum.len() - 1) as u32
+            };
             let g = if border {
-                *by_key.entry(key(direction(i, j))).or_insert_with(|| {
-                    groups.push(Vec::new());
-                    (groups.len() - 1) as u32
-                })
+                *by_key.entry(key(direction(i, j))).or_insert_with(new_vertex)
             } else if layout != Layout::Octahedron && b + 1 == nc {
                 vertex_of[a * nc] // the column that wraps around
             } else {
-                groups.push(Vec::new());
-                (groups.len() - 1) as u32
+                new_vertex()
             };
-            groups[g as usize].push(source(i, j));
+            sum[g as usize] += value[s];
+            count[g as usize] += 1;
             vertex_of[a * nc + b] = g;
         }
     }
-    let mut positions: Vec<DVec3> = groups
-        .iter()
-        .map(|g| g.iter().map(|&s| value[s]).sum::<DVec3>() / g.len() as f64)
-        .collect();
+    let mut positions: Vec<DVec3> =
+        sum.iter().zip(&count).map(|(s, &c)| *s / f64::from(c)).collect();
     let mut triangles = Vec::with_capacity(2 * (nr - 1) * (nc - 1));
     for a in 0..nr - 1 {
         for b in 0..nc - 1 {
@@ -221,7 +226,7 @@ pub fn layout_mesh(
     for (a, &i) in row_range.iter().enumerate() {
         for (b, &j) in col_range.iter().enumerate() {
             let g = vertex_of[a * nc + b] as usize;
-            if groups[g].first() == Some(&source(i, j)) {
+            if first[g] == source(i, j) {
                 uvs[g] = DVec2::new(i as f64 / rows as f64, j as f64 / cols as f64);
                 let (ti, tj) =
                     ((i as f64 / k as f64).round() as i64, (j as f64 / k as f64).round() as i64);

@@ -37,7 +37,7 @@ use crate::{Error, GeometryImage};
 pub enum Regularisation {
     /// None: the surface interpolates the texels (the thesis).
     Off,
-    /// Left to the caller: [`crate::fit`] makes it [`Regularisation::Noise`] with the scan's
+    /// Left to the caller: [`crate::fit()`] makes it [`Regularisation::Noise`] with the scan's
     /// estimated noise for images made from points and [`Regularisation::Off`] for images
     /// sampled from a mesh; [`regularise`] itself treats it as [`Regularisation::Gcv`].
     #[default]

@@ -22,7 +22,7 @@
 //! its mirror take their mean), so the result is a valid doubled image.
 //!
 //! The texels end on the surface of the points (the last step is a projection), so the harmonic
-//! surface through them is accurate where they are dense; [`crate::fit`] then regularises it to
+//! surface through them is accurate where they are dense; [`crate::fit()`] then regularises it to
 //! the points' noise level.
 
 use std::num::NonZero;

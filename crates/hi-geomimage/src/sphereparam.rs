@@ -435,23 +435,32 @@ impl Hierarchy {
         while remaining > 4 {
             self.level_starts.push(self.collapses.len());
             candidates.clear();
-            for v in 0..n as u32 {
-                if !self.alive[v as usize] {
-                    continue;
-                }
-                if dirty[v as usize] {
-                    self.ring(v, &mut ring_v);
+            // Each changed vertex's cheapest neighbour, in parallel (reads only).
+            let this = &*self;
+            let fresh: Vec<(u32, (f64, u32))> = (0..n as u32)
+                .into_par_iter()
+                .with_min_len(1024)
+                .filter(|&v| this.alive[v as usize] && dirty[v as usize])
+                .map_init(Vec::new, |ring, v| {
+                    this.ring(v, ring);
                     let mut b = (f64::INFINITY, u32::MAX);
-                    for &u in &ring_v {
-                        let c = pair_cost(&quadric, v, u, self.positions[u as usize]);
+                    for &u in ring.iter() {
+                        let c = pair_cost(&quadric, v, u, this.positions[u as usize]);
                         if c < b.0 || b.1 == u32::MAX {
                             b = (c, u);
                         }
                     }
-                    best[v as usize] = b;
-                    dirty[v as usize] = false;
+                    (v, b)
+                })
+                .collect();
+            for (v, b) in fresh {
+                best[v as usize] = b;
+                dirty[v as usize] = false;
+            }
+            for v in 0..n as u32 {
+                if self.alive[v as usize] {
+                    candidates.push((best[v as usize].0, v));
                 }
-                candidates.push((best[v as usize].0, v));
             }
             // The cheapest part of the candidates, as an independent set.
             let limit = candidates.len().div_ceil(2).max(1);
@@ -880,6 +889,39 @@ pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<S
     for level in (0..levels).rev() {
         let start = h.level_starts[level];
         let end = if level + 1 < levels { h.level_starts[level + 1] } else { collapses.len() };
+        if present > options.fine_vertices {
+            // A round's collapses were independent (no two of its vertices neighbours), so
+            // its splits can all be made first and their vertices placed and settled in
+            // parallel: each reads only its own ring, which no other vertex of the round is
+            // in — the same map as one split at a time.
+            let batch = &collapses[start..end];
+            for &c in batch.iter().rev() {
+                h.split(c);
+            }
+            let placed: Vec<Option<DVec3>> = batch
+                .par_iter()
+                .with_min_len(64)
+                .map(|c| place(&h, &sphere, c.v, c.u, true))
+                .collect();
+            for (c, x) in batch.iter().zip(placed) {
+                let Some(x) = x else {
+                    return Err(Error::Topology {
+                        what: "a vertex could not be placed on the sphere without a fold"
+                            .to_owned(),
+                    });
+                };
+                sphere[c.v as usize] = x;
+            }
+            let settled: Vec<Option<(DVec3, f64)>> =
+                batch.par_iter().with_min_len(64).map(|c| relax_vertex(&h, &sphere, c.v)).collect();
+            for (c, y) in batch.iter().zip(settled) {
+                if let Some((y, _)) = y {
+                    sphere[c.v as usize] = y;
+                }
+            }
+            present += batch.len();
+            continue;
+        }
         for &c in collapses[start..end].iter().rev() {
             h.split(c);
             let fine = present > options.fine_vertices;

@@ -9,6 +9,8 @@ use hi_geomimage::distance::{
     hausdorff,
 };
 
+mod common;
+
 /// A small deterministic generator (xorshift), so the test needs no dependency.
 struct Rng(u64);
 
@@ -115,62 +117,7 @@ fn points_near_a_cube() {
 #[test]
 fn an_icosphere_against_the_sphere() {
     // The icosahedron, each face split in 4 twice, vertices pushed onto the unit sphere.
-    let g = (1.0 + 5f64.sqrt()) / 2.0;
-    let mut v: Vec<DVec3> = [
-        (-1.0, g, 0.0),
-        (1.0, g, 0.0),
-        (-1.0, -g, 0.0),
-        (1.0, -g, 0.0),
-        (0.0, -1.0, g),
-        (0.0, 1.0, g),
-        (0.0, -1.0, -g),
-        (0.0, 1.0, -g),
-        (g, 0.0, -1.0),
-        (g, 0.0, 1.0),
-        (-g, 0.0, -1.0),
-        (-g, 0.0, 1.0),
-    ]
-    .iter()
-    .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
-    .collect();
-    let mut t: Vec<[u32; 3]> = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    for _ in 0..2 {
-        let mut next = Vec::new();
-        let mut mid = std::collections::HashMap::new();
-        let mut midpoint = |a: u32, b: u32, v: &mut Vec<DVec3>| {
-            *mid.entry((a.min(b), a.max(b))).or_insert_with(|| {
-                v.push(((v[a as usize] + v[b as usize]) / 2.0).normalize());
-                u32::try_from(v.len() - 1).unwrap()
-            })
-        };
-        for [a, b, c] in t {
-            let (ab, bc, ca) =
-                (midpoint(a, b, &mut v), midpoint(b, c, &mut v), midpoint(c, a, &mut v));
-            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
-        }
-        t = next;
-    }
+    let (v, t) = common::icosphere(2, 1.0);
     let h = hausdorff(&hi_surface::sphere(1.0), &v, &t, 32).unwrap();
     // The vertices lie on the sphere: only the sampling error of the surface remains.
     assert!(h.scan_to_surface.max < sag(), "{}", h.scan_to_surface.max);

@@ -140,6 +140,10 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     ) -> Result<GridSamples<P>, Error> {
         check_sizes(n_u, n_v)?;
         let (m, n) = (self.m(), self.n());
+        if (n_u, n_v, p, q) == (m, n, 0, 0) {
+            // The surface interpolates its grid (eq. 5.1): the samples are the grid itself.
+            return Ok(GridSamples { n_u, n_v, values: self.points().to_vec() });
+        }
         if n_u > 2 * (m / 2) && n_v > 2 * (n / 2) {
             // No frequency folds: the 2-D spectrum, padded.
             let values = crate::fft2::upsample(self.points(), (m, n), (n_u, n_v), (p, q));

@@ -20,7 +20,7 @@
 //! so), watertight output, and the whole command at least 5× faster.
 //!
 //! It also renders each model three ways (the scan, Poisson's surface, ours) into
-//! `docs/figures/fit-vs-poisson.png`, with the table in `docs/figures/fit-vs-poisson.md`.
+//! `docs/fit-vs-poisson.png`, shown under the table in `docs/performance.md`.
 
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -341,20 +341,15 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
     } else {
         let _ = write!(s, "\nTargets missed: {}.\n", misses.join("; "));
     }
-    // The figure and its table beside the gallery.
+    // The figure beside the other plots of the report.
     if !panels.is_empty() {
         let figure = compose(&panels)?;
-        let out = root.join("docs/figures/fit-vs-poisson.png");
-        std::fs::write(&out, figure)?;
-        let mut md = String::from(
-            "# `hi fit` against screened Poisson\n\n\
-             Each row: the scan (points drawn as small beads when it has no faces), screened \
-             Poisson's surface, and ours, all from the same viewpoint. Measured by `cargo xtask \
-             bench fit`; see `docs/performance.md` for how.\n\n![fit vs Poisson](fit-vs-poisson.png)\n",
+        std::fs::write(root.join("docs/fit-vs-poisson.png"), figure)?;
+        s.push_str(
+            "\nEach row: the scan (points drawn as small beads when it has no faces), screened \
+             Poisson's surface, and ours, from the same viewpoint.\n\n\
+             ![each model as scan, Poisson, ours](fit-vs-poisson.png)\n",
         );
-        md.push_str(&s);
-        std::fs::write(root.join("docs/figures/fit-vs-poisson.md"), md)?;
-        let _ = write!(s, "\n![each model as scan, Poisson, ours](figures/fit-vs-poisson.png)\n");
     }
     Ok((s, headlines))
 }
