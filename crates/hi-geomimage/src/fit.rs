@@ -890,16 +890,14 @@ fn fit_errors(
     };
     let n_vertices = mesh.positions().len();
     // A centroid is on a fill if any of its corners is.
-    let texel_of = |s: usize| -> Vec<u32> {
-        if s < n_vertices {
-            vec![m.texel[s]]
-        } else {
-            tri[2 * (s - n_vertices)].iter().map(|&k| m.texel[k as usize]).collect()
-        }
-    };
     let on_fill = |s: usize| {
         filled.is_some_and(|f| {
-            texel_of(s).iter().any(|&t| f.get(t as usize).copied().unwrap_or(false))
+            let is_filled = |v: usize| f.get(m.texel[v] as usize).copied().unwrap_or(false);
+            if s < n_vertices {
+                is_filled(s)
+            } else {
+                tri[2 * (s - n_vertices)].iter().any(|&k| is_filled(k as usize))
+            }
         })
     };
     let (mut kept, mut filled_max) = (Vec::with_capacity(back.len()), 0.0f64);
