@@ -13,7 +13,8 @@
 
 use std::path::Path;
 
-use glam::{DMat3, DMat4, DVec3};
+use glam::{DMat3, DVec3};
+use hi_surface::export::primitive_triangles;
 
 use super::{Scan, ScanError, ScanFormat};
 
@@ -68,35 +69,7 @@ fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
         other => format!("glTF buffers: {other}"),
     })?;
     let limit = ELEMENTS_PER_BYTE * bytes.len() + 1024;
-    // (mesh, world transform) pairs.
-    let mut instances: Vec<(::gltf::Mesh<'_>, DMat4)> = Vec::new();
-    let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
-        Some(s) => vec![s],
-        None => document.scenes().collect(),
-    };
-    if scenes.is_empty() {
-        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
-    }
-    for scene in scenes {
-        // Depth first in document order: the stack holds siblings last first.
-        let mut stack: Vec<(::gltf::Node<'_>, DMat4, usize)> =
-            scene.nodes().map(|n| (n, DMat4::IDENTITY, 0)).collect();
-        stack.reverse();
-        while let Some((node, parent, depth)) = stack.pop() {
-            // Validation rejects cycles; the depth cap guards the stack all the same.
-            if depth > 1024 {
-                return Err("the node hierarchy is more than 1024 deep".to_owned());
-            }
-            let local = node.transform().matrix().map(|c| c.map(f64::from));
-            let world = parent * DMat4::from_cols_array_2d(&local);
-            if let Some(mesh) = node.mesh() {
-                instances.push((mesh, world));
-            }
-            let first = stack.len();
-            stack.extend(node.children().map(|c| (c, world, depth + 1)));
-            stack[first..].reverse();
-        }
-    }
+    let instances = hi_surface::export::placed_meshes(&document)?;
     let (mut points, mut normals, mut faces): (Vec<DVec3>, Vec<DVec3>, Vec<Vec<u32>>) =
         (Vec::new(), Vec::new(), Vec::new());
     let mut all_normals = true;
@@ -143,26 +116,9 @@ fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
             if let Some(&k) = indices.iter().find(|&&k| k as usize >= n) {
                 return Err(format!("index {k} is beyond the primitive's {n} positions"));
             }
-            let tri = |a: u32, b: u32, c: u32| {
-                let t = [a + base, b + base, c + base];
-                if flips { vec![t[0], t[2], t[1]] } else { t.to_vec() }
-            };
-            use ::gltf::mesh::Mode;
-            match primitive.mode() {
-                Mode::Triangles => {
-                    faces.extend(indices.chunks_exact(3).map(|t| tri(t[0], t[1], t[2])))
-                }
-                Mode::TriangleStrip => {
-                    faces.extend(indices.windows(3).enumerate().map(|(k, t)| {
-                        if k % 2 == 0 { tri(t[0], t[1], t[2]) } else { tri(t[1], t[0], t[2]) }
-                    }))
-                }
-                Mode::TriangleFan => {
-                    if let Some((&first, rest)) = indices.split_first() {
-                        faces.extend(rest.windows(2).map(|t| tri(first, t[0], t[1])));
-                    }
-                }
-                Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip => {}
+            for t in primitive_triangles(primitive.mode(), &indices).unwrap_or_default() {
+                let t = t.map(|k| k + base);
+                faces.push(if flips { vec![t[0], t[2], t[1]] } else { t.to_vec() });
             }
         }
     }

@@ -269,6 +269,98 @@ fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
     }
 }
 
+/// The meshes a glTF document draws, each with its node's world transform (glTF 2.0 §3.5.3:
+/// the product of the transforms from the root down), depth first in document order: the
+/// default scene's, or every scene's when none is the default, or every mesh untransformed
+/// when the document has no scene at all. Shared by the mesh loader and the scan reader of
+/// `hi-geomimage`.
+///
+/// # Errors
+///
+/// A message when the node hierarchy is deeper than 1024 (the glTF validator rejects cycles;
+/// the cap guards the stack all the same).
+///
+/// # Examples
+///
+/// ```
+/// let gltf = gltf::Gltf::from_slice(br#"{"asset":{"version":"2.0"},"scene":0,
+///     "scenes":[{"nodes":[0]}],"nodes":[{"translation":[1,2,3],"children":[1]},{"mesh":0}],
+///     "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+///     "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",
+///         "min":[0,0,0],"max":[0,0,0]}],
+///     "bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36}]}"#)
+///     .unwrap();
+/// let placed = hi_surface::export::placed_meshes(&gltf.document).unwrap();
+/// assert_eq!(placed.len(), 1);
+/// assert_eq!(placed[0].1.w_axis.truncate(), glam::DVec3::new(1.0, 2.0, 3.0));
+/// ```
+pub fn placed_meshes(
+    document: &::gltf::Document,
+) -> Result<Vec<(::gltf::Mesh<'_>, DMat4)>, String> {
+    let mut instances = Vec::new();
+    let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
+        Some(s) => vec![s],
+        None => document.scenes().collect(),
+    };
+    if scenes.is_empty() {
+        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
+    }
+    for scene in scenes {
+        // Depth first in document order: the stack holds siblings last first.
+        let mut stack: Vec<(::gltf::Node<'_>, DMat4, usize)> =
+            scene.nodes().map(|n| (n, DMat4::IDENTITY, 0)).collect();
+        stack.reverse();
+        while let Some((node, parent, depth)) = stack.pop() {
+            if depth > 1024 {
+                return Err("the node hierarchy is more than 1024 deep".to_owned());
+            }
+            let local = node.transform().matrix().map(|c| c.map(f64::from));
+            let world = parent * DMat4::from_cols_array_2d(&local);
+            if let Some(mesh) = node.mesh() {
+                instances.push((mesh, world));
+            }
+            let first = stack.len();
+            stack.extend(node.children().map(|c| (c, world, depth + 1)));
+            stack[first..].reverse();
+        }
+    }
+    Ok(instances)
+}
+
+/// The triangles of a primitive drawn in `mode` from `indices` (glTF 2.0 §3.7.2.1):
+/// `TRIANGLES` by threes (a remainder is left out), `TRIANGLE_STRIP` with every other
+/// triangle's first two corners swapped so that all wind alike, `TRIANGLE_FAN` around the first
+/// index; `None` for points and lines.
+///
+/// # Examples
+///
+/// ```
+/// use gltf::mesh::Mode;
+/// use hi_surface::export::primitive_triangles;
+///
+/// let strip = primitive_triangles(Mode::TriangleStrip, &[0, 1, 2, 3]).unwrap();
+/// assert_eq!(strip, [[0, 1, 2], [2, 1, 3]]);
+/// assert_eq!(primitive_triangles(Mode::TriangleFan, &[0, 1, 2, 3]).unwrap(), [[0, 1, 2], [0, 2, 3]]);
+/// assert_eq!(primitive_triangles(Mode::Lines, &[0, 1]), None);
+/// ```
+#[must_use]
+pub fn primitive_triangles(mode: ::gltf::mesh::Mode, indices: &[u32]) -> Option<Vec<[u32; 3]>> {
+    use ::gltf::mesh::Mode;
+    Some(match mode {
+        Mode::Triangles => indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
+        Mode::TriangleStrip => indices
+            .windows(3)
+            .enumerate()
+            .map(|(k, t)| if k % 2 == 0 { [t[0], t[1], t[2]] } else { [t[1], t[0], t[2]] })
+            .collect(),
+        Mode::TriangleFan => match indices.split_first() {
+            Some((&first, rest)) => rest.windows(2).map(|t| [first, t[0], t[1]]).collect(),
+            None => Vec::new(),
+        },
+        Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip => return None,
+    })
+}
+
 /// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives (`TRIANGLES`,
 /// `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh the scene places, concatenated in world space.
 ///
@@ -286,33 +378,7 @@ pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
     let (mut positions, mut normals, mut uvs, mut colors, mut triangles) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut all_colored = true;
-    let mut instances: Vec<(::gltf::Mesh<'_>, DMat4)> = Vec::new();
-    let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
-        Some(s) => vec![s],
-        None => document.scenes().collect(),
-    };
-    if scenes.is_empty() {
-        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
-    }
-    for scene in scenes {
-        // Depth first in document order: the stack holds siblings last first.
-        let mut stack: Vec<(::gltf::Node<'_>, DMat4, usize)> =
-            scene.nodes().map(|n| (n, DMat4::IDENTITY, 0)).collect();
-        stack.reverse();
-        while let Some((node, parent, depth)) = stack.pop() {
-            if depth > 1024 {
-                return Err(format_error("the node hierarchy is more than 1024 deep", Some(path)));
-            }
-            let local = node.transform().matrix().map(|c| c.map(f64::from));
-            let world = parent * DMat4::from_cols_array_2d(&local);
-            if let Some(mesh) = node.mesh() {
-                instances.push((mesh, world));
-            }
-            let first = stack.len();
-            stack.extend(node.children().map(|c| (c, world, depth + 1)));
-            stack[first..].reverse();
-        }
-    }
+    let instances = placed_meshes(&document).map_err(|e| format_error(e, Some(path)))?;
     for (mesh, world) in &instances {
         let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
         let mirrors = world.determinant() < 0.0;
@@ -371,23 +437,10 @@ pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
             if idx.iter().any(|&k| k as usize >= n) {
                 return Err(format_error("an index is beyond the primitive's vertices", None));
             }
-            let mut tris: Vec<[u32; 3]> = match primitive.mode() {
-                Mode::TriangleStrip => idx
-                    .windows(3)
-                    .enumerate()
-                    .map(|(k, t)| if k % 2 == 0 { [t[0], t[1], t[2]] } else { [t[1], t[0], t[2]] })
-                    .collect(),
-                Mode::TriangleFan => match idx.split_first() {
-                    Some((&first, rest)) => rest.windows(2).map(|t| [first, t[0], t[1]]).collect(),
-                    None => Vec::new(),
-                },
-                _ => {
-                    if !idx.len().is_multiple_of(3) {
-                        return Err(format_error("index count is not a multiple of 3", None));
-                    }
-                    idx.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect()
-                }
-            };
+            if primitive.mode() == Mode::Triangles && !idx.len().is_multiple_of(3) {
+                return Err(format_error("index count is not a multiple of 3", None));
+            }
+            let mut tris = primitive_triangles(primitive.mode(), &idx).unwrap_or_default();
             if mirrors {
                 tris.iter_mut().for_each(|t| t.swap(1, 2));
             }

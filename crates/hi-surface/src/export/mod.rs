@@ -31,7 +31,7 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-pub use self::gltf::{write_glb, write_gltf};
+pub use self::gltf::{placed_meshes, primitive_triangles, write_glb, write_gltf};
 pub use self::obj::write_obj;
 use crate::{Error, TriangleMesh};
 
