@@ -42,12 +42,13 @@ use crate::{Error, GeometryImage, Smoothing};
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Method {
     /// The spherical parameterisation for a mesh that closes to genus 0 with one dominant part,
-    /// rays from the centre otherwise.
+    /// the shrink-wrap otherwise.
     #[default]
     Auto,
     /// A spherical parameterisation of the scan's mesh.
     Mesh,
-    /// The radial image shrink-wrapped onto the points' surface ([`crate::shrinkwrap`]).
+    /// A surface wrapped onto the points ([`crate::shrinkwrap`]): the zero set of their signed
+    /// distance parameterised over the sphere, its texels projected onto them.
     ShrinkWrap,
     /// Rays from a centre, the distance along each averaged over the points about it
     /// (algorithm 2).
@@ -583,6 +584,13 @@ pub fn fit(
         }
     };
     timed("geometry image", &mut stages, start);
+    if let SourceImage::ShrinkWrap(w) = &source {
+        reason.push_str(if w.implicit_start {
+            " (from the zero set of their signed distance, parameterised over the sphere)"
+        } else {
+            " (from the rays: the zero set of their signed distance is not one surface of genus 0)"
+        });
+    }
     if source.hole_fraction() > options.max_hole_fraction || source.hole_fraction() >= 1.0 {
         return Err(Error::MostlyHoles { fraction: source.hole_fraction() });
     }

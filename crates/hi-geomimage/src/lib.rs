@@ -13,7 +13,8 @@
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS, glTF, GLB | §5.8 | [`scan`] |
 //! | closing a scan mesh to one genus-0 surface (weld, clean, orient, fill holes) | | [`repair`] |
 //! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
-//! | shrink-wrapping a point set: the radial image projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
+//! | shrink-wrapping a point set: the zero set of its signed distance, parameterised, projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
+//! | the zero set of a function sampled on a grid (surface nets) | | [`surfacenets`] |
 //! | noise estimate and spectral regularisation (discrepancy principle, GCV) | beyond §5.4 | [`noise`], [`regularise`] |
 //! | the closed, outward mesh of a fitted surface in every layout | §5.3 | [`layout_mesh`] |
 //! | closest points on triangles (BVH) and near a mesh (kd-tree) | | [`closest`] |
@@ -42,6 +43,7 @@ pub mod sections;
 pub mod shrinkwrap;
 pub mod sphereparam;
 pub mod spherical;
+pub mod surfacenets;
 
 pub use error::Error;
 pub use filter::Smoothing;

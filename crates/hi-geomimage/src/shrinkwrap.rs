@@ -1,25 +1,36 @@
 // SPDX-License-Identifier: MIT
 //! A geometry image of a point set, shrink-wrapped onto its surface (beyond §5.3, whose texels
-//! are distances along rays from a centre).
+//! are distances along rays from a centre, and fail wherever a ray meets the surface twice).
 //!
-//! Algorithm 2's radial image is the start: it follows the outermost shell where a ray meets the
-//! surface more than once, and its texels are averages of distances. Then, a few times over,
-//! every texel moves:
-//! 1. onto the point set's surface near it: about every point a quadric height field is
-//!    fitted once to its 16 nearest points (weighted least squares, over the plane across the
-//!    point's normal — the file's when it has one, else the least principal axis of the
-//!    neighbours), and a texel goes to the Gaussian-weighted blend of its projections onto the
-//!    patches of its three nearest points;
-//! 2. along the surface towards the mean of its four grid neighbours (only the tangential part
-//!    of that move), so that texels spread over the surface instead of piling up where the
-//!    radial image crowded them — the move that lets them slide around ears and into
-//!    concavities the rays never saw.
+//! About every point a quadric height field is fitted once to its 16 nearest points (weighted
+//! least squares, over the plane across the point's normal: the file's when it has one, else
+//! the least principal axis of the neighbours, oriented consistently along a minimum spanning
+//! tree of the neighbour graph as Hoppe et al. 1992 do). These patches are the point set's
+//! surface. Then:
 //!
-//! A texel whose nearest point is farther than a few point spacings has no data there: it moves
-//! halfway between its neighbours' mean and its projection (a membrane shrinking onto the
-//! points, which closes over thin parts the rays missed and spans true holes), and if it is
-//! still that far at the end it is flagged [`ShrinkWrapImage::filled`]. The doubled layouts' half-turn symmetry is restored after every step (each texel and
-//! its mirror take their mean), so the result is a valid doubled image.
+//! 1. **The start**: the zero set of the signed height over the nearest point's patch (Hoppe et
+//!    al.'s signed distance), meshed by [`crate::surfacenets`] on a grid of 1.5 point spacings,
+//!    evaluated only near the points and only where a node's foot on the tangent plane is near
+//!    its point, so that the surface ends at the rims of the scan's holes. That mesh is closed
+//!    by [`crate::repair::close_mesh`] (its holes bridged) and parameterised over the sphere
+//!    ([`crate::sphereparam`]); the image is sampled from the parameterisation, so its texels
+//!    spread over every arm, ear and concavity whatever the rays would have seen.
+//! 2. **The projection**: every texel moves onto the point set's surface: to the
+//!    Gaussian-weighted blend of its projections onto the patches of its three nearest points
+//!    that face its way (its normal across the grid's two directions), a move of at most 1.5
+//!    point spacings (a longer one would cross to the other side of a part thinner than the
+//!    grid). Texels on the patches bridging holes, and texels farther than four point spacings
+//!    from every point, stay where they are and are flagged [`ShrinkWrapImage::filled`].
+//!
+//! Should the start fail (the zero set not of genus 0, or the points too sparse for a grid),
+//! the radial image of algorithm 2 is wrapped instead, a few times over: each texel projected
+//! as above (without the bound), then moved along the surface towards the mean of its four grid
+//! neighbours (only the tangential part of that move) so that texels spread instead of piling up
+//! where the rays crowded them; a texel with no point near moves halfway between its
+//! neighbours' mean and its projection (a membrane shrinking onto the points). That coarse wrap
+//! is parameterised over the sphere like the start above, and projected again. The doubled
+//! layouts' half-turn symmetry is restored after every step (each texel and its mirror take
+//! their mean), so the result is a valid doubled image.
 //!
 //! The texels end on the surface of the points (the last step is a projection), so the harmonic
 //! surface through them is accurate where they are dense; [`crate::fit()`] then regularises it to
@@ -43,9 +54,10 @@ pub struct ShrinkWrapOptions {
     pub rows: usize,
     /// Columns. Default 256.
     pub cols: usize,
-    /// The centre of the radial start; `None` for the mean of the points.
+    /// The centre of the rays (the diagnostic [`ShrinkWrapImage::non_star_fraction`] and the
+    /// fallback's start); `None` for the mean of the points.
     pub centre: Option<DVec3>,
-    /// Rounds of projection and spreading. Default 4.
+    /// Rounds of projection and spreading of the fallback's coarse wrap. Default 4.
     pub iterations: usize,
     /// Points in each local quadric fit. Default 16.
     pub neighbours: usize,
@@ -69,16 +81,20 @@ impl Default for ShrinkWrapOptions {
 pub struct ShrinkWrapImage {
     /// The image: texels on the point set's surface, or bridging holes in it.
     pub image: GeometryImage,
-    /// Texels with no point near them (row-major), following their neighbours only.
+    /// Texels with no point near them or on a patch bridging a hole of the scan (row-major).
     pub filled: Vec<bool>,
     /// The fraction of the distinct texels flagged in [`ShrinkWrapImage::filled`].
     pub filled_fraction: f64,
-    /// The fraction of the radial start's rays that met several shells.
+    /// The fraction of the rays from the centre (a coarse radial image) that met several shells.
     pub non_star_fraction: f64,
-    /// Whether the final image was sampled from a spherical parameterisation of the coarse
-    /// wrap (else from rays, when the coarse wrap could not be parameterised).
+    /// Whether the wrap started from the zero set of the points' signed distance (else from
+    /// the rays, when that surface could not be closed to genus 0 and parameterised).
+    pub implicit_start: bool,
+    /// Whether the final image was sampled from a spherical parameterisation (of the implicit
+    /// surface or of the coarse wrap; else from rays, when neither could be parameterised).
     pub reparameterised: bool,
-    /// The root mean square distance the texels moved from the radial start.
+    /// The root mean square distance the texels moved from the image first sampled (of the
+    /// implicit surface or the coarse wrap) to the end.
     pub rms_move: f64,
 }
 
@@ -194,6 +210,83 @@ impl Patches {
         (if w > 0.0 { q / w } else { x }, nearest)
     }
 
+    /// Orients the patches consistently (Hoppe et al. 1992, §3.3): along a minimum spanning
+    /// tree of the graph joining each point to its `k` nearest, weighted by 1 − |nᵢ·nⱼ| so that
+    /// the orientation passes first between nearly parallel planes, each patch turned to agree
+    /// with the one it is reached from; each connected part starts from its highest point,
+    /// whose normal points up (the top of a closed surface faces +z).
+    fn orient_by_tree(&mut self, points: &[DVec3], k: usize) {
+        use std::cmp::Reverse;
+        use std::collections::BinaryHeap;
+        let n = points.len();
+        let k = NonZero::new(k + 1).unwrap_or(NonZero::<usize>::MIN);
+        let near: Vec<Vec<u32>> = points
+            .par_iter()
+            .map(|p| {
+                self.tree
+                    .query(&p.to_array())
+                    .nearest_n::<SquaredEuclidean<f64>>(k)
+                    .execute()
+                    .iter()
+                    .map(|q| q.item)
+                    .collect()
+            })
+            .collect();
+        // The graph, symmetric.
+        let mut adjacency: Vec<Vec<u32>> = near.clone();
+        for (i, list) in near.iter().enumerate() {
+            for &j in list {
+                if j as usize != i {
+                    adjacency[j as usize].push(i as u32);
+                }
+            }
+        }
+        let mut done = vec![false; n];
+        let mut by_height: Vec<u32> = (0..n as u32).collect();
+        by_height.sort_by(|&a, &b| points[b as usize].z.total_cmp(&points[a as usize].z));
+        // Weights in [0, 1]: their bits order as the numbers do.
+        let mut heap: BinaryHeap<Reverse<(u64, u32, u32)>> = BinaryHeap::new();
+        for root in by_height {
+            if done[root as usize] {
+                continue;
+            }
+            if self.patches[root as usize].normal.z < 0.0 {
+                self.patches[root as usize].flip();
+            }
+            heap.push(Reverse((0, root, root)));
+            while let Some(Reverse((_, from, to))) = heap.pop() {
+                if done[to as usize] {
+                    continue;
+                }
+                done[to as usize] = true;
+                let reference = self.patches[from as usize].normal;
+                if self.patches[to as usize].normal.dot(reference) < 0.0 {
+                    self.patches[to as usize].flip();
+                }
+                let normal = self.patches[to as usize].normal;
+                for &next in &adjacency[to as usize] {
+                    if !done[next as usize] {
+                        let w = 1.0 - normal.dot(self.patches[next as usize].normal).abs();
+                        heap.push(Reverse((w.max(0.0).to_bits(), to, next)));
+                    }
+                }
+            }
+        }
+    }
+
+    /// The signed height of x over the patch of its nearest point (negative inside, once the
+    /// patches face out), and the distance from that point to x's foot on its tangent plane.
+    fn signed(&self, x: DVec3) -> (f64, f64) {
+        let nearest =
+            self.tree.query(&x.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
+        let patch = &self.patches[nearest.item as usize];
+        let d = x - patch.origin;
+        let (u, v) = (d.dot(patch.e1), d.dot(patch.e2));
+        let c = &patch.c;
+        let h = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
+        (d.dot(patch.normal) - h, (d - patch.normal * d.dot(patch.normal)).length())
+    }
+
     /// Turns each patch to face as the nearest of `samples` (points of a surface wrapped round
     /// the point set, with their outward `normals`) does.
     fn orient(&mut self, samples: &[DVec3], normals: &[DVec3]) {
@@ -299,43 +392,61 @@ pub fn shrink_wrap(
         return Err(Error::TooFewPoints { found: points.len(), needed: neighbours.max(8) });
     }
     crate::image::check_resolution(rows, cols)?;
-    let patches = Patches::new(points, normals, neighbours)?;
-    // The coarse wrap, then its mesh parameterised: the texels of the final image spread over
-    // the wrapped surface evenly, however the rays crowded them.
+    let mut patches = Patches::new(points, normals, neighbours)?;
+    if normals.is_none() {
+        patches.orient_by_tree(points, TREE_NEIGHBOURS);
+    }
+    // The rays from the centre, for the diagnostic and as the fallback's start.
     let (cr, cc) = (rows.min(COARSE), cols.min(COARSE));
     let start = spherical_image(
         points,
         &SphericalOptions { layout, rows: cr, cols: cc, centre, ..SphericalOptions::default() },
     )?;
-    let mut patches = patches;
-    let (coarse, _) = wrap(&patches, start.image.texels().to_vec(), layout, cr, cc, iterations);
-    // Every patch faces out as the wrapped surface does: a point set's fitted normals have no
-    // sign of their own, and a file's may point in.
-    patches.orient(&coarse, &grid_normals(&coarse, cr, cc));
-    let resampled = GeometryImage::try_new(cr, cc, coarse)
-        .and_then(|image| image.surface())
-        .and_then(|surface| crate::layout_mesh::layout_mesh(&surface, layout, 1))
-        .and_then(|m| crate::repair::close_mesh(m.mesh.positions(), m.mesh.triangles()))
+    let param_options = crate::sphereparam::SphereParamOptions::default();
+    // The start: the zero set of the points' signed distance, parameterised over the sphere.
+    let implicit = implicit_surface(&patches, points)
         .and_then(|closed| {
-            crate::sphereparam::parameterise(
-                &closed,
-                &crate::sphereparam::SphereParamOptions::default(),
-            )
+            patches
+                .orient(&closed.positions, &vertex_normals(&closed.positions, &closed.triangles));
+            crate::sphereparam::parameterise(&closed, &param_options)
         })
         .and_then(|param| param.image(layout, rows, cols));
-    let (first, reparameterised) = match resampled {
-        Ok(image) => (image.image.texels().to_vec(), true),
-        // Should the coarse surface fold too much to be parameterised, the rays at full size.
-        Err(_) => {
-            let full = spherical_image(
-                points,
-                &SphericalOptions { layout, rows, cols, centre, ..SphericalOptions::default() },
-            )?;
-            (full.image.texels().to_vec(), false)
+    let (first, reparameterised, implicit_start, bridged) = if let Ok(image) = implicit {
+        (image.image.texels().to_vec(), true, true, Some(image.filled))
+    } else {
+        // Else the coarse radial image wrapped, then its mesh parameterised: the texels of the
+        // final image spread over the wrapped surface evenly, however the rays crowded them.
+        let (coarse, _) =
+            wrap(&patches, start.image.texels().to_vec(), None, layout, cr, cc, iterations);
+        // Every patch faces out as the wrapped surface does.
+        patches.orient(&coarse, &grid_normals(&coarse, cr, cc));
+        let resampled = GeometryImage::try_new(cr, cc, coarse)
+            .and_then(|image| image.surface())
+            .and_then(|surface| crate::layout_mesh::layout_mesh(&surface, layout, 1))
+            .and_then(|m| crate::repair::close_mesh(m.mesh.positions(), m.mesh.triangles()))
+            .and_then(|closed| crate::sphereparam::parameterise(&closed, &param_options))
+            .and_then(|param| param.image(layout, rows, cols));
+        match resampled {
+            Ok(image) => (image.image.texels().to_vec(), true, false, None),
+            // Should the coarse surface fold too much to be parameterised, the rays at full
+            // size.
+            Err(_) => {
+                let full = spherical_image(
+                    points,
+                    &SphericalOptions { layout, rows, cols, centre, ..SphericalOptions::default() },
+                )?;
+                (full.image.texels().to_vec(), false, false, None)
+            }
         }
     };
-    let rounds = if reparameterised { FINE_ROUNDS } else { iterations };
-    let (x, filled) = wrap(&patches, first.clone(), layout, rows, cols, rounds);
+    let rounds = if implicit_start {
+        0
+    } else if reparameterised {
+        FINE_ROUNDS
+    } else {
+        iterations
+    };
+    let (x, filled) = wrap(&patches, first.clone(), bridged.as_deref(), layout, rows, cols, rounds);
     // Each direction once, for the fractions.
     let distinct = match layout {
         Layout::Sphere | Layout::FlatOctahedron => rows / 2 * cols,
@@ -351,9 +462,109 @@ pub fn shrink_wrap(
         filled,
         filled_fraction,
         non_star_fraction: start.non_star_fraction,
+        implicit_start,
         reparameterised,
         rms_move,
     })
+}
+
+/// Neighbours joined to each point in the graph [`Patches::orient_by_tree`] spans.
+const TREE_NEIGHBOURS: usize = 8;
+
+/// The implicit surface's grid spacing, in point spacings.
+const CELL: f64 = 1.5;
+
+/// Grid cells about each point where the signed distance is evaluated.
+const BAND: usize = 1;
+
+/// How far, in point spacings, a texel of the implicit start may move onto the points'
+/// patches.
+const MAX_MOVE: f64 = 1.5;
+
+/// How far, in point spacings, a grid node's foot on the nearest point's tangent plane may lie
+/// from that point for the signed distance to count.
+const REACH: f64 = 2.0;
+
+/// The zero set of the points' signed distance (Hoppe et al. 1992): the height over the patch
+/// of the nearest point, evaluated on a grid of [`CELL`] point spacings within [`BAND`] cells of
+/// a point, and only where the node's foot on that patch's tangent plane is within [`REACH`]
+/// point spacings of the point (so that the zero set ends at the rims of the scan's holes
+/// rather than running on along tangent planes). Its surface net, its holes closed and the
+/// whole made genus 0 by [`crate::repair::close_mesh`].
+fn implicit_surface(
+    patches: &Patches,
+    points: &[DVec3],
+) -> Result<crate::repair::ClosedMesh, Error> {
+    let h = CELL * patches.spacing;
+    let (lo, hi) = points
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let pad = (BAND + 2) as f64 * h;
+    let origin = lo - DVec3::splat(pad);
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "checked below")]
+    let dims = ((hi - lo + DVec3::splat(2.0 * pad)) / h)
+        .ceil()
+        .to_array()
+        .map(|d| if d.is_finite() && d < 1e6 { d as usize + 1 } else { usize::MAX / 4 });
+    let nodes = dims.iter().try_fold(1usize, |a, &d| a.checked_mul(d)).unwrap_or(usize::MAX);
+    if nodes > crate::surfacenets::MAX_NODES {
+        return Err(Error::Degenerate { what: "the points are too sparse for their extent" });
+    }
+    let [nx, ny, _] = dims;
+    let index = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
+    let mut band = vec![false; nodes];
+    let b = BAND as isize;
+    for p in points {
+        #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
+        let c = ((*p - origin) / h).floor().to_array().map(|x| x as isize);
+        for dk in -b..=b + 1 {
+            for dj in -b..=b + 1 {
+                for di in -b..=b + 1 {
+                    // The padding keeps these positive.
+                    let at = [c[0] + di, c[1] + dj, c[2] + dk].map(isize::unsigned_abs);
+                    band[index(at[0], at[1], at[2])] = true;
+                }
+            }
+        }
+    }
+    let node_at = |t: usize| {
+        let (i, j, k) = (t % nx, t / nx % ny, t / nx / ny);
+        origin + DVec3::new(i as f64, j as f64, k as f64) * h
+    };
+    // Known within the band, where the node's foot on the nearest point's tangent plane is near
+    // that point (Hoppe's test: the zero set stops where the points do, at the rims of holes).
+    let reach = REACH * patches.spacing;
+    let values: Vec<f64> = band
+        .par_iter()
+        .enumerate()
+        .map(|(t, &in_band)| {
+            if !in_band {
+                return f64::NAN;
+            }
+            let (f, off) = patches.signed(node_at(t));
+            if off <= reach { f } else { f64::NAN }
+        })
+        .collect();
+    let (positions, triangles) = crate::surfacenets::surface_nets(&crate::surfacenets::Grid {
+        origin,
+        spacing: h,
+        dims,
+        values: &values,
+    })?;
+    crate::repair::close_mesh(&positions, &triangles)
+}
+
+/// Area-weighted vertex normals of a triangle mesh.
+fn vertex_normals(positions: &[DVec3], triangles: &[[u32; 3]]) -> Vec<DVec3> {
+    let mut normals = vec![DVec3::ZERO; positions.len()];
+    for t in triangles {
+        let [a, b, c] = t.map(|k| positions[k as usize]);
+        let n = (b - a).cross(c - a);
+        for &k in t {
+            normals[k as usize] += n;
+        }
+    }
+    normals.iter().map(|n| n.normalize_or_zero()).collect()
 }
 
 /// The normal of each texel of a `rows × cols` image, across the grid's directions to its
@@ -380,10 +591,12 @@ const FINE_ROUNDS: usize = 2;
 
 /// `rounds` of projection and spreading of the texels `x` of a `rows × cols` image (the last
 /// step a projection), with the doubled layouts' symmetry kept; the texels and which of them
-/// had no point near.
+/// had no point near. Texels flagged in `bridged` (on a patch closing a hole of the scan) have
+/// no data either, whatever points are near the hole's rim.
 fn wrap(
     patches: &Patches,
     mut x: Vec<DVec3>,
+    bridged: Option<&[bool]>,
     layout: Layout,
     rows: usize,
     cols: usize,
@@ -414,6 +627,16 @@ fn wrap(
             }
         }
     };
+    // Each texel's representative: itself, or its mirror where that comes first (the doubled
+    // layouts look along each direction twice; each is projected once).
+    let owner: Vec<usize> = (0..rows * cols)
+        .map(|t| {
+            mirror.as_ref().map_or(t, |m| {
+                let (a, b) = m(t / cols, t % cols);
+                t.min(a * cols + b)
+            })
+        })
+        .collect();
     let mut filled = vec![false; rows * cols];
     let neighbours_of = |t: usize| {
         let (i, j) = (t / cols, t % cols);
@@ -428,11 +651,30 @@ fn wrap(
         // Onto the surface, each texel onto the sheet facing its way (its normal across the
         // grid's two directions, outward in every layout).
         let normals = grid_normals(&x, rows, cols);
-        let projected: Vec<(DVec3, f64)> =
-            x.par_iter().zip(&normals).map(|(p, n)| patches.project(*p, *n)).collect();
+        let mut projected: Vec<(DVec3, f64)> = (0..rows * cols)
+            .into_par_iter()
+            .map(|t| {
+                if owner[t] != t {
+                    // Its mirror's, below.
+                    return (x[t], 0.0);
+                }
+                let (p, n) = (x[t], normals[t]);
+                let (q, d) = patches.project(p, n);
+                // A texel of the implicit start lies within a grid cell of its sheet: a longer
+                // move went to another sheet (of a part thinner than the cell) and is refused.
+                if bridged.is_some() && q.distance(p) > MAX_MOVE * patches.spacing {
+                    (p, d)
+                } else {
+                    (q, d)
+                }
+            })
+            .collect();
+        for t in 0..rows * cols {
+            projected[t] = projected[owner[t]];
+        }
         let mut target = vec![DVec3::ZERO; rows * cols];
         for (t, (q, d)) in projected.iter().enumerate() {
-            filled[t] = *d > reach;
+            filled[t] = *d > reach || bridged.is_some_and(|b| b[t]);
             target[t] = *q;
             if !filled[t] {
                 x[t] = *q;

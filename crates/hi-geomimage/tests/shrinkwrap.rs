@@ -123,3 +123,122 @@ fn bad_input_is_named() {
     let odd = ShrinkWrapOptions { rows: 31, ..options };
     assert!(shrink_wrap(&points, None, &odd).is_err());
 }
+
+/// The signed distance to a capsule of radius `r` about the segment a–b.
+fn capsule(x: DVec3, a: DVec3, b: DVec3, r: f64) -> f64 {
+    let t = ((x - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+    x.distance(a + (b - a) * t) - r
+}
+
+/// Points about `spacing` apart on the capsule a–b of radius r (its cylinder, and the caps
+/// where `caps` says), keeping those for which `keep` holds.
+fn capsule_points(
+    a: DVec3,
+    b: DVec3,
+    r: f64,
+    spacing: f64,
+    caps: [bool; 2],
+    keep: &dyn Fn(DVec3) -> bool,
+) -> Vec<DVec3> {
+    let axis = (b - a).normalize();
+    let (e1, e2) = axis.any_orthonormal_pair();
+    let mut out = Vec::new();
+    let around = (2.0 * PI * r / spacing).ceil() as usize;
+    let along = ((b - a).length() / spacing).ceil() as usize;
+    for i in 0..=along {
+        for j in 0..around {
+            let phi = 2.0 * PI * (j as f64 + 0.5 * (i % 2) as f64) / around as f64;
+            out.push(
+                a + (b - a) * (i as f64 / along as f64) + (e1 * phi.cos() + e2 * phi.sin()) * r,
+            );
+        }
+    }
+    // The caps: Fibonacci points on the hemispheres.
+    let n = (2.0 * PI * r * r / (spacing * spacing)).ceil() as usize;
+    for (end, sign, wanted) in [(a, -1.0, caps[0]), (b, 1.0, caps[1])] {
+        if !wanted {
+            continue;
+        }
+        for k in 0..n {
+            let z = (k as f64 + 0.5) / n as f64;
+            let s = (1.0 - z * z).sqrt();
+            let phi = k as f64 * PI * (3.0 - 5f64.sqrt());
+            out.push(end + (axis * sign * z + (e1 * phi.cos() + e2 * phi.sin()) * s) * r);
+        }
+    }
+    out.retain(|p| keep(*p));
+    out
+}
+
+#[test]
+fn a_u_shape_is_wrapped_into_the_gap_between_its_arms() {
+    // Two upright arms joined by a bar at the bottom: from the points' mean, in the gap between
+    // the arms, every ray meets the shape from outside, and the rays alone would bridge the gap.
+    let r = 0.3;
+    let segments = [
+        (DVec3::new(-1.0, 0.0, 0.0), DVec3::new(-1.0, 0.0, 2.0)),
+        (DVec3::new(1.0, 0.0, 0.0), DVec3::new(1.0, 0.0, 2.0)),
+        (DVec3::new(-1.0, 0.0, 0.0), DVec3::new(1.0, 0.0, 0.0)),
+    ];
+    let distance = |x: DVec3| {
+        segments.iter().map(|(a, b)| capsule(x, *a, *b, r)).fold(f64::INFINITY, f64::min)
+    };
+    let mut points = Vec::new();
+    for (k, (a, b)) in segments.iter().enumerate() {
+        let others = |x: DVec3| {
+            segments
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != k)
+                .all(|(_, (c, d))| capsule(x, *c, *d, r) > -1e-9)
+        };
+        // The arms' lower caps are inside the bar or on its end caps.
+        let caps = [k == 2, true];
+        points.extend(capsule_points(*a, *b, r, 0.03, caps, &others));
+    }
+    let options = ShrinkWrapOptions { rows: 128, cols: 128, ..ShrinkWrapOptions::default() };
+    let wrapped = shrink_wrap(&points, None, &options).unwrap();
+    assert!(wrapped.implicit_start, "the zero set of the signed distance is one sphere");
+    assert!(wrapped.non_star_fraction > 0.05, "{}", wrapped.non_star_fraction);
+    // The whole surface (both halves of the doubled image), sampled at twice the texels: on
+    // the U, away from the grooves where the arms meet the bar (where |distance| is a bound).
+    let surface = wrapped.image.surface().unwrap();
+    let samples = surface.sample_uniform(2 * surface.m(), 2 * surface.n(), 0, 0).unwrap().values;
+    let error =
+        samples.iter().filter(|x| x.z > r + 0.2).map(|x| distance(*x).abs()).fold(0.0, f64::max);
+    eprintln!(
+        "U: {} points, surface within {error:.4}, filled {}",
+        points.len(),
+        wrapped.filled_fraction
+    );
+    // Texels are about 0.04 apart on the U, and on it; a bridge across the gap would be 0.7
+    // off.
+    assert!(error < 0.01, "{error}");
+    assert_eq!(wrapped.filled_fraction, 0.0);
+}
+
+#[test]
+fn a_tube_open_at_the_bottom_is_bridged_and_the_bridge_flagged() {
+    let (a, b, r) = (DVec3::ZERO, DVec3::new(0.0, 0.0, 2.0), 0.5);
+    let points = capsule_points(a, b, r, 0.03, [false, true], &|_| true);
+    let options = ShrinkWrapOptions { rows: 128, cols: 128, ..ShrinkWrapOptions::default() };
+    let wrapped = shrink_wrap(&points, None, &options).unwrap();
+    assert!(wrapped.implicit_start);
+    // The bottom disc is a fifth of the area (π r² of 2π r·2 + 2π r² + π r²).
+    assert!(
+        wrapped.filled_fraction > 0.05 && wrapped.filled_fraction < 0.2,
+        "{}",
+        wrapped.filled_fraction
+    );
+    let mut worst = 0.0f64;
+    for (x, filled) in wrapped.image.texels().iter().zip(&wrapped.filled) {
+        if *filled {
+            // On the bridge: across the opening, at the height of its rim.
+            assert!(x.z.abs() < 0.1 && x.truncate().length() < r + 0.05, "{x}");
+        } else {
+            worst = worst.max(capsule(*x, a, b, r).abs());
+        }
+    }
+    eprintln!("tube: surface within {worst:.4} where the points are");
+    assert!(worst < 0.01, "{worst}");
+}

@@ -22,10 +22,15 @@ pub(crate) const TABLES: &[Table] = &[Table {
         harmonic interpolation at 4× the image, the whole fit and its error, for built-in scans and the real models \
         of `shared/data/models` when present), beside screened Poisson reconstruction and scipy's resampling. \
         Timings change from run to run, so they are in the benchmark report rather than on this page, which is \
-        regenerated bit for bit.",
+        regenerated bit for bit. The same run fits the shared models with `hi fit` and with screened Poisson \
+        as whole commands and measures both with trimesh ([the table](../performance.md#against-screened-poisson-whole-commands)); \
+        each model as scan, Poisson and ours, from that run: \
+        ![Each model as the scan, screened Poisson's surface and ours](../fit-vs-poisson.png)",
     make: || {
         Ok("| table | where |\n|---|---|\n| Table 5.1, regenerated | \
-            [docs/performance.md](../performance.md#table-51-regenerated) |\n"
+            [docs/performance.md](../performance.md#table-51-regenerated) |\n\
+            | Against screened Poisson, whole commands | \
+            [docs/performance.md](../performance.md#against-screened-poisson-whole-commands) |\n"
             .to_owned())
     },
 }];

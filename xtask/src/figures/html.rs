@@ -31,8 +31,9 @@ fn escape(text: &str) -> String {
     s
 }
 
-/// The inline markdown of the captions and tables as HTML: `code`, **bold**, *emphasis* and
-/// `[label](target)` links, everything else escaped.
+/// The inline markdown of the captions and tables as HTML: `code`, **bold**, *emphasis*,
+/// `[label](target)` links and `![alt](image)` images (linked to themselves, at full width),
+/// everything else escaped.
 fn inline(text: &str) -> String {
     let mut out = String::new();
     let mut rest = text;
@@ -59,6 +60,21 @@ fn inline(text: &str) -> String {
                 if let Some((em, end)) = closing("*").filter(|(em, _)| !em.is_empty()) {
                     let _ = write!(out, "<em>{}</em>", inline(em));
                     rest = &after[end + 1..];
+                    continue;
+                }
+            }
+            '!' if after.starts_with('[') => {
+                if let Some((alt, end)) =
+                    after[1..].find("](").map(|end| (&after[1..=end], end + 1))
+                    && let Some(close) = after[end + 2..].find(')')
+                {
+                    let src = escape(&after[end + 2..end + 2 + close]);
+                    let _ = write!(
+                        out,
+                        "<a href=\"{src}\"><img class=\"wide\" src=\"{src}\" alt=\"{}\"></a>",
+                        escape(alt)
+                    );
+                    rest = &after[end + 2 + close + 1..];
                     continue;
                 }
             }
@@ -107,6 +123,7 @@ section{border-top:1px solid #ccc;padding:0.5rem 0}\
 figure{display:inline-block;margin:0.5rem;vertical-align:top;text-align:center}\
 figure img{max-width:34rem;max-height:26rem;border:1px solid #eee}\
 figcaption{font-size:0.9rem;color:#444}\
+img.wide{max-width:100%;border:1px solid #eee}\
 table{border-collapse:collapse;font-size:0.85rem;margin:0.5rem 0}\
 td,th{border:1px solid #ccc;padding:0.2rem 0.4rem}\
 code{background:#f4f4f4;padding:0 0.2rem}\
@@ -207,6 +224,10 @@ mod tests {
         assert_eq!(inline("[t](u.md#a) & c"), "<a href=\"u.md#a\">t</a> &amp; c");
         assert_eq!(inline("2 * 3 = 6"), "2 * 3 = 6");
         assert_eq!(
+            inline("see ![a & b](x.png) here"),
+            "see <a href=\"x.png\"><img class=\"wide\" src=\"x.png\" alt=\"a &amp; b\"></a> here"
+        );
+        assert_eq!(
             table("| a | b |\n|---|---|\n| `1` | 2 |\n"),
             "<table>\n<tr><th>a</th><th>b</th></tr>\n<tr><td><code>1</code></td><td>2</td></tr>\n</table>\n"
         );
@@ -231,7 +252,9 @@ mod tests {
         let html = std::fs::read_to_string(&page).expect("the gallery is committed");
         let images = html.matches("<img ").count();
         let panels: usize = super::super::registry().iter().map(|f| f.panels.len()).sum();
-        assert_eq!(images, panels, "one image per panel (a model's is its render)");
+        let in_tables: usize =
+            super::super::tables().iter().map(|t| t.about.matches("![").count()).sum();
+        assert_eq!(images, panels + in_tables, "one image per panel (a model's is its render)");
         let profile =
             std::env::temp_dir().join(format!("harmonic-chromium-{}", std::process::id()));
         let output = Command::new(browser)
