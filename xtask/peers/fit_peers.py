@@ -60,6 +60,7 @@ def poisson(src, dst, depth):
 def distances(points_path, scan_path, out_path, n, seed):
     try:
         import numpy as np
+        import rtree  # noqa: F401  (trimesh's closest-point queries need it)
         import trimesh
         from scipy.spatial import cKDTree
     except ImportError:

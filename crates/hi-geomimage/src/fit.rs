@@ -682,13 +682,20 @@ pub fn fit(
                     .map(|t| f[(t / sn * rows / sm) * cols + (t % sn) * cols / sn])
                     .collect::<Vec<bool>>()
             });
-            let (e, m) = measure_fit(
+            // An image of the mesh's parameterisation left as it was sampled has its texels on
+            // the scan's triangles.
+            let texels_on_scan = method == Method::Mesh
+                && regularisation.lambda == 0.0
+                && options.smoothing.is_none()
+                && reduction.is_none();
+            let (e, m) = measure_fit_with(
                 &surface,
                 options.layout,
                 filled.as_deref(),
                 &points,
                 &triangles,
                 measure,
+                texels_on_scan,
             )?;
             errors = Some(e.scan_to_surface.clone());
             both_ways = Some(e);
@@ -814,6 +821,19 @@ pub fn measure_fit(
     triangles: &[[u32; 3]],
     measure: ErrorMeasure,
 ) -> Result<(FitErrors, LayoutMesh), Error> {
+    measure_fit_with(surface, layout, filled, points, triangles, measure, false)
+}
+
+/// [`measure_fit`], told whether the surface's texels are points of the scan's triangles.
+fn measure_fit_with(
+    surface: &HarmonicSurface<DVec3>,
+    layout: Layout,
+    filled: Option<&[bool]>,
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    measure: ErrorMeasure,
+    texels_on_scan: bool,
+) -> Result<(FitErrors, LayoutMesh), Error> {
     let per_texel = match measure {
         ErrorMeasure::Off => {
             return Err(Error::InvalidOption {
@@ -846,13 +866,17 @@ pub fn measure_fit(
         points,
         triangles,
         measure == ErrorMeasure::Exact,
+        texels_on_scan,
     )?;
     Ok((e, m))
 }
 
 /// Both-way distances between the surface's closed mesh `m` and the scan (`points`, and its
 /// `triangles` if any); samples on `filled` texels (of the surface's grid) are summarised
-/// apart. With `exact`, each scan point's distance is refined onto the surface itself.
+/// apart. With `exact`, each scan point's distance is refined onto the surface itself. With
+/// `texels_on_scan`, the surface's texels are points of the scan's triangles (an unsmoothed
+/// image of a mesh's parameterisation).
+#[expect(clippy::too_many_arguments, reason = "one private call site each")]
 fn fit_errors(
     surface: &HarmonicSurface<DVec3>,
     m: &LayoutMesh,
@@ -861,6 +885,7 @@ fn fit_errors(
     points: &[DVec3],
     triangles: &[[u32; 3]],
     exact: bool,
+    texels_on_scan: bool,
 ) -> Result<FitErrors, Error> {
     let mesh = &m.mesh;
     let diagonal = bounding_diagonal(points);
@@ -889,14 +914,28 @@ fn fit_errors(
         .map(|t| t.iter().map(|&k| mesh.positions()[k as usize]).sum::<DVec3>() / 3.0)
         .collect();
     let samples: Vec<DVec3> = mesh.positions().iter().copied().chain(centroids).collect();
-    let back: Vec<f64> = if triangles.is_empty() {
-        crate::distance::nearest_point_distances(&samples, points)?
+    let n_vertices = mesh.positions().len();
+    // Vertices at texels that were sampled on the scan's own triangles are points of the scan:
+    // their distance is 0 (to rounding) and is not queried.
+    let on_scan = |v: usize| {
+        texels_on_scan
+            && per_texel == 1
+            && v < n_vertices
+            && !filled.is_some_and(|f| f.get(m.texel[v] as usize).copied().unwrap_or(false))
+    };
+    let queried: Vec<DVec3> =
+        samples.iter().enumerate().filter(|(v, _)| !on_scan(*v)).map(|(_, x)| *x).collect();
+    let mut measured = if triangles.is_empty() {
+        crate::distance::nearest_point_distances(&queried, points)?
     } else {
         // The scan's triangles can be long and thin (scanners leave slivers at folds and
         // holes), which the nearest-vertex query misjudges: this side is always exact.
-        TriangleBvh::try_new(points, triangles)?.distances(&samples)
-    };
-    let n_vertices = mesh.positions().len();
+        TriangleBvh::try_new(points, triangles)?.distances(&queried)
+    }
+    .into_iter();
+    let back: Vec<f64> = (0..samples.len())
+        .map(|v| if on_scan(v) { 0.0 } else { measured.next().unwrap_or(0.0) })
+        .collect();
     // A centroid is on a fill if any of its corners is.
     let on_fill = |s: usize| {
         filled.is_some_and(|f| {

@@ -60,7 +60,7 @@ pub struct SphereParamOptions {
     /// Relaxation sweeps over every vertex each time the mesh has grown by half during the
     /// refinement, while it has at most [`SphereParamOptions::fine_vertices`]. Default 4.
     pub sweeps: usize,
-    /// Sweeps over every vertex of the finished map. Default 2.
+    /// Sweeps over every vertex of the finished map. Default 1.
     pub final_sweeps: usize,
     /// Above this many vertices the refinement only places vertices and relaxes each once
     /// (the coarse levels have shaped the map by then; the final sweeps adjust it locally).
@@ -70,7 +70,7 @@ pub struct SphereParamOptions {
 
 impl Default for SphereParamOptions {
     fn default() -> Self {
-        Self { sweeps: 4, final_sweeps: 2, fine_vertices: 10_000 }
+        Self { sweeps: 4, final_sweeps: 1, fine_vertices: 10_000 }
     }
 }
 
@@ -417,7 +417,6 @@ impl Hierarchy {
         };
         let mut remaining = n;
         let mut ring_v = Vec::new();
-        let mut ring_u = Vec::new();
         let mut scratch = Vec::new();
         let mut strict = true;
         // Each vertex's cheapest neighbour to merge into, kept until its ring changes.
@@ -508,11 +507,11 @@ impl Hierarchy {
                 }
                 self.collapse(v, u);
                 // u's quadric changed: every neighbour's cost of merging into it did too.
-                self.ring(u, &mut ring_u);
-                for &k in &ring_u {
-                    dirty[k as usize] = true;
+                for &f in &self.vertex_faces[u as usize] {
+                    for &k in &self.faces[f as usize] {
+                        dirty[k as usize] = true;
+                    }
                 }
-                dirty[u as usize] = true;
                 remaining -= 1;
                 done += 1;
             }
@@ -654,6 +653,10 @@ fn relax_vertex(h: &Hierarchy, sphere: &[DVec3], v: u32) -> Option<(DVec3, f64)>
 /// Sweeps of stretch relaxation over the alive vertices: Gauss–Seidel by colour classes (no
 /// two neighbours share a colour, so each class moves in parallel, every vertex against its
 /// neighbours' latest positions).
+/// Above this many vertices a round's splits are placed together, in parallel (below it, one
+/// at a time, each settled with the vertex it came from).
+const BATCH_ABOVE: usize = 2000;
+
 fn relax(h: &Hierarchy, sphere: &mut [DVec3], sweeps: usize) {
     if sweeps == 0 {
         return;
@@ -889,11 +892,13 @@ pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<S
     for level in (0..levels).rev() {
         let start = h.level_starts[level];
         let end = if level + 1 < levels { h.level_starts[level + 1] } else { collapses.len() };
-        if present > options.fine_vertices {
+        if present > BATCH_ABOVE {
             // A round's collapses were independent (no two of its vertices neighbours), so
             // its splits can all be made first and their vertices placed and settled in
             // parallel: each reads only its own ring, which no other vertex of the round is
-            // in — the same map as one split at a time.
+            // in — the same map as one split at a time (the vertices they came from settle in
+            // the sweeps below).
+            let fine = present > options.fine_vertices;
             let batch = &collapses[start..end];
             for &c in batch.iter().rev() {
                 h.split(c);
@@ -901,7 +906,7 @@ pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<S
             let placed: Vec<Option<DVec3>> = batch
                 .par_iter()
                 .with_min_len(64)
-                .map(|c| place(&h, &sphere, c.v, c.u, true))
+                .map(|c| place(&h, &sphere, c.v, c.u, fine))
                 .collect();
             for (c, x) in batch.iter().zip(placed) {
                 let Some(x) = x else {
@@ -912,36 +917,45 @@ pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<S
                 };
                 sphere[c.v as usize] = x;
             }
-            let settled: Vec<Option<(DVec3, f64)>> =
-                batch.par_iter().with_min_len(64).map(|c| relax_vertex(&h, &sphere, c.v)).collect();
-            for (c, y) in batch.iter().zip(settled) {
-                if let Some((y, _)) = y {
-                    sphere[c.v as usize] = y;
-                }
-            }
-            present += batch.len();
-            continue;
-        }
-        for &c in collapses[start..end].iter().rev() {
-            h.split(c);
-            let fine = present > options.fine_vertices;
-            let Some(x) = place(&h, &sphere, c.v, c.u, fine) else {
-                return Err(Error::Topology {
-                    what: "a vertex could not be placed on the sphere without a fold".to_owned(),
-                });
-            };
-            sphere[c.v as usize] = x;
-            // Settle the new vertex and the one it came from at once, so that no triangle
-            // stays a sliver for the next splits to subdivide.
-            let (iters, which) = if fine { (1, 1) } else { (3, 2) };
-            for _ in 0..iters {
-                for &w in &[c.v, c.u][..which] {
-                    if let Some((y, _)) = relax_vertex(&h, &sphere, w) {
-                        sphere[w as usize] = y;
+            for _ in 0..if fine { 1 } else { 3 } {
+                let settled: Vec<Option<(DVec3, f64)>> = batch
+                    .par_iter()
+                    .with_min_len(64)
+                    .map(|c| relax_vertex(&h, &sphere, c.v))
+                    .collect();
+                for (c, y) in batch.iter().zip(settled) {
+                    if let Some((y, _)) = y {
+                        sphere[c.v as usize] = y;
                     }
                 }
             }
-            present += 1;
+            present += batch.len();
+            if fine {
+                continue;
+            }
+        } else {
+            for &c in collapses[start..end].iter().rev() {
+                h.split(c);
+                let fine = present > options.fine_vertices;
+                let Some(x) = place(&h, &sphere, c.v, c.u, fine) else {
+                    return Err(Error::Topology {
+                        what: "a vertex could not be placed on the sphere without a fold"
+                            .to_owned(),
+                    });
+                };
+                sphere[c.v as usize] = x;
+                // Settle the new vertex and the one it came from at once, so that no triangle
+                // stays a sliver for the next splits to subdivide.
+                let (iters, which) = if fine { (1, 1) } else { (3, 2) };
+                for _ in 0..iters {
+                    for &w in &[c.v, c.u][..which] {
+                        if let Some((y, _)) = relax_vertex(&h, &sphere, w) {
+                            sphere[w as usize] = y;
+                        }
+                    }
+                }
+                present += 1;
+            }
         }
         if 2 * present >= 3 * last_relaxed {
             let sweeps = if present > options.fine_vertices { 0 } else { options.sweeps };

@@ -211,6 +211,21 @@ fn fitting_real_meshes_by_their_parameterisation() {
         assert!(mean < 1e-3 && max < 2e-2, "{}: scan→surface {mean:e} {max:e}", path.display());
         assert!(back_max < 2e-2, "{}: surface→scan {back_max:e}", path.display());
         assert_eq!(e.unreached_fraction, 0.0, "{}", path.display());
+        // The fit takes the vertices at its texels to be on the scan (they were sampled on
+        // its triangles) without measuring them; measured, they are, to rounding.
+        let (points, triangles) = (&scan.points, &scan.triangles);
+        let (all, _) = fit::measure_fit(
+            &result.surface,
+            result.layout,
+            None,
+            points,
+            triangles,
+            ErrorMeasure::Fast,
+        )
+        .unwrap();
+        let [all_mean, _, all_max] = all.surface_to_scan.relative();
+        assert!((all_max - back_max).abs() < 1e-12, "{all_max:e} against {back_max:e}");
+        assert!((all_mean - back_mean).abs() < 1e-12, "{all_mean:e} against {back_mean:e}");
     }
 }
 

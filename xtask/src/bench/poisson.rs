@@ -193,7 +193,7 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
         ) {
             Ok((t, _)) => t,
             Err(e) if e.to_string().contains("not installed") => {
-                bail!("pymeshlab is not installed: `pip install pymeshlab trimesh scipy`")
+                bail!("pymeshlab is not installed: `pip install pymeshlab trimesh rtree scipy`")
             }
             Err(e) => return Err(e),
         };
@@ -211,6 +211,9 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
                     "1",
                 ])
                 .output()?;
+            if o.status.code() == Some(3) {
+                bail!("trimesh is not installed: `pip install trimesh rtree scipy`");
+            }
             if !o.status.success() {
                 bail!(
                     "trimesh on {}: {}",
