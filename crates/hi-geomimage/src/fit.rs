@@ -889,21 +889,23 @@ fn fit_errors(
 ) -> Result<FitErrors, Error> {
     let mesh = &m.mesh;
     let diagonal = bounding_diagonal(points);
-    let per_point: Vec<f64> = if exact {
-        use rayon::prelude::*;
-        let bvh = TriangleBvh::try_new(mesh.positions(), mesh.triangles())?;
-        let grid = HermiteGrid::of(surface, per_texel)?;
-        points
-            .par_iter()
-            .map(|x| {
-                let c = bvh.closest(*x);
-                project(&grid, mesh, *x, c.triangle, c.point)
-            })
-            .collect()
-    } else {
-        NearMesh::try_new(mesh.positions(), mesh.triangles())?.distances(points)
+    // Scan → surface.
+    let forward = || -> Result<Vec<f64>, Error> {
+        Ok(if exact {
+            use rayon::prelude::*;
+            let bvh = TriangleBvh::try_new(mesh.positions(), mesh.triangles())?;
+            let grid = HermiteGrid::of(surface, per_texel)?;
+            points
+                .par_iter()
+                .map(|x| {
+                    let c = bvh.closest(*x);
+                    project(&grid, mesh, *x, c.triangle, c.point)
+                })
+                .collect()
+        } else {
+            NearMesh::try_new(mesh.positions(), mesh.triangles())?.distances(points)
+        })
     };
-    let scan_to_surface = Distances::from_values(per_point, diagonal);
     // Surface → scan: every vertex of the mesh, and the centroid of every other triangle (one
     // per grid quad, away from the texels: for the mesh of a parameterisation, the vertices at
     // the texels lie on the scan).
@@ -925,14 +927,19 @@ fn fit_errors(
     };
     let queried: Vec<DVec3> =
         samples.iter().enumerate().filter(|(v, _)| !on_scan(*v)).map(|(_, x)| *x).collect();
-    let mut measured = if triangles.is_empty() {
-        crate::distance::nearest_point_distances(&queried, points)?
-    } else {
-        // The scan's triangles can be long and thin (scanners leave slivers at folds and
-        // holes), which the nearest-vertex query misjudges: this side is always exact.
-        TriangleBvh::try_new(points, triangles)?.distances(&queried)
-    }
-    .into_iter();
+    let backward = || -> Result<Vec<f64>, Error> {
+        if triangles.is_empty() {
+            crate::distance::nearest_point_distances(&queried, points)
+        } else {
+            // The scan's triangles can be long and thin (scanners leave slivers at folds and
+            // holes), which the nearest-vertex query misjudges: this side is always exact.
+            Ok(TriangleBvh::try_new(points, triangles)?.distances(&queried))
+        }
+    };
+    // Both ways at once (each builds its search structure on one thread).
+    let (per_point, measured) = rayon::join(forward, backward);
+    let scan_to_surface = Distances::from_values(per_point?, diagonal);
+    let mut measured = measured?.into_iter();
     let back: Vec<f64> = (0..samples.len())
         .map(|v| if on_scan(v) { 0.0 } else { measured.next().unwrap_or(0.0) })
         .collect();

@@ -24,6 +24,7 @@
 //! 8. the whole mesh is flipped if its signed volume is negative, so that it winds outward.
 
 use glam::DVec3;
+use rayon::slice::ParallelSliceMut;
 
 use crate::Error;
 
@@ -185,7 +186,8 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
                 (s, f)
             })
             .collect();
-        seen.sort_unstable();
+        // Keys are distinct, so any sort gives the same order.
+        seen.par_sort_unstable();
         seen.dedup_by_key(|(s, _)| *s);
         let mut keep: Vec<usize> = seen.into_iter().map(|(_, f)| f).collect();
         keep.sort_unstable();
@@ -199,7 +201,7 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
                 edges.push((edge_key(t[k], t[(k + 1) % 3]), i as u32));
             }
         }
-        edges.sort_unstable();
+        edges.par_sort_unstable();
         let mut edge_of = vec![[0u32; 3]; keep.len()];
         let mut slot = vec![0u8; keep.len()];
         let mut id = 0u32;
@@ -357,7 +359,7 @@ fn neighbours(faces: &[[u32; 3]]) -> Vec<Option<u32>> {
             half.push((edge_key(t[k], t[(k + 1) % 3]), h));
         }
     }
-    half.sort_unstable();
+    half.par_sort_unstable();
     let mut across = vec![None; 3 * faces.len()];
     let mut i = 0;
     while i < half.len() {
@@ -469,7 +471,7 @@ fn close_holes(
             directed.push((u64::from(t[k]) << 32) | u64::from(t[(k + 1) % 3]));
         }
     }
-    directed.sort_unstable();
+    directed.par_sort_unstable();
     let has =
         |a: u32, b: u32| directed.binary_search(&((u64::from(a) << 32) | u64::from(b))).is_ok();
     // After the fans are split, each boundary vertex starts exactly one boundary edge.

@@ -1031,7 +1031,7 @@ fn triangle_neighbours(triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
             half.push((key, (f as u32) * 3 + k as u32));
         }
     }
-    half.sort_unstable();
+    half.par_sort_unstable();
     let mut across = vec![[u32::MAX; 3]; triangles.len()];
     for w in half.chunks_exact(2) {
         if w[0].0 == w[1].0 {
