@@ -50,6 +50,11 @@ fn an_ellipsoid_fits_and_its_grid_lies_on_it() {
     ]);
     assert_eq!(out["points"].as_u64(), Some(40_000));
     assert_eq!(num(&out["non_star_fraction"]), 0.0);
+    // Bare points are wrapped from the zero set of their signed distance, and the summary
+    // says so.
+    assert_eq!(out["method"], "shrink-wrap");
+    let reason = out["method_reason"].as_str().expect("a reason");
+    assert!(reason.contains("zero set of their signed distance"), "{reason}");
     let report: Value =
         serde_json::from_str(&std::fs::read_to_string(report_file.as_path()).expect("report"))
             .expect("JSON");
