@@ -506,24 +506,10 @@ impl Hierarchy {
                     self.forced += 1;
                 }
                 self.collapse(v, u);
-                // u's quadric changed, and with it each neighbour's cost of merging into u (and
-                // no other of its costs): a neighbour whose best was u looks again, the others
-                // compare u with their best. v's old neighbours have new rings: they look again.
-                dirty[u as usize] = true;
-                let pu = self.positions[u as usize];
+                // u's quadric changed: every neighbour's cost of merging into it did too.
                 for &f in &self.vertex_faces[u as usize] {
                     for &k in &self.faces[f as usize] {
-                        if dirty[k as usize] {
-                            continue;
-                        }
-                        if best[k as usize].1 == u {
-                            dirty[k as usize] = true;
-                        } else {
-                            let c = pair_cost(&quadric, k, u, pu);
-                            if c < best[k as usize].0 {
-                                best[k as usize] = (c, u);
-                            }
-                        }
+                        dirty[k as usize] = true;
                     }
                 }
                 remaining -= 1;
