@@ -78,6 +78,12 @@ fn inline(text: &str) -> String {
                     continue;
                 }
             }
+            // A pipe escaped for a markdown table's sake is a pipe.
+            '\\' if after.starts_with('|') => {
+                out.push('|');
+                rest = &after[1..];
+                continue;
+            }
             '[' => {
                 if let Some((label, end)) = closing("](")
                     && let Some(close) = after[end + 2..].find(')')
@@ -99,8 +105,26 @@ fn inline(text: &str) -> String {
 /// A markdown table (a header line, a separator, rows; cells between `|`) as an HTML table.
 fn table(markdown: &str) -> String {
     let mut s = String::from("<table>\n");
+    // Cells between the pipes that are not escaped (`\|` is a pipe within a cell).
     let cells = |line: &str| -> Vec<String> {
-        line.trim().trim_matches('|').split('|').map(|c| inline(c.trim())).collect()
+        let line = line.trim();
+        let line = line.strip_prefix('|').unwrap_or(line);
+        let line = if line.ends_with('|') && !line.ends_with("\\|") {
+            &line[..line.len() - 1]
+        } else {
+            line
+        };
+        let mut out = Vec::new();
+        let mut start = 0;
+        let bytes = line.as_bytes();
+        for (i, &b) in bytes.iter().enumerate() {
+            if b == b'|' && (i == 0 || bytes[i - 1] != b'\\') {
+                out.push(inline(line[start..i].trim()));
+                start = i + 1;
+            }
+        }
+        out.push(inline(line[start..].trim()));
+        out
     };
     for (k, line) in markdown.lines().filter(|l| l.trim_start().starts_with('|')).enumerate() {
         match k {
@@ -227,10 +251,39 @@ mod tests {
             inline("see ![a & b](x.png) here"),
             "see <a href=\"x.png\"><img class=\"wide\" src=\"x.png\" alt=\"a &amp; b\"></a> here"
         );
+        assert_eq!(inline("max \\|κ\\|"), "max |κ|");
+        assert_eq!(
+            table("| max \\|κ\\| | b |\n|---|---|\n| 1 | 2 |\n"),
+            "<table>\n<tr><th>max |κ|</th><th>b</th></tr>\n<tr><td>1</td><td>2</td></tr>\n</table>\n"
+        );
         assert_eq!(
             table("| a | b |\n|---|---|\n| `1` | 2 |\n"),
             "<table>\n<tr><th>a</th><th>b</th></tr>\n<tr><td><code>1</code></td><td>2</td></tr>\n</table>\n"
         );
+    }
+
+    /// Every table of the committed gallery has as many cells in each row as in its header,
+    /// and no markdown escape is left in the page.
+    #[test]
+    fn gallery_tables_are_well_formed() {
+        let page = crate::project_root().join(super::super::OUT_DIR).join(GALLERY);
+        let html = std::fs::read_to_string(&page).expect("the gallery is committed");
+        assert!(!html.contains("\\|"), "an escaped pipe is left in the page");
+        let mut tables = 0;
+        for table in html.split("<table>").skip(1) {
+            let table = table.split("</table>").next().unwrap_or_default();
+            let mut rows = table.split("<tr>").skip(1);
+            let header = rows.next().expect("a header row").matches("<th>").count();
+            for row in rows {
+                assert_eq!(
+                    row.matches("<td>").count(),
+                    header,
+                    "a row of {header} headings: {row}"
+                );
+            }
+            tables += 1;
+        }
+        assert!(tables >= 8, "{tables} tables");
     }
 
     /// The Chromium binary, if there is one.
