@@ -144,8 +144,10 @@ fn table(markdown: &str) -> String {
 /// The style of the page.
 const STYLE: &str = "body{font-family:sans-serif;max-width:72rem;margin:auto;padding:1rem;line-height:1.4}\
 section{border-top:1px solid #ccc;padding:0.5rem 0}\
-figure{display:inline-block;margin:0.5rem;vertical-align:top;text-align:center}\
-figure img{max-width:34rem;max-height:26rem;border:1px solid #eee}\
+.panels{display:grid;grid-template-columns:repeat(auto-fit,minmax(min(100%,22rem),1fr));gap:0.75rem;align-items:start}\
+figure{margin:0;text-align:center}\
+figure img{max-width:100%;height:auto;border:1px solid #eee}\
+figure img[src$=\".svg\"]{width:100%;max-height:36rem;object-fit:contain}\
 figcaption{font-size:0.9rem;color:#444}\
 img.wide{max-width:100%;border:1px solid #eee}\
 table{border-collapse:collapse;font-size:0.85rem;margin:0.5rem 0}\
@@ -195,6 +197,9 @@ pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String 
             let _ =
                 writeln!(s, "<p class=\"differs\">Differs from the thesis: {}</p>", inline(note));
         }
+        // The panels in a grid (a figure of one panel spans it), each image linked to itself
+        // at full size.
+        let _ = writeln!(s, "<div class=\"panels\">");
         for p in f.panels {
             let file = f.file(p);
             let title = escape(&f.title(p));
@@ -202,20 +207,21 @@ pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String 
                 Format::Svg | Format::Png => {
                     let _ = writeln!(
                         s,
-                        "<figure><img src=\"{file}\" alt=\"{title}\"><figcaption>{title}</figcaption></figure>"
+                        "<figure><a href=\"{file}\"><img src=\"{file}\" alt=\"{title}\"></a>\
+                         <figcaption>{title}</figcaption></figure>"
                     );
                 }
                 Format::Glb => {
+                    let render = f.render_file(p);
                     let _ = writeln!(
                         s,
-                        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption>{title}: glTF model \
-                         <a href=\"{file}\">{file}</a></figcaption></figure>",
-                        f.render_file(p)
+                        "<figure><a href=\"{render}\"><img src=\"{render}\" alt=\"{title}\"></a>\
+                         <figcaption>{title}: glTF model <a href=\"{file}\">{file}</a></figcaption></figure>"
                     );
                 }
             }
         }
-        let _ = writeln!(s, "</section>");
+        let _ = writeln!(s, "</div>\n</section>");
     }
     if !tables.is_empty() {
         let _ = writeln!(s, "<section id=\"tables\">\n<h2>Tables</h2>");
