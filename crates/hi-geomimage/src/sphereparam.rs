@@ -650,13 +650,13 @@ fn relax_vertex(h: &Hierarchy, sphere: &[DVec3], v: u32) -> Option<(DVec3, f64)>
     None
 }
 
-/// Sweeps of stretch relaxation over the alive vertices: Gauss–Seidel by colour classes (no
-/// two neighbours share a colour, so each class moves in parallel, every vertex against its
-/// neighbours' latest positions).
 /// Above this many vertices a round's splits are placed together, in parallel (below it, one
 /// at a time, each settled with the vertex it came from).
 const BATCH_ABOVE: usize = 2000;
 
+/// Sweeps of stretch relaxation over the alive vertices: Gauss–Seidel by colour classes (no
+/// two neighbours share a colour, so each class moves in parallel, every vertex against its
+/// neighbours' latest positions).
 fn relax(h: &Hierarchy, sphere: &mut [DVec3], sweeps: usize) {
     if sweeps == 0 {
         return;
@@ -896,8 +896,8 @@ pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<S
             // A round's collapses were independent (no two of its vertices neighbours), so
             // its splits can all be made first and their vertices placed and settled in
             // parallel: each reads only its own ring, which no other vertex of the round is
-            // in — the same map as one split at a time (the vertices they came from settle in
-            // the sweeps below).
+            // in. (One split at a time would also settle the vertex each came from; here those
+            // settle in the sweeps below.)
             let fine = present > options.fine_vertices;
             let batch = &collapses[start..end];
             for &c in batch.iter().rev() {
