@@ -411,7 +411,7 @@ pub fn shrink_wrap(
             crate::sphereparam::parameterise(&closed, &param_options)
         })
         .and_then(|param| param.image(layout, rows, cols));
-    let (first, reparameterised, implicit_start, bridged) = if let Ok(image) = implicit {
+    let (first, reparameterised, implicit_start, on_fills) = if let Ok(image) = implicit {
         (image.image.texels().to_vec(), true, true, Some(image.filled))
     } else {
         // Else the coarse radial image wrapped, then its mesh parameterised: the texels of the
@@ -446,7 +446,8 @@ pub fn shrink_wrap(
     } else {
         iterations
     };
-    let (x, filled) = wrap(&patches, first.clone(), bridged.as_deref(), layout, rows, cols, rounds);
+    let (x, filled) =
+        wrap(&patches, first.clone(), on_fills.as_deref(), layout, rows, cols, rounds);
     // Each direction once, for the fractions.
     let distinct = match layout {
         Layout::Sphere | Layout::FlatOctahedron => rows / 2 * cols,
@@ -591,12 +592,14 @@ const FINE_ROUNDS: usize = 2;
 
 /// `rounds` of projection and spreading of the texels `x` of a `rows × cols` image (the last
 /// step a projection), with the doubled layouts' symmetry kept; the texels and which of them
-/// had no point near. Texels flagged in `bridged` (on a patch closing a hole of the scan) have
-/// no data either, whatever points are near the hole's rim.
+/// had no point near. `on_fills` is given for an image of the implicit start: it flags the
+/// texels on the patches that close the scan's holes, which have no data either (whatever
+/// points are near the hole's rim), and every other texel moves at most [`MAX_MOVE`] point
+/// spacings.
 fn wrap(
     patches: &Patches,
     mut x: Vec<DVec3>,
-    bridged: Option<&[bool]>,
+    on_fills: Option<&[bool]>,
     layout: Layout,
     rows: usize,
     cols: usize,
@@ -662,7 +665,7 @@ fn wrap(
                 let (q, d) = patches.project(p, n);
                 // A texel of the implicit start lies within a grid cell of its sheet: a longer
                 // move went to another sheet (of a part thinner than the cell) and is refused.
-                if bridged.is_some() && q.distance(p) > MAX_MOVE * patches.spacing {
+                if on_fills.is_some() && q.distance(p) > MAX_MOVE * patches.spacing {
                     (p, d)
                 } else {
                     (q, d)
@@ -674,7 +677,7 @@ fn wrap(
         }
         let mut target = vec![DVec3::ZERO; rows * cols];
         for (t, (q, d)) in projected.iter().enumerate() {
-            filled[t] = *d > reach || bridged.is_some_and(|b| b[t]);
+            filled[t] = *d > reach || on_fills.is_some_and(|f| f[t]);
             target[t] = *q;
             if !filled[t] {
                 x[t] = *q;

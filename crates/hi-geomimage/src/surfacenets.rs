@@ -8,8 +8,10 @@
 //! Negative values are inside, zero and positive outside, NaN unknown: a cell with an unknown
 //! corner has no vertex, so the mesh has a boundary where the known values end. The triangles
 //! wind counter-clockwise seen from outside, so a closed zero set inside the known part of the
-//! grid gives a closed mesh of positive volume. Written here rather than taken from a crate: the ones published work in `f32` on
-//! fixed chunks, where the fit wants `f64` on a grid sized to the scan.
+//! grid gives a closed mesh of positive volume.
+//!
+//! Written here rather than taken from a crate: the ones published work in `f32` on fixed
+//! chunks, where the fit wants `f64` on a grid sized to the scan.
 
 use glam::DVec3;
 
@@ -213,72 +215,62 @@ pub fn surface_nets(grid: &Grid<'_>) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Erro
     Ok((points, triangles))
 }
 
-/// The values with every face whose corners alternate in sign resolved (see [`surface_nets`]).
+/// The values with every face whose corners alternate in sign resolved (see [`surface_nets`]):
+/// every face is looked at once, and after a corner moves inside, the faces around it again.
+/// Corners only ever move inside, so this ends.
 fn resolve_ambiguous_faces(values: &[f64], dims: [usize; 3]) -> Vec<f64> {
     let [nx, ny, nz] = dims;
     let mut v = values.to_vec();
     let node = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
-    // Each pass moves at least one node inside for good, so this ends; the bound only guards
-    // the time.
-    for _pass in 0..64 {
-        let mut changed = false;
-
-        for k in 0..nz {
-            for j in 0..ny {
-                for i in 0..nx {
-                    // The faces at this node, spanning (x, y), (y, z) and (z, x).
-                    let faces = [
-                        (i + 1 < nx && j + 1 < ny).then(|| {
-                            [
-                                node(i, j, k),
-                                node(i + 1, j, k),
-                                node(i + 1, j + 1, k),
-                                node(i, j + 1, k),
-                            ]
-                        }),
-                        (j + 1 < ny && k + 1 < nz).then(|| {
-                            [
-                                node(i, j, k),
-                                node(i, j + 1, k),
-                                node(i, j + 1, k + 1),
-                                node(i, j, k + 1),
-                            ]
-                        }),
-                        (k + 1 < nz && i + 1 < nx).then(|| {
-                            [
-                                node(i, j, k),
-                                node(i, j, k + 1),
-                                node(i + 1, j, k + 1),
-                                node(i + 1, j, k),
-                            ]
-                        }),
-                    ];
-                    for face in faces.into_iter().flatten() {
-                        if face.iter().any(|&t| v[t].is_nan()) {
-                            continue;
-                        }
-                        let s = face.map(|t| v[t] < 0.0);
-                        if s[0] != s[2] || s[1] != s[3] || s[0] == s[1] {
-                            continue;
-                        }
-                        // The outside corner nearest zero goes inside: the inside diagonal
-                        // connects. Corners only ever go inside, so this ends.
-                        let Some(&t) = face
-                            .iter()
-                            .filter(|&&t| v[t] >= 0.0)
-                            .min_by(|&&a, &&b| v[a].total_cmp(&v[b]))
-                        else {
-                            continue;
-                        };
-                        v[t] = -1e-9 * v[t] - f64::MIN_POSITIVE;
-                        changed = true;
+    // The faces whose lowest corner is node (i, j, k): spanning (x, y), (y, z) and (z, x).
+    let faces_at = |i: usize, j: usize, k: usize| {
+        [
+            (i + 1 < nx && j + 1 < ny).then(|| {
+                [node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k)]
+            }),
+            (j + 1 < ny && k + 1 < nz).then(|| {
+                [node(i, j, k), node(i, j + 1, k), node(i, j + 1, k + 1), node(i, j, k + 1)]
+            }),
+            (k + 1 < nz && i + 1 < nx).then(|| {
+                [node(i, j, k), node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j, k)]
+            }),
+        ]
+    };
+    // The node that must move inside for a face to stop alternating: its outside corner
+    // nearest zero, so that the inside diagonal connects.
+    let to_move = |v: &[f64], face: [usize; 4]| {
+        if face.iter().any(|&t| v[t].is_nan()) {
+            return None;
+        }
+        let s = face.map(|t| v[t] < 0.0);
+        if s[0] != s[2] || s[1] != s[3] || s[0] == s[1] {
+            return None;
+        }
+        face.into_iter().filter(|&t| v[t] >= 0.0).min_by(|&a, &b| v[a].total_cmp(&v[b]))
+    };
+    // One sweep over every face in order, then again round each corner that moved.
+    let mut pending = Vec::new();
+    let look = |v: &mut [f64], anchor: usize, pending: &mut Vec<usize>| {
+        let (i, j, k) = (anchor % nx, anchor / nx % ny, anchor / nx / ny);
+        for face in faces_at(i, j, k).into_iter().flatten() {
+            let Some(t) = to_move(v, face) else { continue };
+            v[t] = -1e-9 * v[t] - f64::MIN_POSITIVE;
+            // Every face with t as a corner has its lowest corner within one step below t.
+            let (ti, tj, tk) = (t % nx, t / nx % ny, t / nx / ny);
+            for dk in 0..=tk.min(1) {
+                for dj in 0..=tj.min(1) {
+                    for di in 0..=ti.min(1) {
+                        pending.push(node(ti - di, tj - dj, tk - dk));
                     }
                 }
             }
         }
-        if !changed {
-            break;
-        }
+    };
+    for anchor in 0..nx * ny * nz {
+        look(&mut v, anchor, &mut pending);
+    }
+    while let Some(anchor) = pending.pop() {
+        look(&mut v, anchor, &mut pending);
     }
     v
 }
