@@ -41,6 +41,11 @@ use clap::error::ErrorKind;
 use crate::cli::{Cli, command_path};
 use crate::error::{EXIT_BAD_INPUT, EXIT_OUTPUT, Failure, flatten_clap_error, stderr_line};
 
+/// mimalloc keeps the memory of one stage for the next (the system allocator hands large
+/// blocks back and faults them in again): `hi fit` of a 35k-point scan, 0.43 → 0.36 s.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> ExitCode {
     install_panic_hook();
     let cli = match Cli::try_parse() {

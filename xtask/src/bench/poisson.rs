@@ -8,7 +8,7 @@
 //!   (pymeshlab, depth 8, normals from 10 neighbours), interpreter start and import included,
 //!   as a user running it would wait for them.
 //!
-//! Both are timed as processes (median of three after a warm-up), and both outputs are measured
+//! Both are timed as processes (median of five after a warm-up), and both outputs are measured
 //! by the same independent program, trimesh (`fit_peers.py distances`): 5 000 scan points to the
 //! output, 5 000 points sampled on the output to the scan (its triangles, or its nearest point
 //! for a point set), and whether the output is watertight as stored. Our own report adds the
@@ -54,7 +54,7 @@ const MODELS: &[(&str, &str, [f64; 3], [f64; 3])] = &[
 ];
 
 /// Timed runs of each command, after one untimed run.
-const RUNS: usize = 3;
+const RUNS: usize = 5;
 
 /// Points each way in trimesh's measurement.
 const SAMPLES: &str = "5000";

@@ -113,7 +113,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     };
     let result = fit(&scan, &options, &mut |stage| bar.set_message(stage));
     bar.finish_and_clear();
-    let fitted = result.map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+    let mut fitted = result.map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
     let report = &fitted.report;
     if report.non_star_fraction > NON_STAR_WARNING {
         eprintln!(
@@ -160,8 +160,8 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         vec![args.output.clone()]
     } else {
         // The closed mesh the error was measured on, or the same made now.
-        let mesh = match &fitted.mesh {
-            Some(m) => m.mesh.clone(),
+        let mesh = match fitted.mesh.take() {
+            Some(m) => m.mesh,
             None => {
                 let per_texel = mesh_oversample(&fitted.surface);
                 let per_texel = if layout == Layout::Octahedron {
