@@ -33,9 +33,8 @@ const SCAN_STRIDE: usize = 20;
 /// The view of the scan in figure 1.3: the face (+y) turned towards the viewer.
 const SCAN_VIEW: Oblique = Oblique { azimuth: 210.0, elevation: 15.0 };
 
-/// The control points of the quintic of figure 1.2.
-const QUINTIC: [[f64; 2]; 6] =
-    [[0.0, 0.0], [0.8, 2.6], [2.4, 3.0], [3.4, -0.8], [5.0, 1.8], [6.0, 0.6]];
+/// The control points x₀ … x₃ of the cubic of figure 1.2 (the thesis labels four).
+const CUBIC: [[f64; 2]; 4] = [[0.0, 0.0], [0.9, 2.6], [3.3, 2.8], [4.2, 0.2]];
 
 /// Linear RGB colours of the patches of figure 4.2.
 const PATCH_COLORS: [[f32; 3]; 2] = [[0.0, 0.17, 0.44], [0.67, 0.11, 0.0]];
@@ -84,9 +83,9 @@ fn polygonal_object() -> Result<Vec<u8>> {
     glb(&flat)
 }
 
-/// Figure 1.2: a quintic Bézier curve, its control polygon and control points.
+/// Figure 1.2: a cubic Bézier curve, its control polygon and control points.
 fn bezier_curve(title: &str) -> Result<Vec<u8>> {
-    let curve = BezierCurve::try_new(data::plane(&QUINTIC))?;
+    let curve = BezierCurve::try_new(data::plane(&CUBIC))?;
     let points = curve.control_points().to_vec();
     // The inner control points are off the curve: check it on a fine sample.
     let on_curve = sample(0.0, 1.0, 4 * SAMPLES, |t| curve.eval(t));
@@ -98,7 +97,7 @@ fn bezier_curve(title: &str) -> Result<Vec<u8>> {
         .polygon(&points, false)
         .curve(on_curve, Pen::solid(BLUE), Some("Bézier curve"))
         .points(&points, Marker::point(INK), Some("control points"))
-        .labels(&points, names("p", points.len()), false)
+        .labels(&points, names("x", points.len()), false)
         .legend(Legend::LowerRight)
         .render()
 }
@@ -331,9 +330,9 @@ pub(crate) const FIGURES: &[Figure] = &[
     Figure {
         number: (1, 2),
         caption: "A Bézier curve does not interpolate all of its control points",
-        drawn: "A quintic Bézier curve (de Casteljau, `hi_bezier::BezierCurve`) with its control polygon (dashed) \
-                and control points p₀ … p₅: it passes through p₀ and p₅ only.",
-        data: "six control points chosen for the figure (exact).",
+        drawn: "A cubic Bézier curve (de Casteljau, `hi_bezier::BezierCurve`) with its control polygon (dashed) \
+                and control points x₀ … x₃, labelled as in the thesis: it passes through x₀ and x₃ only.",
+        data: "four control points chosen for the figure (exact).",
         format: Format::Svg,
         panels: &[Panel { suffix: "", title: "", draw: bezier_curve }],
     },

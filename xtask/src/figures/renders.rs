@@ -59,7 +59,7 @@ fn mesh_from_glb(bytes: &[u8]) -> Result<TriangleMesh> {
 
 /// Where the eye looks from, for figure `number`: the heads face +y, everything else is seen
 /// from the front left, above.
-fn view(number: (u32, u32)) -> DVec3 {
+pub(crate) fn view(number: (u32, u32)) -> DVec3 {
     let head = matches!(number, (1, 1) | (4, 35) | (5, 10..=11 | 14..=20 | 24 | 29..=30));
     if head { DVec3::new(0.9, 2.0, 0.9) } else { DVec3::new(0.9, -2.0, 1.3) }
 }

@@ -441,10 +441,21 @@ fn parametric_mesh(
         }
     }
     let positions: Vec<DVec3> = used.iter().map(|&k| samples[k].p).collect();
+    // The area-weighted normal of the triangles at each vertex: a vertex normal points to its
+    // side (where the parameterisation folds, ∂u × ∂v turns against the triangles' winding,
+    // and a renderer would shade those triangles from behind).
+    let mut winding = vec![DVec3::ZERO; samples.len()];
+    for t in &triangles {
+        let [a, b, c] = t.map(position);
+        let n = (b - a).cross(c - a);
+        for &k in t {
+            winding[k as usize] += n;
+        }
+    }
     let normals: Vec<DVec3> = used
         .iter()
         .map(|&k| {
-            samples[k].normal(scale).unwrap_or_else(|| {
+            let n = samples[k].normal(scale).unwrap_or_else(|| {
                 // The sum of the normals of the triangles at this point.
                 let here = samples[k].p;
                 let sum: DVec3 = triangles
@@ -456,7 +467,8 @@ fn parametric_mesh(
                     })
                     .sum();
                 sum.try_normalize().unwrap_or(DVec3::Z)
-            })
+            });
+            if n.dot(winding[k]) < 0.0 { -n } else { n }
         })
         .collect();
     let uvs: Vec<DVec2> = used
@@ -805,6 +817,30 @@ mod tests {
         }
         // Each pole quad gives one triangle.
         assert_eq!(mesh.n_triangles(), 2 * 8 * 6 - 2 * 8, "pole triangles dropped");
+    }
+
+    #[test]
+    fn vertex_normals_agree_with_the_winding() {
+        // The parametric meshes built here; the harmonic ones carry the surface's own
+        // ∂u × ∂v, which near a fold of the interpolant may lean past the chords' winding.
+        for spec in &SPECS {
+            let c = Comparison::new(spec).expect("builds");
+            let mesh = &c.mesh(Side::Parametric).0;
+            let mut winding = vec![DVec3::ZERO; mesh.n_vertices()];
+            for t in mesh.triangles() {
+                let [a, b, c] = t.map(|k| mesh.positions()[k as usize]);
+                for &k in t {
+                    winding[k as usize] += (b - a).cross(c - a);
+                }
+            }
+            let against = mesh
+                .normals()
+                .iter()
+                .zip(&winding)
+                .filter(|(n, w)| n.dot(**w) < -1e-9 * w.length())
+                .count();
+            assert_eq!(against, 0, "figure {}: normals against the winding", spec.figure);
+        }
     }
 
     #[test]
