@@ -19,6 +19,10 @@
 //! the picture out. NaN and ±∞ (curvature at a degenerate point, where it is undefined) get
 //! the neutral grey [`NEUTRAL_SRGB`] and are counted in [`ColorLegend::n_invalid`].
 //!
+//! The colours come from a [`Palette`]: the thesis's blue → purple ramp (the default), or the
+//! perceptual maps a reader of a scientific figure expects, [`Palette::Viridis`] for
+//! magnitudes and the diverging [`Palette::CoolWarm`] (grey at the centre) for signed values.
+//!
 //! The ramp is defined and interpolated in sRGB (what a legend or an SVG shows); the colours
 //! returned are linear RGB, as glTF's `COLOR_0` and a renderer expect. [`srgb_to_linear`] and
 //! [`linear_to_srgb`] convert.
@@ -76,7 +80,84 @@ impl CurvatureQuantity {
     }
 }
 
-/// How values are placed on the blue → purple ramp.
+/// Viridis (van der Walt and Smith, matplotlib 2.0's default map), sRGB at 17 equal steps:
+/// lightness rises steadily from dark purple to yellow, and it reads the same to the
+/// colour-blind and in grey.
+const VIRIDIS: [[f32; 3]; 17] = [
+    [0.2670, 0.0049, 0.3294],
+    [0.2823, 0.0950, 0.4173],
+    [0.2788, 0.1755, 0.4834],
+    [0.2590, 0.2515, 0.5247],
+    [0.2297, 0.3224, 0.5457],
+    [0.1994, 0.3876, 0.5546],
+    [0.1727, 0.4488, 0.5579],
+    [0.1490, 0.5081, 0.5572],
+    [0.1276, 0.5669, 0.5506],
+    [0.1206, 0.6258, 0.5335],
+    [0.1579, 0.6838, 0.5017],
+    [0.2461, 0.7389, 0.4520],
+    [0.3692, 0.7889, 0.3829],
+    [0.5160, 0.8312, 0.2943],
+    [0.6785, 0.8637, 0.1895],
+    [0.8456, 0.8873, 0.0997],
+    [0.9932, 0.9062, 0.1439],
+];
+
+/// Moreland's diverging cool–warm map ("Diverging color maps for scientific visualization",
+/// 2009), sRGB at 17 equal steps: blue through a light grey centre to red, each half of
+/// steadily changing lightness.
+const COOLWARM: [[f32; 3]; 17] = [
+    [0.2298, 0.2987, 0.7537],
+    [0.3042, 0.4069, 0.8453],
+    [0.3837, 0.5102, 0.9178],
+    [0.4677, 0.6056, 0.9685],
+    [0.5543, 0.6901, 0.9955],
+    [0.6408, 0.7608, 0.9978],
+    [0.7240, 0.8149, 0.9757],
+    [0.8006, 0.8504, 0.9300],
+    [0.8674, 0.8644, 0.8626],
+    [0.9256, 0.8255, 0.7711],
+    [0.9595, 0.7670, 0.6741],
+    [0.9697, 0.6905, 0.5751],
+    [0.9567, 0.5980, 0.4773],
+    [0.9214, 0.4914, 0.3834],
+    [0.8654, 0.3711, 0.2958],
+    [0.7906, 0.2314, 0.2162],
+    [0.7057, 0.0156, 0.1502],
+];
+
+/// The colours of a [`ColorMap`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Palette {
+    /// The thesis's ramp (§5.9): blue ([`LOW_SRGB`]) to purple ([`HIGH_SRGB`]), and teal
+    /// ([`NEGATIVE_SRGB`]) for −a on the [`ColorScale::Symmetric`] scale.
+    #[default]
+    Thesis,
+    /// Viridis, dark purple (low) to yellow (high): for magnitudes.
+    Viridis,
+    /// Cool–warm, blue (low) through grey (the centre) to red (high): for signed values on the
+    /// [`ColorScale::Symmetric`] scale, where the grey is 0.
+    CoolWarm,
+}
+
+impl Palette {
+    /// The sRGB colour at `s` ∈ [0, 1] from the low end to the high end (clamped), for the
+    /// palettes given as tables; the thesis's ramp at `s` from blue to purple.
+    #[must_use]
+    pub fn srgb(self, s: f64) -> [f32; 3] {
+        let table = match self {
+            Palette::Thesis => return mix(LOW_SRGB, HIGH_SRGB, s),
+            Palette::Viridis => &VIRIDIS,
+            Palette::CoolWarm => &COOLWARM,
+        };
+        let x = s.clamp(0.0, 1.0) * (table.len() - 1) as f64;
+        #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "in 0..=15")]
+        let k = (x.floor() as usize).min(table.len() - 2);
+        mix(table[k], table[k + 1], x - k as f64)
+    }
+}
+
+/// How values are placed on the ramp.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ColorScale {
     /// The thesis's map (§5.9): |x| from 0 (blue) to the extent a (purple); the sign is lost.
@@ -95,14 +176,15 @@ pub enum ColorScale {
     },
 }
 
-/// A curvature colour map: a [`ColorScale`] and how much of the data it must cover.
+/// A curvature colour map: a [`ColorScale`], how much of the data it must cover, and the
+/// [`Palette`] it paints with.
 ///
 /// # Examples
 ///
 /// ```
-/// use hi_surface::{ColorMap, ColorScale};
+/// use hi_surface::{ColorMap, ColorScale, Palette};
 ///
-/// let map = ColorMap { scale: ColorScale::Magnitude, coverage: 1.0 };
+/// let map = ColorMap { scale: ColorScale::Magnitude, coverage: 1.0, palette: Palette::Thesis };
 /// let out = map.try_apply(&[0.0, -0.5, 2.0, f64::NAN]).unwrap();
 /// assert_eq!((out.legend.min, out.legend.max), (0.0, 2.0)); // |x| from 0 to the largest |x|
 /// assert_eq!(out.legend.n_invalid, 1); // the NaN is grey and counted
@@ -115,12 +197,14 @@ pub struct ColorMap {
     /// The fraction of the finite values the scale spans, in (0, 1]: 1 spans them all; 0.98
     /// lets the 2 % most extreme values (1 % at each end for [`ColorScale::MinMax`]) saturate.
     pub coverage: f64,
+    /// The colours.
+    pub palette: Palette,
 }
 
 impl Default for ColorMap {
-    /// The thesis's map: [`ColorScale::Magnitude`] over all values.
+    /// The thesis's map: [`ColorScale::Magnitude`] over all values, [`Palette::Thesis`].
     fn default() -> Self {
-        ColorMap { scale: ColorScale::Magnitude, coverage: 1.0 }
+        ColorMap { scale: ColorScale::Magnitude, coverage: 1.0, palette: Palette::Thesis }
     }
 }
 
@@ -130,6 +214,8 @@ impl Default for ColorMap {
 pub struct ColorLegend {
     /// The scale used ([`ColorScale::Fixed`] carries its bounds).
     pub scale: ColorScale,
+    /// The palette used.
+    pub palette: Palette,
     /// The value at the low end of the ramp: 0 for [`ColorScale::Magnitude`] (which shows
     /// |x|), −a for [`ColorScale::Symmetric`].
     pub min: f64,
@@ -222,6 +308,7 @@ impl ColorMap {
         };
         let mut legend = ColorLegend {
             scale: self.scale,
+            palette: self.palette,
             min,
             max,
             centre,
@@ -260,14 +347,27 @@ impl ColorLegend {
         Some(t)
     }
 
-    /// The sRGB colour of `value` (what a legend drawn beside the picture shows).
+    /// The sRGB colour of `value` (what a legend drawn beside the picture shows): the
+    /// palette at the value's place between the ends of the ramp ([`ColorLegend::fraction`]).
     #[must_use]
     pub fn srgb_at(&self, value: f64) -> [f32; 3] {
-        match self.position(value) {
-            None => NEUTRAL_SRGB,
-            Some(t) if t < 0.0 => mix(LOW_SRGB, NEGATIVE_SRGB, -t),
-            Some(t) => mix(LOW_SRGB, HIGH_SRGB, t),
+        match (self.palette, self.position(value)) {
+            (_, None) => NEUTRAL_SRGB,
+            (Palette::Thesis, Some(t)) if t < 0.0 => mix(LOW_SRGB, NEGATIVE_SRGB, -t),
+            (Palette::Thesis, Some(t)) => mix(LOW_SRGB, HIGH_SRGB, t),
+            (palette, Some(_)) => palette.srgb(self.fraction(value).unwrap_or(0.0)),
         }
+    }
+
+    /// Where `value` falls between the low end (0) and the high end (1) of the ramp, clamped;
+    /// on the [`ColorScale::Symmetric`] scale, −a is 0, 0 is ½ and a is 1. `None` for NaN and
+    /// ±∞. This is where a colour bar drawn from `min` to `max` shows the value.
+    #[must_use]
+    pub fn fraction(&self, value: f64) -> Option<f64> {
+        self.position(value).map(|t| match self.scale {
+            ColorScale::Symmetric => 0.5 * (t + 1.0),
+            _ => t,
+        })
     }
 
     /// The linear-RGB colour of `value` (what the mesh stores and glTF's `COLOR_0` holds).

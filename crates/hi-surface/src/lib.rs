@@ -57,7 +57,7 @@ mod surface;
 pub use bspline_fit::{BSplineFit, BSplineSurface, BezierPatchGrid};
 pub use colormap::{
     ColorLegend, ColorMap, ColorMapping, ColorScale, CurvatureQuantity, HIGH_SRGB, LOW_SRGB,
-    NEGATIVE_SRGB, NEUTRAL_SRGB, linear_to_srgb, linear_to_srgb_rgb, srgb_to_linear,
+    NEGATIVE_SRGB, NEUTRAL_SRGB, Palette, linear_to_srgb, linear_to_srgb_rgb, srgb_to_linear,
     srgb_to_linear_rgb,
 };
 pub use error::Error;

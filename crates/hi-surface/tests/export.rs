@@ -21,7 +21,11 @@ fn tmp(name: &str) -> PathBuf {
 fn colored(quantity: CurvatureQuantity) -> Option<CurvatureColoring> {
     Some(CurvatureColoring {
         quantity,
-        map: ColorMap { scale: ColorScale::Symmetric, coverage: 1.0 },
+        map: ColorMap {
+            scale: ColorScale::Symmetric,
+            coverage: 1.0,
+            palette: hi_surface::Palette::Thesis,
+        },
     })
 }
 

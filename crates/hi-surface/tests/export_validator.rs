@@ -56,7 +56,11 @@ fn random_surface() -> HarmonicSurface<DVec3> {
 fn meshes() -> Vec<(&'static str, TriangleMesh)> {
     let color = Some(CurvatureColoring {
         quantity: CurvatureQuantity::Gaussian,
-        map: ColorMap { scale: ColorScale::Symmetric, coverage: 0.98 },
+        map: ColorMap {
+            scale: ColorScale::Symmetric,
+            coverage: 0.98,
+            palette: hi_surface::Palette::Thesis,
+        },
     });
     let mean =
         Some(CurvatureColoring { quantity: CurvatureQuantity::Mean, map: ColorMap::default() });

@@ -295,7 +295,8 @@ fn curvature_colours_and_legend() {
 
 #[test]
 fn mean_curvature_sign_follows_the_mesh_normal() {
-    let map = ColorMap { scale: ColorScale::MinMax, coverage: 1.0 };
+    let map =
+        ColorMap { scale: ColorScale::MinMax, coverage: 1.0, palette: hi_surface::Palette::Thesis };
     let color = Some(CurvatureColoring { quantity: CurvatureQuantity::Mean, map });
     let t = torus(2.0, 0.5);
     let plain = mesh(&t, MeshOptions { n_u: 16, n_v: 16, color, ..Default::default() });
@@ -327,7 +328,11 @@ fn invalid_options_are_errors() {
     let point = HarmonicSurface::new(vec![vec![DVec3::ONE; 3]; 3]);
     let r = TriangleMesh::try_from_surface(&point, &MeshOptions::default());
     assert!(matches!(r, Err(Error::InvalidCount { value: 0, .. })), "{r:?}");
-    let map = ColorMap { scale: ColorScale::Magnitude, coverage: 0.0 };
+    let map = ColorMap {
+        scale: ColorScale::Magnitude,
+        coverage: 0.0,
+        palette: hi_surface::Palette::Thesis,
+    };
     let color = Some(CurvatureColoring { quantity: CurvatureQuantity::Mean, map });
     let r = TriangleMesh::try_from_surface(&t, &MeshOptions { color, ..Default::default() });
     assert!(matches!(r, Err(Error::InvalidValue { .. })), "{r:?}");

@@ -9,7 +9,7 @@ use hi_surface::{
 use proptest::prelude::*;
 
 fn apply(scale: ColorScale, coverage: f64, values: &[f64]) -> hi_surface::ColorMapping {
-    ColorMap { scale, coverage }.try_apply(values).unwrap()
+    ColorMap { scale, coverage, palette: hi_surface::Palette::Thesis }.try_apply(values).unwrap()
 }
 
 fn close(a: [f32; 3], b: [f32; 3]) -> bool {
@@ -99,11 +99,21 @@ fn coverage_lets_outliers_saturate() {
 #[test]
 fn invalid_maps_are_errors() {
     for coverage in [0.0, -0.5, 1.5, f64::NAN] {
-        let r = ColorMap { scale: ColorScale::Magnitude, coverage }.try_apply(&[1.0]);
+        let r = ColorMap {
+            scale: ColorScale::Magnitude,
+            coverage,
+            palette: hi_surface::Palette::Thesis,
+        }
+        .try_apply(&[1.0]);
         assert!(matches!(r, Err(Error::InvalidValue { .. })), "coverage {coverage}");
     }
     for (min, max) in [(1.0, 1.0), (2.0, 1.0), (f64::NAN, 1.0), (0.0, f64::INFINITY)] {
-        let r = ColorMap { scale: ColorScale::Fixed { min, max }, coverage: 1.0 }.try_apply(&[1.0]);
+        let r = ColorMap {
+            scale: ColorScale::Fixed { min, max },
+            coverage: 1.0,
+            palette: hi_surface::Palette::Thesis,
+        }
+        .try_apply(&[1.0]);
         let e = r.expect_err("invalid fixed bounds");
         assert!(matches!(e, Error::InvalidValue { .. }), "[{min}, {max}]: {e:?}");
         assert!(!e.to_string().contains('\n'), "one line");
@@ -121,7 +131,7 @@ proptest! {
     ) {
         let scale = [ColorScale::Magnitude, ColorScale::Symmetric, ColorScale::MinMax,
             ColorScale::Fixed { min: -10.0, max: 10.0 }][which];
-        let out = ColorMap { scale, coverage }.try_apply(&values).unwrap();
+        let out = ColorMap { scale, coverage, palette: hi_surface::Palette::Thesis }.try_apply(&values).unwrap();
         prop_assert_eq!(out.colors.len(), values.len());
         for c in &out.colors {
             prop_assert!(c.iter().all(|x| (0.0..=1.0).contains(x)));
@@ -131,4 +141,65 @@ proptest! {
         prop_assert!(out.legend.n_clamped <= finite);
         prop_assert!(out.legend.min <= out.legend.max);
     }
+}
+
+/// CIELAB lightness L* of an sRGB colour (D65), from the sRGB and CIE definitions.
+fn lightness(c: [f32; 3]) -> f64 {
+    let lin = |v: f32| {
+        let v = f64::from(v);
+        if v <= 0.04045 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+    };
+    let y = 0.2126 * lin(c[0]) + 0.7152 * lin(c[1]) + 0.0722 * lin(c[2]);
+    let f = if y > (6.0f64 / 29.0).powi(3) {
+        y.cbrt()
+    } else {
+        y / (3.0 * (6.0f64 / 29.0).powi(2)) + 4.0 / 29.0
+    };
+    116.0 * f - 16.0
+}
+
+#[test]
+fn the_perceptual_palettes_have_their_published_ends_and_even_lightness() {
+    use hi_surface::Palette;
+    let close = |a: [f32; 3], hex: [u8; 3]| {
+        // Within 1.5 of 255 (the tables are sampled from matplotlib's, whose cool–warm centre
+        // is (221.2, 220.4, 220.0)).
+        a.iter().zip(hex).all(|(x, h)| (f64::from(*x) - f64::from(h) / 255.0).abs() < 1.5 / 255.0)
+    };
+    // Viridis: #440154 to #fde725 (matplotlib's published ends).
+    assert!(close(Palette::Viridis.srgb(0.0), [0x44, 0x01, 0x54]));
+    assert!(close(Palette::Viridis.srgb(1.0), [0xfd, 0xe7, 0x25]));
+    // Moreland's cool–warm: (59, 76, 192), (221, 221, 221) at the centre, (180, 4, 38).
+    assert!(close(Palette::CoolWarm.srgb(0.0), [59, 76, 192]));
+    assert!(close(Palette::CoolWarm.srgb(0.5), [221, 221, 221]));
+    assert!(close(Palette::CoolWarm.srgb(1.0), [180, 4, 38]));
+    // Lightness: rising all the way for viridis; rising to the centre and falling after it
+    // for cool–warm.
+    let steps = 400;
+    let l = |p: Palette, k: usize| lightness(p.srgb(k as f64 / steps as f64));
+    for k in 0..steps {
+        assert!(l(Palette::Viridis, k + 1) > l(Palette::Viridis, k), "viridis at {k}");
+        if 2 * k < steps {
+            assert!(l(Palette::CoolWarm, k + 1) > l(Palette::CoolWarm, k), "cool–warm at {k}");
+        } else {
+            assert!(l(Palette::CoolWarm, k + 1) < l(Palette::CoolWarm, k), "cool–warm at {k}");
+        }
+    }
+}
+
+#[test]
+fn a_diverging_map_puts_zero_at_its_centre() {
+    use hi_surface::Palette;
+    let map = ColorMap { scale: ColorScale::Symmetric, coverage: 1.0, palette: Palette::CoolWarm };
+    let out = map.try_apply(&[-2.0, 0.0, 2.0, 1.0, f64::NAN]).unwrap();
+    let legend = out.legend;
+    assert_eq!((legend.min, legend.max), (-2.0, 2.0));
+    assert_eq!(legend.fraction(-2.0), Some(0.0));
+    assert_eq!(legend.fraction(0.0), Some(0.5));
+    assert_eq!(legend.fraction(1.0), Some(0.75));
+    assert_eq!(legend.fraction(f64::NAN), None);
+    assert_eq!(legend.srgb_at(0.0), Palette::CoolWarm.srgb(0.5));
+    assert_eq!(legend.srgb_at(-2.0), Palette::CoolWarm.srgb(0.0));
+    assert_eq!(legend.srgb_at(2.0), Palette::CoolWarm.srgb(1.0));
+    assert_eq!(out.colors[4], srgb_to_linear_rgb(NEUTRAL_SRGB));
 }

@@ -77,8 +77,10 @@ const DIFFERENCES: &[((u32, u32), &str)] = &[
 ];
 
 /// The notes on the §5.9 surfaces (5.31–5.43), which share one.
-const CURVATURE: &str = "The thesis calls κ₁ + κ₂ = 2H the mean curvature; these maps colour |H|, \
-     the average. Each map's scale is set per quantity, so the colours are those of the thesis's \
+const CURVATURE: &str = "The thesis colours |K| and |κ₁ + κ₂| from blue to purple; these maps \
+     colour K and H = (κ₁ + κ₂)/2 with their signs on a diverging map (blue negative, grey zero, \
+     red positive), so that elliptic and hyperbolic points, and the side a surface bends to, can \
+     be told apart. Each map's scale is set per quantity, so the picture of H is that of \
      κ₁ + κ₂; the values of |H| in the table are half of κ₁ + κ₂.";
 
 /// Why figure `number`'s result differs from the thesis's, if it does.

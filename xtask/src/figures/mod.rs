@@ -147,10 +147,13 @@ impl Figure {
         format!("fig-{chapter}-{number:02}{}.{}", panel.suffix, self.format.extension())
     }
 
-    /// The file name of the render of a `.glb` panel: `fig-5-10.png`.
+    /// The file name of the render of a `.glb` panel: `fig-5-10.png`, or an SVG for a
+    /// curvature picture, which has its colour bar beside the render.
     fn render_file(&self, panel: &Panel) -> String {
         let (chapter, number) = self.number;
-        format!("fig-{chapter}-{number:02}{}.png", panel.suffix)
+        let extension =
+            if surfaces::has_colour_bar(self.number, panel.suffix) { "svg" } else { "png" };
+        format!("fig-{chapter}-{number:02}{}.{extension}", panel.suffix)
     }
 
     /// The title drawn above `panel`.
@@ -226,7 +229,14 @@ pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
             if figure.format == Format::Glb {
                 let png = renders::render_model(figure.number, &bytes)
                     .with_context(|| format!("rendering {file}"))?;
-                outputs.push((figure.render_file(panel), png));
+                let picture = if surfaces::has_colour_bar(figure.number, panel.suffix) {
+                    let (legend, symbol) = surfaces::colour_bar(figure.number, panel.suffix)?;
+                    let size = (renders::WIDTH, renders::HEIGHT);
+                    surfaces::colour_bar_svg(&png, size, &legend, symbol).into_bytes()
+                } else {
+                    png
+                };
+                outputs.push((figure.render_file(panel), picture));
             }
             outputs.push((file, bytes));
             bar.inc(1);

@@ -21,8 +21,8 @@ use hi_surface::{HarmonicSurface, TriangleMesh, sphere, torus};
 use super::{Figure, Format, Panel};
 
 /// The size of the renders of the models.
-const WIDTH: u32 = 400;
-const HEIGHT: u32 = 300;
+pub(crate) const WIDTH: u32 = 400;
+pub(crate) const HEIGHT: u32 = 300;
 /// Samples per pixel (anti-aliasing).
 const SPP: u32 = 4;
 /// The vertical field of view (radians).

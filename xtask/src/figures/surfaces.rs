@@ -17,18 +17,21 @@
 //! point. Subdivision stages are the control grids themselves as closed quad meshes, split into
 //! triangles, with area-weighted face normals ([`control_mesh`]).
 //!
-//! **Colours.** |K| and |H| (the thesis's "blue indicates little or no curvature, purple high"),
-//! from 0 blue to an extent a purple, with one a per surface and quantity shared by the
-//! parametric and the harmonic picture so that they compare: the 95th percentile of the
-//! parametric surface's values (at least 10⁻⁶ of the curvature of the surface's size, so that a
-//! flat surface is blue). Values above a are purple; undefined values (poles) grey.
+//! **Colours.** K and H with their signs (the thesis shows |K| and |H|, blue for little
+//! curvature and purple for much, which hides whether a point is elliptic or hyperbolic) on
+//! Moreland's diverging cool–warm map: −a blue, 0 light grey, +a red, with one a per surface
+//! and quantity shared by the parametric and the harmonic picture so that they compare: the
+//! 95th percentile of the parametric surface's |values| (at least 10⁻⁶ of the curvature of the
+//! surface's size, so that a flat surface is grey). Values beyond ±a take the end colours;
+//! undefined values (poles) are mid grey. Each picture is an SVG: the render, and beside it a
+//! colour bar with its values ([`colour_bar_svg`]).
 
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_surface::{
-    ColorMap, ColorScale, CurvatureQuantity, HarmonicSurface, MeshOptions, ParametricSurface,
-    SurfaceDerivs, TriangleMesh, compare_curvature, srgb_to_linear_rgb, test_surface,
-    test_surfaces,
+    ColorLegend, ColorMap, ColorScale, CurvatureQuantity, HarmonicSurface, MeshOptions, Palette,
+    ParametricSurface, SurfaceDerivs, TriangleMesh, compare_curvature, srgb_to_linear_rgb,
+    test_surface, test_surfaces,
 };
 
 use super::glb::glb;
@@ -97,12 +100,14 @@ const SPECS: [Spec; 13] = [
 
 /// What figures 5.31–5.43 draw.
 const COMPARISON_DRAWN: &str = "Six models, as the thesis's six pictures: (a) the parametric surface, \
-    (b) its Gaussian curvature \\|K\\| and (c) its mean curvature \\|H\\|, computed numerically (fourth-order differences, \
-    `ParametricSurface::curvature`); (d) the harmonic surface through the samples, (e) its \\|K\\| and (f) its \\|H\\|, \
+    (b) its Gaussian curvature K and (c) its mean curvature H, computed numerically (fourth-order differences, \
+    `ParametricSurface::curvature`); (d) the harmonic surface through the samples, (e) its K and (f) its H, \
     exact (`HarmonicSurface::curvature`). Triangle meshes over the thesis's parameter window, resolution per surface \
-    in [Meshes and colour scales](#surface-meshes); colours (vertex `COLOR_0`, linear RGB): \\|K\\| or \\|H\\| from 0 (blue) \
-    to a (purple), one a per surface and quantity shared by (b, e) and (c, f): the 95th percentile of the parametric \
-    surface's values (listed in the table); larger values purple, undefined values (poles) grey. The thesis's red spheres at \
+    in [Meshes and colour scales](#surface-meshes); colours (vertex `COLOR_0`, linear RGB) with their signs, on \
+    Moreland's diverging cool–warm map: −a blue, 0 light grey, +a red, one a per surface and quantity shared by (b, e) \
+    and (c, f): the 95th percentile of the parametric surface's \\|values\\| (listed in the table); values beyond ±a \
+    take the end colours, undefined values (poles) mid grey. Each curvature picture has its colour bar with its values \
+    beside the render, and says how many values lie beyond its ends. The thesis's red spheres at \
     the samples are drawn in (d), which passes through them, as small red octahedra on a light grey surface (not in \
     (a), to keep the files small).";
 
@@ -546,12 +551,137 @@ fn with_markers(mesh: &TriangleMesh, points: &[DVec3], radius: f64) -> Result<Tr
     Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
 }
 
-/// `mesh` coloured by the magnitudes of `values` (one per vertex) from 0 (blue) to `extent`
-/// (purple); NaN grey.
+/// The colour map of the §5.9 pictures: cool–warm from −`extent` to `extent`.
+fn signed_map(extent: f64) -> ColorMap {
+    ColorMap {
+        scale: ColorScale::Fixed { min: -extent, max: extent },
+        coverage: 1.0,
+        palette: Palette::CoolWarm,
+    }
+}
+
+/// `mesh` coloured by `values` (one per vertex) on [`signed_map`]; NaN grey.
 fn colored(mesh: TriangleMesh, values: &[f64], extent: f64) -> Result<TriangleMesh> {
-    let magnitudes: Vec<f64> = values.iter().map(|x| x.abs()).collect();
-    let map = ColorMap { scale: ColorScale::Fixed { min: 0.0, max: extent }, coverage: 1.0 };
-    Ok(mesh.try_with_colors(map.try_apply(&magnitudes)?.colors)?)
+    Ok(mesh.try_with_colors(signed_map(extent).try_apply(values)?.colors)?)
+}
+
+/// Whether panel `suffix` of figure `number` is a §5.9 curvature picture (with a colour bar).
+pub(crate) fn has_colour_bar(number: (u32, u32), suffix: &str) -> bool {
+    number.0 == 5
+        && (31..=43).contains(&number.1)
+        && (suffix.ends_with("-K") || suffix.ends_with("-H"))
+}
+
+/// The legend of panel `suffix` of figure `number` (see [`has_colour_bar`]) and its symbol.
+pub(crate) fn colour_bar(number: (u32, u32), suffix: &str) -> Result<(ColorLegend, &'static str)> {
+    let label = format!("{}.{}", number.0, number.1);
+    let spec = SPECS.iter().find(|s| s.figure == label).context("not a §5.9 figure")?;
+    let quantity =
+        if suffix.ends_with("-K") { CurvatureQuantity::Gaussian } else { CurvatureQuantity::Mean };
+    let c = Comparison::new(spec)?;
+    let side = if suffix.contains("harmonic") { Side::Harmonic } else { Side::Parametric };
+    let legend = signed_map(c.extent(quantity)?).try_apply(&c.values(side, quantity))?.legend;
+    Ok((legend, quantity.symbol()))
+}
+
+/// A number for a colour bar: three significant digits, a true minus sign.
+fn tick(x: f64) -> String {
+    let a = x.abs();
+    let s = if x == 0.0 {
+        "0".to_owned()
+    } else if (0.01..1000.0).contains(&a) {
+        let digits = (2 - a.log10().floor() as i32).max(0) as usize;
+        format!("{x:.digits$}")
+    } else {
+        let e = a.log10().floor() as i32;
+        format!("{:.2}·10{}", x / 10f64.powi(e), superscript(e))
+    };
+    s.replace('-', "−")
+}
+
+/// An exponent in superscript digits.
+fn superscript(e: i32) -> String {
+    e.to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                [d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect()
+}
+
+/// The render `png` (`width`×`height` pixels) with a colour bar of `legend` at its right: the
+/// palette from the legend's low end (bottom) to its high end (top), ticks at −a, −a/2, 0, a/2
+/// and a labelled with their values, the quantity's `symbol` above, and below it how many
+/// values the ends of the bar stand in for and how many were undefined.
+pub(crate) fn colour_bar_svg(
+    png: &[u8],
+    (width, height): (u32, u32),
+    legend: &ColorLegend,
+    symbol: &str,
+) -> String {
+    let bar_x = width + 16;
+    let (top, bottom) = (40.0, f64::from(height) - 50.0);
+    let total = width + 140;
+    let mut s = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{total}\" height=\"{height}\" \
+         viewBox=\"0 0 {total} {height}\" font-family=\"sans-serif\" font-size=\"13\">\n\
+         <rect width=\"{total}\" height=\"{height}\" fill=\"#fff\"/>\n\
+         <image width=\"{width}\" height=\"{height}\" href=\"data:image/png;base64,{}\"/>\n\
+         <defs><linearGradient id=\"bar\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">\n",
+        base64::encode(png)
+    );
+    let colour = |c: [f32; 3]| {
+        let [r, g, b] = c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8);
+        format!("#{r:02x}{g:02x}{b:02x}")
+    };
+    for k in 0..=16 {
+        let t = f64::from(k) / 16.0;
+        let value = legend.min + t * (legend.max - legend.min);
+        s += &format!(
+            "<stop offset=\"{t:.4}\" stop-color=\"{}\"/>\n",
+            colour(legend.srgb_at(value))
+        );
+    }
+    s += "</linearGradient></defs>\n";
+    s += &format!(
+        "<text x=\"{}\" y=\"{:.2}\" font-style=\"italic\" font-family=\"serif\" font-size=\"17\">{symbol}</text>\n\
+         <rect x=\"{bar_x}\" y=\"{top:.2}\" width=\"18\" height=\"{:.2}\" fill=\"url(#bar)\" stroke=\"#555\"/>\n",
+        bar_x + 3,
+        top - 12.0,
+        bottom - top
+    );
+    for k in 0..=4 {
+        let t = f64::from(k) / 4.0;
+        let value = legend.min + t * (legend.max - legend.min);
+        let y = bottom - t * (bottom - top);
+        s += &format!(
+            "<line x1=\"{}\" y1=\"{y:.2}\" x2=\"{}\" y2=\"{y:.2}\" stroke=\"#555\"/>\n\
+             <text x=\"{}\" y=\"{:.2}\">{}</text>\n",
+            bar_x + 18,
+            bar_x + 23,
+            bar_x + 26,
+            y + 4.5,
+            tick(value)
+        );
+    }
+    let mut notes = Vec::new();
+    if legend.n_clamped > 0 {
+        notes.push(format!("{} beyond the ends", legend.n_clamped));
+    }
+    if legend.n_invalid > 0 {
+        notes.push(format!("{} undefined (grey)", legend.n_invalid));
+    }
+    for (k, note) in notes.iter().enumerate() {
+        s += &format!(
+            "<text x=\"{}\" y=\"{:.2}\" font-size=\"11\" fill=\"#444\">{note}</text>\n",
+            width + 4,
+            bottom + 22.0 + 14.0 * k as f64
+        );
+    }
+    s += "</svg>\n";
+    s
 }
 
 /// Figure 4.1: the §5.9 surface `name` as a parametric mesh of `n_u`×`n_v` quads.
@@ -694,7 +824,8 @@ impl Comparison {
 
     /// The colour-scale extent of `quantity` (see the module notes).
     fn extent(&self, quantity: CurvatureQuantity) -> Result<f64> {
-        let map = ColorMap { scale: ColorScale::Magnitude, coverage: COVERAGE };
+        let map =
+            ColorMap { scale: ColorScale::Magnitude, coverage: COVERAGE, palette: Palette::Thesis };
         let a = map.try_apply(&self.values(Side::Parametric, quantity))?.legend.max;
         let floor = match quantity {
             CurvatureQuantity::Gaussian => FLOOR / (self.scale * self.scale),
