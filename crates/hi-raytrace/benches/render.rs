@@ -12,7 +12,13 @@ use hi_raytrace::{RenderSettings, TorusMethod, render, torus_scene};
 fn render_benches(c: &mut Criterion) {
     let mut group = c.benchmark_group("torus 64x64");
     group.sample_size(10);
-    let settings = RenderSettings { width: 64, height: 64, samples_per_pixel: 1, tile_size: 16 };
+    let settings = RenderSettings {
+        width: 64,
+        height: 64,
+        samples_per_pixel: 1,
+        tile_size: 16,
+        first_pass: 0,
+    };
     group.throughput(Throughput::Elements(64 * 64));
     for method in TorusMethod::ALL {
         let (scene, camera) = torus_scene(method).expect("the fixed torus scene is valid");

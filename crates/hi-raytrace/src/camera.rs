@@ -102,6 +102,127 @@ impl Camera {
         Camera::try_new(center + dir * distance, center, up, fov_y)
     }
 
+    /// A camera looking at `points` from direction `from` (from the points towards the eye),
+    /// as close as it can be with every point inside the central `fill` of the image's width
+    /// and height (0.8: a tenth of the frame left free at each side), and the points' extent
+    /// centred in the image; `up`, `fov_y` as for [`Camera::try_new`], `aspect` = width/height
+    /// of the image it will render. Unlike [`Camera::framing`], which fits a bounding sphere
+    /// (a long or flat object then fills a third of the frame), this frames what the points
+    /// cover as seen from `from`.
+    ///
+    /// Computed in the camera's frame (right x, up y, towards the eye z, about the target): a
+    /// point is inside when |x| ≤ fill·tan(φₓ/2)·(d − z) (φₓ the horizontal field of view) and
+    /// the same in y, so the least distance d is the largest of z + |x|/(fill·tan(φₓ/2)) and
+    /// z + |y|/(fill·tan(φᵧ/2));
+    /// the target is then moved across the view to the middle of the points' projected
+    /// extent and d found again, until the extent is centred (to 10⁻⁶ of the view, at most 32
+    /// times).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_raytrace::Camera;
+    /// // A 4 × 1 × 1 box seen from the front: it is framed by its width.
+    /// let corners: Vec<DVec3> = (0..8)
+    ///     .map(|k| DVec3::new([-2.0, 2.0][k & 1], [-0.5, 0.5][(k >> 1) & 1], [-0.5, 0.5][k >> 2]))
+    ///     .collect();
+    /// let cam = Camera::fitting(&corners, DVec3::Y, DVec3::Z, 0.6, 4.0 / 3.0, 0.8)?;
+    /// let widest = corners
+    ///     .iter()
+    ///     .map(|p| {
+    ///         let v = *p - cam.eye();
+    ///         v.dot(cam.right()).abs() / (v.dot(cam.forward()) * (0.3f64).tan() * 4.0 / 3.0)
+    ///     })
+    ///     .fold(0.0, f64::max);
+    /// assert!((widest - 0.8).abs() < 1e-9);
+    /// # Ok::<(), hi_raytrace::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidValue`] for no points, `fill` outside (0, 1] or `aspect` not positive;
+    /// [`Error::NonFinite`] for a non-finite point; the errors of [`Camera::try_new`].
+    pub fn fitting(
+        points: &[DVec3],
+        from: DVec3,
+        up: DVec3,
+        fov_y: f64,
+        aspect: f64,
+        fill: f64,
+    ) -> Result<Self, Error> {
+        if points.is_empty() {
+            return Err(Error::InvalidValue {
+                what: "points to frame",
+                value: 0.0,
+                expected: "at least one point",
+            });
+        }
+        if let Some(p) = points.iter().find(|p| !p.is_finite()) {
+            check_finite("a point to frame", *p)?;
+        }
+        if !(fill > 0.0 && fill <= 1.0) {
+            return Err(Error::InvalidValue {
+                what: "frame fill",
+                value: fill,
+                expected: "a fraction in (0, 1]",
+            });
+        }
+        let aspect = crate::error::check_positive("image aspect ratio", aspect)?;
+        let (lo, hi) = points
+            .iter()
+            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+        let mut target = 0.5 * (lo + hi);
+        let size = (hi - lo).length().max(f64::MIN_POSITIVE.sqrt());
+        // The orientation only (the distance comes below).
+        let probe = Camera::try_new(target + from.normalize_or_zero() * size, target, up, fov_y)?;
+        let (right, up_dir, back) = (probe.right, probe.up, -probe.forward);
+        let tan_y = (0.5 * fov_y).tan();
+        let tan_x = tan_y * aspect;
+        // The least distance from `target` with every point inside the frame (and in front).
+        let fit = |target: DVec3| {
+            points.iter().fold(f64::NEG_INFINITY, |d, p| {
+                let v = *p - target;
+                let z = v.dot(back);
+                d.max(z + v.dot(right).abs() / (fill * tan_x))
+                    .max(z + v.dot(up_dir).abs() / (fill * tan_y))
+                    .max(z + 1e-6 * size)
+            })
+        };
+        let mut distance = fit(target);
+        for _ in 0..32 {
+            // The middle of the projected extent (in units of the distance), moved to the
+            // centre of the image.
+            let (mut x0, mut x1, mut y0, mut y1) =
+                (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+            for p in points {
+                let v = *p - target;
+                let depth = distance - v.dot(back);
+                let (x, y) = (v.dot(right) / depth, v.dot(up_dir) / depth);
+                (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+            }
+            let (mx, my) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            if mx.abs().max(my.abs()) < 1e-6 {
+                break;
+            }
+            target += (right * mx + up_dir * my) * distance;
+            distance = fit(target);
+        }
+        Camera::try_new(target + back * distance, target, up, fov_y)
+    }
+
+    /// The unit vector to the right in the image.
+    #[must_use]
+    pub fn right(&self) -> DVec3 {
+        self.right
+    }
+
+    /// The unit vector up in the image.
+    #[must_use]
+    pub fn up(&self) -> DVec3 {
+        self.up
+    }
+
     /// The eye point.
     #[must_use]
     pub fn eye(&self) -> DVec3 {

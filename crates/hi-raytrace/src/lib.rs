@@ -50,6 +50,8 @@ pub use error::Error;
 pub use harmonic::{HarmonicHit, HarmonicObject, HarmonicSettings, IntervalMethod, SurfaceColor};
 pub use mesh::{MeshObject, TriangleHit, intersect_triangle};
 pub use ray::{Hit, Ray, offset_ray_origin};
-pub use render::{MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderSettings, Rendering, render};
+pub use render::{
+    ADAPTIVE_SPREAD, MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderSettings, Rendering, render,
+};
 pub use scene::{Geometry, Light, Material, Scene, SceneObject};
 pub use timing::{TorusMethod, render_torus, torus_scene};

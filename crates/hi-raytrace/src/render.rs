@@ -36,12 +36,30 @@ pub struct RenderSettings {
     pub samples_per_pixel: u32,
     /// Side of the square tiles rendered in parallel.
     pub tile_size: u32,
+    /// Adaptive supersampling: when above 0 and below `samples_per_pixel`, each pixel first
+    /// takes this many samples, and only where they differ by more than [`ADAPTIVE_SPREAD`]
+    /// in a channel, or their mean differs that much from a neighbouring pixel's (an edge, a
+    /// shadow's border, a highlight, a feature thinner than a pixel), is it rendered again with
+    /// all `samples_per_pixel` (the same samples a plain render takes there, so edges come out
+    /// exactly as in one); elsewhere the first samples' mean is the pixel. 0: every pixel
+    /// takes `samples_per_pixel`.
+    pub first_pass: u32,
 }
 
+/// The spread of linear colour between a pixel's first samples above which
+/// [`RenderSettings::first_pass`] renders it with every sample.
+pub const ADAPTIVE_SPREAD: f32 = 0.02;
+
 impl Default for RenderSettings {
-    /// 512 × 512, 4 samples per pixel, 16-pixel tiles.
+    /// 512 × 512, 4 samples per pixel, 16-pixel tiles, no first pass.
     fn default() -> Self {
-        RenderSettings { width: 512, height: 512, samples_per_pixel: 4, tile_size: 16 }
+        RenderSettings {
+            width: 512,
+            height: 512,
+            samples_per_pixel: 4,
+            tile_size: 16,
+            first_pass: 0,
+        }
     }
 }
 
@@ -167,7 +185,8 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
 /// let light = Light::Directional { direction: DVec3::new(1.0, 1.0, 2.0), intensity: [1.0; 3] };
 /// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(torus))], vec![light], [0.1; 3])?;
 /// let camera = Camera::try_new(DVec3::new(0.0, -6.0, 4.0), DVec3::ZERO, DVec3::Z, 0.7)?;
-/// let settings = RenderSettings { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8 };
+/// let settings =
+///     RenderSettings { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8, first_pass: 0 };
 /// let out = render(&scene, &camera, &settings, None)?;
 /// assert_eq!(out.image.dimensions(), (24, 16));
 /// assert_eq!(out.counts.camera, 24 * 16);
@@ -197,33 +216,73 @@ pub fn render(
             let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
             let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
             let mut counts = RayCounts::default();
+            // The mean colour of `n` samples of pixel (x, y) (stratified for `n`), and the
+            // spread of the samples in their widest channel.
+            let mut pixel = |x: u32, y: u32, n: u32| {
+                let mut sum = [0.0f64; 3];
+                let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+                for s in 0..n {
+                    let (ox, oy) = sample_offset(x, y, s, n);
+                    let ray = camera.ray(
+                        (f64::from(x) + ox) / f64::from(w),
+                        (f64::from(y) + oy) / f64::from(h),
+                        aspect,
+                    );
+                    counts.camera += 1;
+                    let color = match scene.intersect(&ray) {
+                        Some(hit) => {
+                            counts.hits += 1;
+                            let (c, n_shadow, blocked) = scene.shade(&ray, &hit);
+                            counts.shadow += n_shadow;
+                            counts.shadowed += usize::from(blocked);
+                            c
+                        }
+                        None => background,
+                    };
+                    for k in 0..3 {
+                        sum[k] += f64::from(color[k]);
+                        lo[k] = lo[k].min(color[k]);
+                        hi[k] = hi[k].max(color[k]);
+                    }
+                }
+                let spread = (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max);
+                (sum.map(|c| c / f64::from(n)), spread)
+            };
+            let first = settings.first_pass;
+            let adaptive = first > 0 && first < spp;
+            // The first pass over the tile and a one-pixel border around it (a pixel whose
+            // few samples all miss a thin edge shows it by differing from a neighbour).
+            let (bx0, by0) = (x0.saturating_sub(1), y0.saturating_sub(1));
+            let (bx1, by1) = ((x1 + 1).min(w), (y1 + 1).min(h));
+            let bw = (bx1 - bx0) as usize;
+            let coarse: Vec<([f64; 3], f32)> = if adaptive {
+                (by0..by1)
+                    .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))
+                    .map(|(x, y)| pixel(x, y, first))
+                    .collect()
+            } else {
+                Vec::new()
+            };
+            let at = |x: u32, y: u32| &coarse[(y - by0) as usize * bw + (x - bx0) as usize];
             for y in y0..y1 {
                 for x in x0..x1 {
-                    let mut sum = [0.0f64; 3];
-                    for s in 0..spp {
-                        let (ox, oy) = sample_offset(x, y, s, spp);
-                        let ray = camera.ray(
-                            (f64::from(x) + ox) / f64::from(w),
-                            (f64::from(y) + oy) / f64::from(h),
-                            aspect,
-                        );
-                        counts.camera += 1;
-                        let color = match scene.intersect(&ray) {
-                            Some(hit) => {
-                                counts.hits += 1;
-                                let (c, n_shadow, blocked) = scene.shade(&ray, &hit);
-                                counts.shadow += n_shadow;
-                                counts.shadowed += usize::from(blocked);
-                                c
-                            }
-                            None => background,
-                        };
-                        for k in 0..3 {
-                            sum[k] += f64::from(color[k]);
-                        }
-                    }
-                    let px = sum.map(|c| {
-                        let linear = (c / f64::from(spp)).clamp(0.0, 1.0) as f32;
+                    let mean = if adaptive {
+                        let (mean, spread) = *at(x, y);
+                        let smooth = spread <= ADAPTIVE_SPREAD
+                            && (y.saturating_sub(1)..(y + 2).min(h)).all(|ny| {
+                                (x.saturating_sub(1)..(x + 2).min(w)).all(|nx| {
+                                    let other = at(nx, ny).0;
+                                    (0..3).all(|k| {
+                                        ((other[k] - mean[k]).abs() as f32) <= ADAPTIVE_SPREAD
+                                    })
+                                })
+                            });
+                        if smooth { mean } else { pixel(x, y, spp).0 }
+                    } else {
+                        pixel(x, y, spp).0
+                    };
+                    let px = mean.map(|c| {
+                        let linear = c.clamp(0.0, 1.0) as f32;
                         (linear_to_srgb(linear) * 255.0).round().clamp(0.0, 255.0) as u8
                     });
                     pixels.push(px);

@@ -11,7 +11,7 @@ use hi_raytrace::{
 use hi_surface::{ColorMap, CurvatureQuantity, MeshOptions, TriangleMesh, sphere, torus};
 
 fn small(width: u32, height: u32, spp: u32) -> RenderSettings {
-    RenderSettings { width, height, samples_per_pixel: spp, tile_size: 8 }
+    RenderSettings { width, height, samples_per_pixel: spp, tile_size: 8, first_pass: 0 }
 }
 
 fn sun(direction: DVec3) -> Light {
@@ -239,4 +239,106 @@ fn bad_input_is_an_error() {
     for e in [Error::EmptyScene, Error::ZeroSizeImage { width: 0, height: 3 }] {
         assert!(!e.to_string().contains('\n'), "{e}");
     }
+}
+
+/// Where a point falls in the image of `cam` (aspect `aspect`), in units of the half-width and
+/// half-height: inside the frame when both are in [−1, 1].
+fn image_position(cam: &Camera, p: DVec3, aspect: f64) -> (f64, f64) {
+    let v = p - cam.eye();
+    let depth = v.dot(cam.forward());
+    let t = (0.5 * cam.fov_y()).tan();
+    (v.dot(cam.right()) / (depth * t * aspect), v.dot(cam.up()) / (depth * t))
+}
+
+#[test]
+fn fitting_frames_what_the_points_cover() {
+    // A long thin rod along x and a flat disc, seen from a slanted direction.
+    let rod: Vec<DVec3> =
+        (0..=40).map(|k| DVec3::new(f64::from(k) * 0.25 - 3.0, 0.1, 0.05)).collect();
+    let disc: Vec<DVec3> = (0..64)
+        .map(|k| {
+            let a = f64::from(k) * std::f64::consts::TAU / 64.0;
+            DVec3::new(5.0 + a.cos(), 2.0 + a.sin(), -1.0)
+        })
+        .collect();
+    for points in [rod, disc] {
+        for from in [DVec3::new(0.9, -2.0, 1.3), DVec3::new(-1.0, 0.2, 0.4)] {
+            let aspect = 4.0 / 3.0;
+            let cam = Camera::fitting(&points, from, DVec3::Z, 0.6, aspect, 0.8).unwrap();
+            let pos: Vec<(f64, f64)> =
+                points.iter().map(|p| image_position(&cam, *p, aspect)).collect();
+            let widest = pos.iter().map(|(x, y)| x.abs().max(y.abs())).fold(0.0, f64::max);
+            // Every point inside 80 % of the frame, and the frame as tight as that allows.
+            assert!((widest - 0.8).abs() < 1e-9, "{widest}");
+            // Centred: the extent is symmetric about the middle.
+            let (x0, x1) = pos
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
+            let (y0, y1) = pos
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+            assert!((x0 + x1).abs() < 1e-4 && (y0 + y1).abs() < 1e-4, "{x0} {x1} {y0} {y1}");
+            // Seen from `from`.
+            assert!(cam.forward().dot(from.normalize()) < -0.999_999);
+        }
+    }
+}
+
+#[test]
+fn fitting_names_bad_input() {
+    let p = [DVec3::ZERO, DVec3::X];
+    let err = |r: Result<Camera, Error>| r.unwrap_err().to_string();
+    assert!(
+        err(Camera::fitting(&[], DVec3::Y, DVec3::Z, 0.6, 1.0, 0.8)).contains("points to frame")
+    );
+    assert!(err(Camera::fitting(&p, DVec3::Y, DVec3::Z, 0.6, 1.0, 0.0)).contains("fill"));
+    assert!(err(Camera::fitting(&p, DVec3::Y, DVec3::Z, 0.6, 0.0, 0.8)).contains("aspect"));
+    let nan = [DVec3::ZERO, DVec3::new(f64::NAN, 0.0, 0.0)];
+    assert!(
+        err(Camera::fitting(&nan, DVec3::Y, DVec3::Z, 0.6, 1.0, 0.8)).contains("point to frame")
+    );
+}
+
+#[test]
+fn a_first_pass_renders_edges_in_full_and_the_rest_from_its_samples() {
+    let torus_mesh = TriangleMesh::try_from_surface(
+        &torus(2.0, 0.6),
+        &MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() },
+    )
+    .unwrap();
+    let scene = Scene::try_new(
+        vec![SceneObject::new(Geometry::Mesh(MeshObject::new(torus_mesh)))],
+        vec![sun(DVec3::new(1.0, -1.0, 2.0))],
+        [1.0; 3],
+    )
+    .unwrap();
+    let camera = Camera::try_new(DVec3::new(0.0, -6.0, 4.0), DVec3::ZERO, DVec3::Z, 0.8).unwrap();
+    let full = render(&scene, &camera, &small(48, 32, 16), None).unwrap();
+    let adaptive =
+        render(&scene, &camera, &RenderSettings { first_pass: 4, ..small(48, 32, 16) }, None)
+            .unwrap();
+    // Fewer rays: 4 for every pixel of each 8 × 8 tile and of the one-pixel border around it
+    // (inside the image), and 16 more for each pixel on an edge.
+    let pixels = 48 * 32;
+    let border = |n: usize, size: usize| {
+        (0..n).map(move |t| (8 * t + 9).min(size) - (8 * t).saturating_sub(1))
+    };
+    let first: usize = border(6, 48).map(|a| border(4, 32).map(|b| a * b).sum::<usize>()).sum();
+    let again = (adaptive.counts.camera - 4 * first) / 16;
+    assert_eq!(adaptive.counts.camera, 4 * first + 16 * again, "4, or 4 + 16, per pixel");
+    assert!(again > 0 && again < pixels / 2, "{again} of {pixels} pixels taken again");
+    assert!(adaptive.counts.camera < full.counts.camera, "{:?}", adaptive.counts);
+    // The background and the torus's outline: both renders agree exactly where the first pass
+    // took every sample; elsewhere they differ by little (a smooth pixel's 4 samples lie
+    // within ADAPTIVE_SPREAD of each other).
+    let (mut same, mut worst) = (0, 0u8);
+    for (a, b) in full.image.pixels().zip(adaptive.image.pixels()) {
+        let d = (0..3).map(|k| a.0[k].abs_diff(b.0[k])).max().unwrap_or(0);
+        same += usize::from(d == 0);
+        worst = worst.max(d);
+    }
+    assert!(same >= again, "{same} identical pixels");
+    assert!(worst <= 8, "largest difference {worst} of 255");
+    // Corner pixels see only the background: the same from 4 samples as from 16.
+    assert_eq!(full.image.get_pixel(0, 0), adaptive.image.get_pixel(0, 0));
 }

@@ -422,8 +422,13 @@ fn render_row(
         Light::Directional { direction: eye + up * 1.2 + side * 0.6, intensity: [0.85; 3] },
         Light::Directional { direction: eye - side, intensity: [0.3; 3] },
     ];
-    let settings =
-        RenderSettings { width: PANEL.0, height: PANEL.1, samples_per_pixel: 4, tile_size: 16 };
+    let settings = RenderSettings {
+        width: PANEL.0,
+        height: PANEL.1,
+        samples_per_pixel: 4,
+        tile_size: 16,
+        first_pass: 0,
+    };
     [scan_mesh, read(poisson)?, read(ours)?]
         .into_iter()
         .map(|mesh| {

@@ -221,14 +221,21 @@ pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
     };
     let mut outputs = Vec::with_capacity(count + 1);
     for figure in &figures {
+        let mut drawn = Vec::with_capacity(figure.panels.len());
         for panel in figure.panels {
             let file = figure.file(panel);
             bar.set_message(file.clone());
             let bytes =
                 (panel.draw)(&figure.title(panel)).with_context(|| format!("drawing {file}"))?;
-            if figure.format == Format::Glb {
-                let png = renders::render_model(figure.number, &bytes)
-                    .with_context(|| format!("rendering {file}"))?;
+            drawn.push((file, bytes));
+            bar.inc(1);
+        }
+        if figure.format == Format::Glb {
+            // The panels' renders, framed together when they show one object.
+            let glbs: Vec<&[u8]> = drawn.iter().map(|(_, b)| b.as_slice()).collect();
+            let pngs = renders::render_models(figure.number, &glbs)
+                .with_context(|| format!("rendering figure {}", figure.label()))?;
+            for (panel, png) in figure.panels.iter().zip(pngs) {
                 let picture = if surfaces::has_colour_bar(figure.number, panel.suffix) {
                     let (legend, symbol) = surfaces::colour_bar(figure.number, panel.suffix)?;
                     let size = (renders::WIDTH, renders::HEIGHT);
@@ -238,9 +245,8 @@ pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
                 };
                 outputs.push((figure.render_file(panel), picture));
             }
-            outputs.push((file, bytes));
-            bar.inc(1);
         }
+        outputs.extend(drawn);
     }
     let mut computed = Vec::new();
     for table in tables() {

@@ -24,7 +24,15 @@ use super::{Figure, Format, Panel};
 pub(crate) const WIDTH: u32 = 400;
 pub(crate) const HEIGHT: u32 = 300;
 /// Samples per pixel (anti-aliasing).
-const SPP: u32 = 4;
+const SPP: u32 = 16;
+/// Samples per pixel of figure 5.26, whose every ray is solved by interval Newton.
+const RAYTRACED_SPP: u32 = 4;
+/// Samples a pixel takes first; it takes all [`SPP`] only where they differ (an edge, a shadow).
+const FIRST_PASS: u32 = 4;
+/// The share of the frame's width and height a model fills ([`Camera::fitting`]).
+const FILL: f64 = 0.8;
+/// The colour of the floor the models stand on (it takes their shadows).
+const FLOOR_COLOR: [f32; 3] = [1.0, 1.0, 1.0];
 /// The vertical field of view (radians).
 const FOV: f64 = 0.6;
 
@@ -75,29 +83,77 @@ fn lights(view: DVec3) -> Vec<Light> {
 
 /// Renders `scene` through `camera` to PNG bytes.
 fn png(scene: &Scene, camera: &Camera, spp: u32) -> Result<Vec<u8>> {
-    let settings =
-        RenderSettings { width: WIDTH, height: HEIGHT, samples_per_pixel: spp, tile_size: 16 };
+    let settings = RenderSettings {
+        width: WIDTH,
+        height: HEIGHT,
+        samples_per_pixel: spp,
+        tile_size: 16,
+        first_pass: FIRST_PASS,
+    };
     let out = render(scene, camera, &settings, None)?;
     ensure!(out.counts.hits > 0, "the render hit nothing");
     Ok(out.png_bytes()?)
 }
 
-/// The render of the model `glb` of figure `number`: framed, lit from the front, on white.
-pub(crate) fn render_model(number: (u32, u32), glb: &[u8]) -> Result<Vec<u8>> {
-    let mesh = mesh_from_glb(glb)?;
-    let (lo, hi) = mesh.bounds();
-    let mut object = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
-    object.material.color = [0.72, 0.74, 0.78];
+/// The renders of the models `glbs` (the panels of figure `number`, in order): each lit from
+/// the front on a light floor that takes its shadow, on white, filling [`FILL`] of the frame.
+/// When the panels show one object at about one size (every panel's bounding box at least half
+/// the diagonal of all of theirs: a subdivision series, a surface and its curvature), one
+/// camera frames them all, so that they compare; otherwise each panel is framed alone.
+pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Vec<u8>>> {
+    let meshes: Vec<TriangleMesh> = glbs.iter().map(|g| mesh_from_glb(g)).collect::<Result<_>>()?;
     let from = view(number);
-    let scene = Scene::try_new(vec![object], lights(from), [1.0; 3])?;
-    let camera = Camera::framing(
-        0.5 * (lo + hi),
-        (0.5 * (hi - lo).length()).max(1e-9),
-        from,
-        DVec3::Z,
-        FOV,
+    let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
+    let diagonal = |m: &TriangleMesh| {
+        let (lo, hi) = m.bounds();
+        (hi - lo).length()
+    };
+    let all: Vec<DVec3> = meshes.iter().flat_map(|m| m.positions().iter().copied()).collect();
+    let (lo, hi) = all
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let shared = meshes.iter().all(|m| diagonal(m) >= 0.5 * (hi - lo).length());
+    meshes
+        .into_iter()
+        .map(|mesh| {
+            let camera = if shared {
+                Camera::fitting(&all, from, DVec3::Z, FOV, aspect, FILL)?
+            } else {
+                Camera::fitting(mesh.positions(), from, DVec3::Z, FOV, aspect, FILL)?
+            };
+            let (lo, hi) = if shared { (lo, hi) } else { mesh.bounds() };
+            let mut object = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
+            object.material.color = [0.72, 0.74, 0.78];
+            let scene = Scene::try_new(vec![object, floor(lo, hi)?], lights(from), [1.0; 3])?;
+            png(&scene, &camera, SPP)
+        })
+        .collect()
+}
+
+/// The render of one model `glb` of figure `number`, as [`render_models`] makes it.
+pub(crate) fn render_model(number: (u32, u32), glb: &[u8]) -> Result<Vec<u8>> {
+    render_models(number, &[glb])?.pop().context("no render")
+}
+
+/// A square floor under the box (`lo`, `hi`): just below its lowest point, matt and light,
+/// and 80 times its size, so that its far edge is above the frame (every view looks down at
+/// the model by more than half the field of view).
+fn floor(lo: DVec3, hi: DVec3) -> Result<SceneObject> {
+    let size = (hi - lo).length().max(1e-9);
+    let (c, s) = (0.5 * (lo + hi), 40.0 * size);
+    let z = lo.z - 0.02 * size;
+    let corners =
+        [(-s, -s), (s, -s), (s, s), (-s, s)].map(|(x, y)| DVec3::new(c.x + x, c.y + y, z));
+    let mesh = TriangleMesh::try_new(
+        corners.to_vec(),
+        vec![DVec3::Z; 4],
+        vec![DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y],
+        vec![[0, 1, 2], [0, 2, 3]],
     )?;
-    png(&scene, &camera, SPP)
+    let mut floor = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
+    floor.material.color = FLOOR_COLOR;
+    floor.material.specular = 0.0;
+    Ok(floor)
 }
 
 /// Figure 5.25: the harmonic torus tessellated (128×256 quads) and rendered as triangles.
@@ -155,7 +211,7 @@ fn raytraced_torus() -> Result<Vec<u8>> {
         DVec3::Z,
         PI / 5.0,
     )?;
-    png(&scene, &camera, 1)
+    png(&scene, &camera, RAYTRACED_SPP)
 }
 
 /// The figures of this module.
@@ -165,7 +221,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "A scanline-rendered harmonic surface (torus)",
         drawn: "The harmonic torus through the 4×4 torus grid (R = 2, r = 1), tessellated into 128×256 quads with \
                 its exact normals and rendered as triangles (`hi_raytrace::MeshObject` in an obvhs BVH, the \
-                renderer's stand-in for the thesis's scanline rendering), 400×300, 4 samples per pixel, a \
+                renderer's stand-in for the thesis's scanline rendering), 400×300, 4 samples per pixel and 16 where they or a neighbour differ (edges, shadows' borders), a \
                 directional and a point light with shadows. `cargo xtask bench render` times it beside the direct \
                 methods.",
         data: "the exact 4×4 torus grid of MATH.md §3 (`hi_surface::torus(2, 1)`).",
@@ -178,7 +234,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The harmonic torus and the harmonic sphere (each through its exact grid) ray traced directly: every \
                 camera and shadow ray is intersected with the surfaces themselves by interval Newton (Krawczyk) \
                 on p(u, v) − (o + t·d) = 0 in `hi-interval` arithmetic, with bisection where Krawczyk cannot \
-                decide, over a floor of two triangles; 400×300, one sample per pixel, shadows from a directional \
+                decide, over a floor of two triangles; 400×300, 4 samples per pixel, shadows from a directional \
                 and a point light. The thesis took several hours for its torus; this takes seconds.",
         data: "exact: `hi_surface::torus(2, 1)` and `hi_surface::sphere(1)` moved to (2.6, 2.4, 0).",
         format: Format::Png,
