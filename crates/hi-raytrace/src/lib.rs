@@ -48,7 +48,7 @@ pub use bezier::{BezierHit, BezierObject, BezierSettings};
 pub use camera::Camera;
 pub use error::Error;
 pub use harmonic::{HarmonicHit, HarmonicObject, HarmonicSettings, IntervalMethod, SurfaceColor};
-pub use mesh::{MeshObject, TriangleHit, intersect_triangle};
+pub use mesh::{EdgeStyle, MeshObject, TriangleHit, intersect_triangle};
 pub use ray::{Hit, Ray, offset_ray_origin};
 pub use render::{
     ADAPTIVE_SPREAD, MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderSettings, Rendering, render,

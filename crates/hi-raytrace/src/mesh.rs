@@ -7,14 +7,29 @@
 use glam::DVec3;
 use hi_surface::TriangleMesh;
 
+use crate::Error;
 use crate::bvh::Bvh;
 use crate::ray::{Ray, gamma};
 
-/// A triangle mesh ready for ray tracing: the mesh and a BVH over its triangles.
+/// A triangle mesh ready for ray tracing: the mesh and a BVH over its triangles, and the
+/// edges drawn over it, if any ([`MeshObject::with_edges`]).
 #[derive(Clone, Debug)]
 pub struct MeshObject {
     mesh: TriangleMesh,
     bvh: Bvh,
+    /// Per triangle, bit k set when its edge from corner k to corner k + 1 is drawn.
+    edge_flags: Vec<u8>,
+    edge_style: Option<EdgeStyle>,
+}
+
+/// How [`MeshObject::with_edges`] draws edges: a colour, and a width as an angle seen from the
+/// eye (so a line is as wide near as far: about `2·tan(fov/2)/height` radians per pixel).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EdgeStyle {
+    /// Linear RGB.
+    pub color: [f32; 3],
+    /// Width in radians as seen along the ray.
+    pub width: f64,
 }
 
 /// A hit on a triangle: parameter and barycentric coordinates (b₀ + b₁ + b₂ = 1, the point is
@@ -41,7 +56,95 @@ impl MeshObject {
             })
             .collect();
         let bvh = Bvh::build(&boxes);
-        MeshObject { mesh, bvh }
+        MeshObject { mesh, bvh, edge_flags: Vec::new(), edge_style: None }
+    }
+
+    /// The mesh with `edges` (pairs of vertex indices, in either order) drawn over it in
+    /// `style`: a triangle side that is one of them is a line, where the hit lies within half
+    /// the width of it (the distance from the side being the opposite barycentric coordinate
+    /// times the triangle's height over that side). Sides not listed (a quad's diagonal) are
+    /// not drawn; an edge that is no triangle's side draws nothing.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidValue`] for a vertex index out of range or a width that is not positive
+    /// and finite.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::{DVec2, DVec3};
+    /// use hi_raytrace::{EdgeStyle, MeshObject, Ray};
+    /// use hi_surface::TriangleMesh;
+    ///
+    /// // A unit square of two triangles; its outline drawn, not its diagonal.
+    /// let p = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+    /// let mesh = TriangleMesh::try_new(p, vec![DVec3::Z; 4], vec![DVec2::ZERO; 4], vec![[0, 1, 2], [0, 2, 3]])?;
+    /// let style = EdgeStyle { color: [0.0; 3], width: 0.02 };
+    /// let square = MeshObject::new(mesh).with_edges(&[[0, 1], [1, 2], [2, 3], [3, 0]], style)?;
+    /// let down = |x: f64, y: f64| Ray::new(DVec3::new(x, y, 1.0), -DVec3::Z);
+    /// let on = |r: Ray| { let (tri, h) = square.intersect(&r).unwrap(); square.edge_color(tri, &h, &r).is_some() };
+    /// assert!(on(down(0.5, 0.005))); // beside the side y = 0
+    /// assert!(!on(down(0.5, 0.5))); // in the middle
+    /// assert!(!on(down(0.3, 0.3))); // on the diagonal
+    /// # Ok::<(), hi_raytrace::Error>(())
+    /// ```
+    pub fn with_edges(mut self, edges: &[[u32; 2]], style: EdgeStyle) -> Result<Self, Error> {
+        let n = self.mesh.n_vertices();
+        if let Some(&bad) = edges.iter().flatten().find(|&&k| k as usize >= n) {
+            return Err(Error::InvalidValue {
+                what: "edge vertex index",
+                value: f64::from(bad),
+                expected: "less than the number of vertices",
+            });
+        }
+        if !(style.width > 0.0 && style.width.is_finite()) {
+            return Err(Error::InvalidValue {
+                what: "edge width",
+                value: style.width,
+                expected: "a positive angle in radians",
+            });
+        }
+        let mut keys: Vec<(u32, u32)> = edges.iter().map(|&[a, b]| (a.min(b), a.max(b))).collect();
+        keys.sort_unstable();
+        keys.dedup();
+        self.edge_flags = self
+            .mesh
+            .triangles()
+            .iter()
+            .map(|t| {
+                (0..3).fold(0u8, |flags, k| {
+                    let (a, b) = (t[k], t[(k + 1) % 3]);
+                    let drawn = keys.binary_search(&(a.min(b), a.max(b))).is_ok();
+                    flags | (u8::from(drawn) << k)
+                })
+            })
+            .collect();
+        self.edge_style = Some(style);
+        Ok(self)
+    }
+
+    /// The colour of the edge that the hit `h` on triangle `tri` by `ray` lies on, if it lies
+    /// on one drawn by [`MeshObject::with_edges`].
+    #[must_use]
+    pub fn edge_color(&self, tri: usize, h: &TriangleHit, ray: &Ray) -> Option<[f32; 3]> {
+        let style = self.edge_style?;
+        let flags = *self.edge_flags.get(tri)?;
+        if flags == 0 {
+            return None;
+        }
+        let p = self.mesh.triangles()[tri].map(|k| self.mesh.positions()[k as usize]);
+        let twice_area = (p[1] - p[0]).cross(p[2] - p[0]).length();
+        let half = 0.5 * style.width * h.t * ray.dir.length();
+        (0..3)
+            .filter(|k| flags >> k & 1 == 1)
+            .any(|k| {
+                // The side from corner k to k + 1 is opposite corner k + 2.
+                let j = (k + 2) % 3;
+                let side = (p[(k + 1) % 3] - p[k]).length();
+                side > 0.0 && h.b[j] * twice_area / side <= half
+            })
+            .then_some(style.color)
     }
 
     /// The mesh.

@@ -230,6 +230,7 @@ impl Scene {
             let hit = match &object.geometry {
                 Geometry::Mesh(m) => m.intersect(&r).map(|(tri, h)| {
                     let (point, error, geometric, shading, color) = m.surface_at(tri, &h);
+                    let color = m.edge_color(tri, &h, &r).or(color);
                     Hit {
                         t: h.t,
                         point,

@@ -15,6 +15,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail, ensure};
+use glam::{DVec2, DVec3};
 use hi_surface::TriangleMesh;
 
 /// The `.glb` file of `mesh`, checked by reading it back.
@@ -23,10 +24,48 @@ use hi_surface::TriangleMesh;
 ///
 /// If writing fails or the file does not read back as `mesh` ([`check_read_back`]).
 pub(crate) fn glb(mesh: &TriangleMesh) -> Result<Vec<u8>> {
+    glb_with_edges(mesh, &[])
+}
+
+/// The `.glb` file of `mesh` with `edges` as a second primitive of lines
+/// (`hi_surface::export::write_glb_with_edges`), checked by reading it back.
+///
+/// # Errors
+///
+/// As [`glb`].
+pub(crate) fn glb_with_edges(mesh: &TriangleMesh, edges: &[[u32; 2]]) -> Result<Vec<u8>> {
     let mut bytes = Vec::new();
-    hi_surface::export::write_glb(mesh, &mut bytes).context("writing the GLB")?;
-    check_read_back(mesh, &bytes).context("reading the GLB back")?;
+    hi_surface::export::write_glb_with_edges(mesh, edges, &mut bytes).context("writing the GLB")?;
+    check_read_back(mesh, edges, &bytes).context("reading the GLB back")?;
     Ok(bytes)
+}
+
+/// A polygon mesh drawn flat, with its polygons' outlines: each polygon keeps its own corners
+/// with its Newell normal (the one plane that fits a non-planar polygon best) and is fanned into
+/// triangles; the edges are each polygon's sides, by those corners (a side between two
+/// polygons is listed by both), so a quad's diagonal is not among them. Polygons with no area
+/// are left out.
+///
+/// # Errors
+///
+/// If no polygon is left or there are more than 2³² corners.
+pub(crate) fn flat_with_edges(polygons: &[Vec<DVec3>]) -> Result<(TriangleMesh, Vec<[u32; 2]>)> {
+    let (mut positions, mut normals, mut triangles, mut edges) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for polygon in polygons {
+        let k = polygon.len();
+        let newell: DVec3 = (0..k).map(|i| polygon[i].cross(polygon[(i + 1) % k])).sum();
+        let Some(normal) = newell.try_normalize() else { continue };
+        let base = u32::try_from(positions.len())?;
+        let last = u32::try_from(k)? - 1;
+        positions.extend(polygon);
+        normals.extend(std::iter::repeat_n(normal, k));
+        triangles.extend((1..last).map(|i| [base, base + i, base + i + 1]));
+        edges.extend((0..=last).map(|i| [base + i, base + (i + 1) % (last + 1)]));
+    }
+    ensure!(!triangles.is_empty(), "no polygon with an area");
+    let uvs = vec![DVec2::ZERO; positions.len()];
+    Ok((TriangleMesh::try_new(positions, normals, uvs, triangles)?, edges))
 }
 
 /// Compares `values` read from the file with `expected` (f64 rounded to f32), bit for bit.
@@ -53,17 +92,32 @@ fn same<const N: usize>(
 
 /// Parses `bytes` with the `gltf` crate and checks that they hold `mesh`: one mesh with one
 /// triangle primitive, the same number of vertices, and the same positions, normals, UVs,
-/// colours (present exactly when the mesh has them) and indices, to f32.
+/// colours (present exactly when the mesh has them) and indices, to f32; and, when `edges`
+/// are given, a second primitive of lines with exactly those vertex pairs.
 ///
 /// # Errors
 ///
 /// If the bytes do not parse or differ from `mesh`; the message says where.
-pub(crate) fn check_read_back(mesh: &TriangleMesh, bytes: &[u8]) -> Result<()> {
+pub(crate) fn check_read_back(mesh: &TriangleMesh, edges: &[[u32; 2]], bytes: &[u8]) -> Result<()> {
     let (document, buffers, _images) = gltf::import_slice(bytes).context("parsing")?;
     let meshes: Vec<gltf::Mesh<'_>> = document.meshes().collect();
     ensure!(meshes.len() == 1, "{} meshes, expected 1", meshes.len());
     let primitives: Vec<gltf::Primitive<'_>> = meshes[0].primitives().collect();
-    ensure!(primitives.len() == 1, "{} primitives, expected 1", primitives.len());
+    let expected = if edges.is_empty() { 1 } else { 2 };
+    ensure!(primitives.len() == expected, "{} primitives, expected {expected}", primitives.len());
+    if let Some(lines) = primitives.get(1) {
+        ensure!(lines.mode() == gltf::mesh::Mode::Lines, "edge primitive mode {:?}", lines.mode());
+        let reader = lines.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+        let found: Vec<u32> =
+            reader.read_indices().context("no edge indices")?.into_u32().collect();
+        let expected: Vec<u32> = edges.iter().flatten().copied().collect();
+        ensure!(
+            found == expected,
+            "edges differ ({} indices in the file, {} in memory)",
+            found.len(),
+            expected.len()
+        );
+    }
     let primitive = &primitives[0];
     ensure!(
         primitive.mode() == gltf::mesh::Mode::Triangles,
@@ -132,6 +186,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn flat_polygons_keep_their_sides_and_not_their_diagonals() {
+        // A unit square (in z = 0) and a triangle standing on its side y = 0.
+        let square = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+        let triangle = vec![DVec3::ZERO, DVec3::new(0.5, 0.0, 1.0), DVec3::X];
+        let (mesh, edges) = flat_with_edges(&[square, triangle]).expect("flat");
+        assert_eq!(mesh.n_vertices(), 7, "each polygon its own corners");
+        assert_eq!(mesh.n_triangles(), 3);
+        assert_eq!(edges, [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 4]]);
+        assert!(mesh.normals()[..4].iter().all(|n| *n == DVec3::Z), "the square faces +z");
+        // (b − a) × (c − a) = (0.5, 0, 1) × (1, 0, 0) = (0, 1, 0).
+        assert!(mesh.normals()[4..].iter().all(|n| *n == DVec3::Y), "the triangle faces +y");
+        let bytes = glb_with_edges(&mesh, &edges).expect("reads back with its lines");
+        let error = check_read_back(&mesh, &edges[..6], &bytes).expect_err("an edge short");
+        assert!(error.to_string().contains("edges differ"), "{error}");
+        assert!(flat_with_edges(&[vec![DVec3::ZERO, DVec3::X, DVec3::X]]).is_err(), "no area");
+    }
+
+    #[test]
     fn a_changed_file_does_not_read_back() {
         let mesh = TriangleMesh::try_from_surface(
             &hi_surface::torus(2.0, 1.0),
@@ -144,9 +216,9 @@ mod tests {
             &hi_surface::MeshOptions { n_u: 4, n_v: 6, ..Default::default() },
         )
         .expect("meshes");
-        let error = check_read_back(&other, &bytes).expect_err("another mesh");
+        let error = check_read_back(&other, &[], &bytes).expect_err("another mesh");
         assert!(error.to_string().contains("position"), "{error}");
-        let error = check_read_back(&mesh, &bytes[..bytes.len() - 8]).expect_err("truncated");
+        let error = check_read_back(&mesh, &[], &bytes[..bytes.len() - 8]).expect_err("truncated");
         assert!(error.to_string().contains("parsing"), "{error}");
     }
 

@@ -457,6 +457,16 @@ mod tests {
             .and_then(|t| t.parse().ok())
             .expect("a coverage");
         assert!(covered > 5.0 && covered < 95.0, "{status}");
+        // A cube's six quads drawn flat with their sides as lines: 12 triangles and 6 × 4
+        // sides, each listed by its face.
+        let cube = "fig-4-26a.glb";
+        std::fs::copy(crate::project_root().join(super::super::OUT_DIR).join(cube), dir.join(cube))
+            .expect("the figure is committed");
+        let status = viewer_status(browser, &dir, &format!("model={cube}"));
+        assert!(
+            status.starts_with("drawn 12 triangles") && status.contains(", 24 lines"),
+            "{status}"
+        );
         // No normals: flat normals, each triangle with its own three vertices.
         std::fs::write(dir.join("tetrahedron.glb"), tetrahedron_without_normals())
             .expect("written");

@@ -13,7 +13,7 @@ use hi_surface::subdivision::PolyMesh;
 use hi_surface::{TriangleMesh, torus};
 
 use super::data;
-use super::glb::glb;
+use super::glb::{flat_with_edges, glb, glb_with_edges};
 use super::plot::{
     BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, render_row, sample,
 };
@@ -54,33 +54,15 @@ fn index(k: usize) -> Result<u32> {
     Ok(u32::try_from(k)?)
 }
 
-/// Flat-shaded triangles: every polygon fanned into triangles, each triangle with its own
-/// three vertices and the unit normal of its winding.
-fn flat_mesh(polygons: &[Vec<DVec3>]) -> Result<TriangleMesh> {
-    let (mut positions, mut normals, mut triangles) = (Vec::new(), Vec::new(), Vec::new());
-    for polygon in polygons {
-        for i in 1..polygon.len().saturating_sub(1) {
-            let [a, b, c] = [polygon[0], polygon[i], polygon[i + 1]];
-            let normal = (b - a).cross(c - a).try_normalize();
-            let Some(normal) = normal else { continue };
-            let base = index(positions.len())?;
-            positions.extend([a, b, c]);
-            normals.extend([normal; 3]);
-            triangles.push([base, base + 1, base + 2]);
-        }
-    }
-    mesh(positions, normals, triangles)
-}
-
 /// Figure 1.1: the head's control mesh, flat shaded.
 fn polygonal_object() -> Result<Vec<u8>> {
     let head: PolyMesh = head_with(false)?;
     let p = head.positions();
     let polygons: Vec<Vec<DVec3>> =
         head.faces().map(|f| f.iter().map(|&k| p[k as usize]).collect()).collect();
-    let flat = flat_mesh(&polygons)?;
+    let (flat, edges) = flat_with_edges(&polygons)?;
     ensure_outward(&flat, 0.99, "the head")?;
-    glb(&flat)
+    glb_with_edges(&flat, &edges)
 }
 
 /// Figure 1.2: a cubic Bézier curve, its control polygon and control points.
@@ -241,10 +223,10 @@ fn triangle_net() -> Result<Vec<u8>> {
             }
         }
     }
-    let net = flat_mesh(&polygons)?;
+    let (net, edges) = flat_with_edges(&polygons)?;
     ensure!(net.n_triangles() == n * n, "the net has n² triangles");
     ensure!(net.normals().iter().all(|v| v.z > 0.0), "the net faces up");
-    glb(&net)
+    glb_with_edges(&net, &edges)
 }
 
 /// Figure 4.4(b): the surface of [`bezier_triangle`], sampled on a triangular grid.
@@ -322,7 +304,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (1, 1),
         caption: "An example of a polygonal object",
         drawn: "The control mesh of the head of figure 4.35 (16 meridians, 9 rings of \
-                triangles), flat shaded: every face keeps its own vertices and one normal.",
+                triangles), flat shaded (every face keeps its own vertices and one normal), with its edges as a \
+                second primitive of lines.",
         data: "stand-in for the thesis's polygonal object (not available): the head control mesh of figure 4.35.",
         format: Format::Glb,
         panels: &[Panel { suffix: "", title: "", draw: |_| polygonal_object() }],
@@ -368,7 +351,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (4, 4),
         caption: "A Bézier triangle control mesh",
         drawn: "(a) The control net of a cubic Bézier triangle (`hi_bezier::TriangularPatch`): its 10 control points \
-                joined into 9 flat triangles; (b) the triangle patch it defines, sampled on a triangular grid of \
+                joined into 9 flat triangles, with their edges; (b) the triangle patch it defines, sampled on a triangular grid of \
                 24 steps a side.",
         data: "control points chosen for the figure (exact).",
         format: Format::Glb,

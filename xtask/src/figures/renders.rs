@@ -13,8 +13,8 @@ use std::f64::consts::PI;
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_raytrace::{
-    Camera, Geometry, HarmonicObject, HarmonicSettings, IntervalMethod, Light, MeshObject,
-    RenderSettings, Scene, SceneObject, SurfaceColor, TorusMethod, render, torus_scene,
+    Camera, EdgeStyle, Geometry, HarmonicObject, HarmonicSettings, IntervalMethod, Light,
+    MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, TorusMethod, render, torus_scene,
 };
 use hi_surface::{HarmonicSurface, TriangleMesh, sphere, torus};
 
@@ -31,15 +31,29 @@ const RAYTRACED_SPP: u32 = 4;
 const FIRST_PASS: u32 = 4;
 /// The share of the frame's width and height a model fills ([`Camera::fitting`]).
 const FILL: f64 = 0.8;
+/// The width of the edges a model's file draws (its lines), in pixels.
+const EDGE_PIXELS: f64 = 1.3;
+/// Their colour, linear RGB.
+const EDGE_COLOR: [f32; 3] = [0.015, 0.02, 0.03];
 /// The colour of the floor the models stand on (it takes their shadows).
 const FLOOR_COLOR: [f32; 3] = [1.0, 1.0, 1.0];
 /// The vertical field of view (radians).
 const FOV: f64 = 0.6;
 
-/// The mesh a `.glb` file holds (one mesh, one triangle primitive, as the figures write).
-fn mesh_from_glb(bytes: &[u8]) -> Result<TriangleMesh> {
+/// The mesh a `.glb` file holds (one mesh, one triangle primitive, as the figures write) and
+/// the edges of its second primitive of lines, if it has one.
+fn mesh_from_glb(bytes: &[u8]) -> Result<(TriangleMesh, Vec<[u32; 2]>)> {
     let (document, buffers, _) = gltf::import_slice(bytes).context("parsing the model")?;
     let mesh = document.meshes().next().context("no mesh")?;
+    let edges: Vec<[u32; 2]> = match mesh.primitives().nth(1) {
+        Some(lines) if lines.mode() == gltf::mesh::Mode::Lines => {
+            let reader = lines.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+            let k: Vec<u32> =
+                reader.read_indices().context("no edge indices")?.into_u32().collect();
+            k.chunks_exact(2).map(|e| [e[0], e[1]]).collect()
+        }
+        _ => Vec::new(),
+    };
     let primitive = mesh.primitives().next().context("no primitive")?;
     let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
     let positions: Vec<DVec3> = reader
@@ -59,10 +73,11 @@ fn mesh_from_glb(bytes: &[u8]) -> Result<TriangleMesh> {
     let indices: Vec<u32> = reader.read_indices().context("no indices")?.into_u32().collect();
     let triangles: Vec<[u32; 3]> = indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
     let out = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
-    Ok(match reader.read_colors(0) {
+    let out = match reader.read_colors(0) {
         Some(c) => out.try_with_colors(c.into_rgb_f32().collect())?,
         None => out,
-    })
+    };
+    Ok((out, edges))
 }
 
 /// Where the eye looks from, for figure `number`: the heads face +y, everything else is seen
@@ -101,7 +116,8 @@ fn png(scene: &Scene, camera: &Camera, spp: u32) -> Result<Vec<u8>> {
 /// the diagonal of all of theirs: a subdivision series, a surface and its curvature), one
 /// camera frames them all, so that they compare; otherwise each panel is framed alone.
 pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Vec<u8>>> {
-    let meshes: Vec<TriangleMesh> = glbs.iter().map(|g| mesh_from_glb(g)).collect::<Result<_>>()?;
+    let (meshes, edges): (Vec<TriangleMesh>, Vec<Vec<[u32; 2]>>) =
+        glbs.iter().map(|g| mesh_from_glb(g)).collect::<Result<Vec<_>>>()?.into_iter().unzip();
     let from = view(number);
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let diagonal = |m: &TriangleMesh| {
@@ -113,16 +129,26 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
         .iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let shared = meshes.iter().all(|m| diagonal(m) >= 0.5 * (hi - lo).length());
+    // Edges [`EDGE_PIXELS`] wide, as seen.
+    let style = EdgeStyle {
+        color: EDGE_COLOR,
+        width: EDGE_PIXELS * 2.0 * (0.5 * FOV).tan() / f64::from(HEIGHT),
+    };
     meshes
         .into_iter()
-        .map(|mesh| {
+        .zip(edges)
+        .map(|(mesh, edges)| {
             let camera = if shared {
                 Camera::fitting(&all, from, DVec3::Z, FOV, aspect, FILL)?
             } else {
                 Camera::fitting(mesh.positions(), from, DVec3::Z, FOV, aspect, FILL)?
             };
             let (lo, hi) = if shared { (lo, hi) } else { mesh.bounds() };
-            let mut object = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
+            let mut object = MeshObject::new(mesh);
+            if !edges.is_empty() {
+                object = object.with_edges(&edges, style)?;
+            }
+            let mut object = SceneObject::new(Geometry::Mesh(object));
             object.material.color = [0.72, 0.74, 0.78];
             let scene = Scene::try_new(vec![object, floor(lo, hi)?], lights(from), [1.0; 3])?;
             png(&scene, &camera, SPP)

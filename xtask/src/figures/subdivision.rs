@@ -2,8 +2,10 @@
 //! Figures 4.11–4.35 and Table 4.1: the subdivision schemes of §4.5 on the cube, the star and
 //! a head, as binary glTF models, and the comparison of the schemes measured on them.
 //!
-//! Every stage is a [`PolyMesh`] from `hi_surface::subdivision`, drawn as its faces split into
-//! triangle fans with area-weighted vertex normals ([`PolyMesh::to_triangle_mesh`]); the limit
+//! Every stage is a [`PolyMesh`] from `hi_surface::subdivision`, drawn flat (each face fanned
+//! into triangles with its own normal) with its faces' edges as a second primitive of lines,
+//! so that the refinement shows and a quad mesh differs from its triangulation
+//! ([`super::glb::flat_with_edges`]); the limit
 //! surfaces of Loop and Catmull-Clark put every vertex of the third step on the limit surface
 //! with its exact limit normal ([`loop_limit`], [`catmull_clark_limit`]); the other schemes
 //! have no closed-form limit, and their "limit" is the fourth step.
@@ -18,7 +20,7 @@ use hi_surface::subdivision::{
     LimitPoint, LoopWeights, PolyMesh, Scheme, catmull_clark_limit, loop_limit,
 };
 
-use super::glb::glb;
+use super::glb::{flat_with_edges, glb, glb_with_edges};
 use super::{Figure, Format, Panel, Table};
 
 /// The control meshes of the figures.
@@ -75,9 +77,18 @@ fn refined(scheme: Scheme, shape: Shape, steps: usize) -> Result<PolyMesh> {
     Ok(mesh)
 }
 
-/// A stage of a "first four steps" figure.
+/// A stage of a "first four steps" figure: the mesh flat, with its polygons' edges.
 fn stage(scheme: Scheme, shape: Shape, steps: usize) -> Result<Vec<u8>> {
-    glb(&refined(scheme, shape, steps)?.to_triangle_mesh()?)
+    polygons_glb(&refined(scheme, shape, steps)?)
+}
+
+/// The `.glb` of a polygon mesh drawn flat with its edges ([`flat_with_edges`]).
+fn polygons_glb(mesh: &PolyMesh) -> Result<Vec<u8>> {
+    let p = mesh.positions();
+    let polygons: Vec<Vec<DVec3>> =
+        mesh.faces().map(|f| f.iter().map(|&k| p[k as usize]).collect()).collect();
+    let (flat, edges) = flat_with_edges(&polygons)?;
+    glb_with_edges(&flat, &edges)
 }
 
 /// The mesh whose vertices are `limit`'s positions on `mesh`'s faces, with the limit normals.
@@ -116,7 +127,7 @@ fn limit(scheme: Scheme, shape: Shape) -> Result<Vec<u8>> {
 fn head_stage(scheme: Option<Scheme>) -> Result<Vec<u8>> {
     match scheme {
         Some(s) => stage(s, Shape::Head, HEAD_STEPS),
-        None => glb(&Shape::Head.mesh()?.to_triangle_mesh()?),
+        None => polygons_glb(&Shape::Head.mesh()?),
     }
 }
 
@@ -194,7 +205,9 @@ fn signed_volume(mesh: &PolyMesh) -> f64 {
 
 /// What every figure of steps draws.
 const STEPS_DRAWN: &str = "(a) The control mesh and (b)–(d) the first three steps of the scheme (`hi_surface::subdivision`), \
-    each face drawn as a fan of triangles with area-weighted vertex normals, no colours. The thesis's four panels \
+    each face drawn flat (a fan of triangles with the face's own normal) and its edges as a second primitive of lines \
+    (dark in the renders, drawn by glTF viewers), so that a quad mesh and its triangulation differ; no colours. The \
+    four panels share one camera, so the shrinking of an approximating scheme shows. The thesis's four panels \
     count the control mesh as the first.";
 
 /// The data line of the cube figures.
@@ -408,7 +421,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (4, 35),
         caption: "Subdivision of the mannequin head",
         drawn: "(a) The control mesh; (b)–(g) two steps of each scheme on it, triangles for every scheme as in the \
-                thesis; (e), interpolating √3, is not in the thesis.",
+                thesis, each drawn flat with its edges; (e), interpolating √3, is not in the thesis.",
         data: "stand-in for Hoppe's mannequin head (not available): a closed head of 288 triangles built in code \
                (16 meridians, 9 rings, with nose, brows, eye sockets, ears and chin; `xtask/src/figures/subdivision.rs`).",
         format: Format::Glb,

@@ -34,7 +34,7 @@ use hi_surface::{
     test_surface, test_surfaces,
 };
 
-use super::glb::glb;
+use super::glb::{glb, glb_with_edges};
 use super::{Figure, Format, Panel, Table};
 
 /// The fraction of the parametric surface's curvature values the colour scale spans.
@@ -173,7 +173,8 @@ macro_rules! subdivision {
                     4 096 vertices) where the thesis shows level 7 (512×512, 262 144 vertices: about 11 MB; every \
                     level lies on the same surface, so level 4 already shows it, and the generator checks that level 7 \
                     contains level 4). Each grid is closed in both directions and drawn as its quads split into two \
-                    triangles, with area-weighted face normals, no colours.",
+                    triangles, with area-weighted face normals and the quads' sides as a second primitive of lines, \
+                    no colours.",
             data: $data,
             format: Format::Glb,
             panels: &[
@@ -753,7 +754,18 @@ fn stage(which: Torus, level: u32) -> Result<Vec<u8>> {
             }
         }
     }
-    glb(&control_mesh(&grid)?)
+    glb_with_edges(&control_mesh(&grid)?, &grid_edges(grid.m(), grid.n()))
+}
+
+/// The edges of the closed m×n control grid of [`control_mesh`]: each vertex to the next along
+/// each direction (its quads' sides, not their diagonals).
+fn grid_edges(m: usize, n: usize) -> Vec<[u32; 2]> {
+    let at = |j: usize, k: usize| ((j % m) * n + k % n) as u32;
+    (0..m)
+        .flat_map(|j| {
+            (0..n).flat_map(move |k| [[at(j, k), at(j + 1, k)], [at(j, k), at(j, k + 1)]])
+        })
+        .collect()
 }
 
 /// A §5.9 comparison: the surface, its harmonic surface and both meshes.

@@ -77,8 +77,10 @@ fn accessor(
     }
 }
 
-/// The glTF document and buffer of `mesh`; `uri` is the buffer's URI (`None` for `.glb`).
-fn encode(mesh: &TriangleMesh, uri: Option<String>) -> Encoded {
+/// The glTF document and buffer of `mesh`, with a second primitive of lines along `edges`
+/// when there are any (checked in range by the caller); `uri` is the buffer's URI (`None` for
+/// `.glb`).
+fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encoded {
     use json::accessor::{ComponentType, Type};
     use json::buffer::Target;
 
@@ -111,6 +113,7 @@ fn encode(mesh: &TriangleMesh, uri: Option<String>) -> Encoded {
         Some((lo.to_array(), hi.to_array())),
     ));
     attributes.insert(Valid(json::mesh::Semantic::Positions), acc);
+    let positions_accessor = acc;
 
     let start = bin.len();
     push_f32s(&mut bin, mesh.normals().iter().flat_map(|v| v.as_vec3().to_array()));
@@ -147,6 +150,19 @@ fn encode(mesh: &TriangleMesh, uri: Option<String>) -> Encoded {
     };
     let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
     let indices = root.push(accessor(view, 3 * mesh.n_triangles(), component, Type::Scalar, None));
+    let edge_indices = (!edges.is_empty()).then(|| {
+        let start = bin.len();
+        for &k in edges.iter().flatten() {
+            if component == ComponentType::U16 {
+                // k < n ≤ 65 535.
+                bin.extend_from_slice(&(k as u16).to_le_bytes());
+            } else {
+                bin.extend_from_slice(&k.to_le_bytes());
+            }
+        }
+        let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
+        root.push(accessor(view, 2 * edges.len(), component, Type::Scalar, None))
+    });
     root.buffers[buffer.value()].byte_length = USize64::from(bin.len());
 
     let material = root.push(json::Material {
@@ -160,19 +176,43 @@ fn encode(mesh: &TriangleMesh, uri: Option<String>) -> Encoded {
         },
         ..Default::default()
     });
+    let mut primitives = vec![json::mesh::Primitive {
+        attributes,
+        extensions: None,
+        extras: Default::default(),
+        indices: Some(indices),
+        material: Some(material),
+        mode: Valid(json::mesh::Mode::Triangles),
+        targets: None,
+    }];
+    if let Some(edge_indices) = edge_indices {
+        let dark = root.push(json::Material {
+            name: Some("edges".to_string()),
+            pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+                base_color_factor: json::material::PbrBaseColorFactor([0.02, 0.02, 0.02, 1.0]),
+                metallic_factor: json::material::StrengthFactor(0.0),
+                ..Default::default()
+            },
+            ..Default::default()
+        });
+        primitives.push(json::mesh::Primitive {
+            attributes: BTreeMap::from([(
+                Valid(json::mesh::Semantic::Positions),
+                positions_accessor,
+            )]),
+            extensions: None,
+            extras: Default::default(),
+            indices: Some(edge_indices),
+            material: Some(dark),
+            mode: Valid(json::mesh::Mode::Lines),
+            targets: None,
+        });
+    }
     let mesh_index = root.push(json::Mesh {
         extensions: None,
         extras: Default::default(),
         name: Some("harmonic surface".to_string()),
-        primitives: vec![json::mesh::Primitive {
-            attributes,
-            extensions: None,
-            extras: Default::default(),
-            indices: Some(indices),
-            material: Some(material),
-            mode: Valid(json::mesh::Mode::Triangles),
-            targets: None,
-        }],
+        primitives,
         weights: None,
     });
     let node = root.push(json::Node {
@@ -217,7 +257,7 @@ pub fn write_gltf<W: Write, B: Write>(
     mut bin: B,
     bin_uri: &str,
 ) -> Result<(), Error> {
-    let Encoded { root, bin: data } = encode(mesh, Some(bin_uri.to_string()));
+    let Encoded { root, bin: data } = encode(mesh, &[], Some(bin_uri.to_string()));
     let text = json::serialize::to_vec_pretty(&root)
         .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
     gltf.write_all(&text).and_then(|()| gltf.flush()).map_err(|e| io_error(&e, None))?;
@@ -242,8 +282,46 @@ pub fn write_gltf<W: Write, B: Write>(
 /// assert_eq!(&glb[..4], b"glTF");
 /// assert_eq!(u32::from_le_bytes(glb[8..12].try_into().unwrap()) as usize, glb.len());
 /// ```
-pub fn write_glb<W: Write>(mesh: &TriangleMesh, mut writer: W) -> Result<(), Error> {
-    let Encoded { root, bin } = encode(mesh, None);
+pub fn write_glb<W: Write>(mesh: &TriangleMesh, writer: W) -> Result<(), Error> {
+    write_glb_with_edges(mesh, &[], writer)
+}
+
+/// Writes `mesh` as binary glTF 2.0 as [`write_glb`] does, with `edges` (pairs of vertex
+/// indices: a polygon mesh's edges, say, which its triangles do not show) as a second
+/// primitive of the mesh, of mode `LINES`, on the same positions, in a dark material; glTF
+/// viewers draw them over the surface. No edges: the file of [`write_glb`].
+///
+/// # Errors
+///
+/// [`Error::InvalidCount`] for an edge's vertex index out of range; as [`write_glb`].
+///
+/// # Examples
+///
+/// ```
+/// use hi_surface::{MeshOptions, TriangleMesh, export, torus};
+///
+/// let opts = MeshOptions { n_u: 4, n_v: 6, ..Default::default() };
+/// let mesh = TriangleMesh::try_from_surface(&torus(2.0, 0.5), &opts).unwrap();
+/// let mut glb = Vec::new();
+/// export::write_glb_with_edges(&mesh, &[[0, 1], [1, 2]], &mut glb).unwrap();
+/// let (doc, _, _) = gltf::import_slice(&glb).unwrap();
+/// let modes: Vec<_> = doc.meshes().next().unwrap().primitives().map(|p| p.mode()).collect();
+/// assert_eq!(modes, [gltf::mesh::Mode::Triangles, gltf::mesh::Mode::Lines]);
+/// assert!(export::write_glb_with_edges(&mesh, &[[0, 999]], Vec::new()).is_err());
+/// ```
+pub fn write_glb_with_edges<W: Write>(
+    mesh: &TriangleMesh,
+    edges: &[[u32; 2]],
+    mut writer: W,
+) -> Result<(), Error> {
+    if let Some(&bad) = edges.iter().flatten().find(|&&k| k as usize >= mesh.n_vertices()) {
+        return Err(Error::InvalidCount {
+            what: "edge vertex index",
+            value: bad as usize,
+            expected: "less than the number of vertices",
+        });
+    }
+    let Encoded { root, bin } = encode(mesh, edges, None);
     let text = json::serialize::to_vec(&root)
         .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
     // Header, JSON chunk and BIN chunk, each chunk padded to 4 bytes.

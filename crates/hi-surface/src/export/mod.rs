@@ -6,7 +6,7 @@
 //! | what | where |
 //! |---|---|
 //! | by file extension: `.obj`, `.gltf` (+ `.bin` beside it), `.glb` | [`save`], [`load`] |
-//! | to any writer | [`write_obj`], [`write_gltf`], [`write_glb`] |
+//! | to any writer | [`write_obj`], [`write_gltf`], [`write_glb`], [`write_glb_with_edges`] |
 //! | read back, compare with the mesh in memory | [`read_back`], [`compare`], [`ReadBackReport`] |
 //!
 //! **What is written.** Every value is rounded once from the mesh's f64 to f32. glTF: one
@@ -31,7 +31,9 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-pub use self::gltf::{placed_meshes, primitive_triangles, write_glb, write_gltf};
+pub use self::gltf::{
+    placed_meshes, primitive_triangles, write_glb, write_glb_with_edges, write_gltf,
+};
 pub use self::obj::write_obj;
 use crate::{Error, TriangleMesh};
 
