@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # blender --background --factory-startup --python blender_import.py -- FILE [FILE...]
 # Imports each glTF/GLB/OBJ into an empty scene and prints one line per file:
-# IMPORT <file>: meshes=M verts=V faces=F
+# IMPORT <file>: meshes=M verts=V faces=F (V: the vertices the faces use)
 import sys
 
 import numpy as np
@@ -19,8 +19,11 @@ for f in sys.argv[sys.argv.index("--") + 1:]:
         elif f.endswith(".obj"):
             bpy.ops.wm.obj_import(filepath=f)
         meshes = [o for o in bpy.data.objects if o.type == "MESH"]
+        # The vertices the faces use: a file's lines (an edge overlay) come in as loose edges
+        # on vertices of their own.
+        used = sum(len({v for p in o.data.polygons for v in p.vertices}) for o in meshes)
         print(f"IMPORT {f}: meshes={len(meshes)} "
-              f"verts={sum(len(o.data.vertices) for o in meshes)} "
+              f"verts={used} "
               f"faces={sum(len(o.data.polygons) for o in meshes)}", flush=True)
     except Exception as e:  # any failure is reported for that file
         print(f"IMPORT {f}: error={type(e).__name__}: {e}", flush=True)

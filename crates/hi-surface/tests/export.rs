@@ -314,3 +314,19 @@ fn compare_detects_differences() {
     assert_eq!(r.connectivity, Connectivity::Different, "{r}");
     assert!(!r.agrees_within(1.0, 1.0), "{r}");
 }
+
+#[test]
+fn a_glb_with_edges_reads_back_as_its_triangles() {
+    for (name, mesh) in meshes() {
+        // Every vertex joined to the next: lines the reader leaves out.
+        let n = u32::try_from(mesh.n_vertices()).unwrap();
+        let edges: Vec<[u32; 2]> = (0..n - 1).map(|k| [k, k + 1]).collect();
+        let path = tmp(&format!("{name}-edges.glb"));
+        let mut file = std::fs::File::create(&path).unwrap();
+        export::write_glb_with_edges(&mesh, &edges, &mut file).unwrap();
+        drop(file);
+        let report = export::read_back(&mesh, &path).unwrap();
+        assert!(report.is_exact(), "{name}: {report}");
+        assert_eq!(report.connectivity, Connectivity::Identical, "{name}");
+    }
+}

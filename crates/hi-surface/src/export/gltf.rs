@@ -440,7 +440,8 @@ pub fn primitive_triangles(mode: ::gltf::mesh::Mode, indices: &[u32]) -> Option<
 }
 
 /// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives (`TRIANGLES`,
-/// `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh the scene places, concatenated in world space.
+/// `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh the scene places, concatenated in world space
+/// (points and lines, such as the edges of [`write_glb_with_edges`], are left out).
 ///
 /// The scene is the default one, or every scene when there is none (a file with no scene at
 /// all has its meshes read as they are). Each node's world transform is applied to its mesh's
@@ -462,17 +463,13 @@ pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
         let mirrors = world.determinant() < 0.0;
         for primitive in mesh.primitives() {
             use ::gltf::mesh::Mode;
+            // Points and lines (an edge overlay, as `write_glb_with_edges` writes) bound no
+            // surface: the triangle mesh is the other primitives.
             if !matches!(
                 primitive.mode(),
                 Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
             ) {
-                return Err(format_error(
-                    format!(
-                        "primitive mode {:?} is not TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN",
-                        primitive.mode()
-                    ),
-                    None,
-                ));
+                continue;
             }
             let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
             let p: Vec<DVec3> = reader
