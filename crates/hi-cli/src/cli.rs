@@ -281,7 +281,9 @@ Scene (JSON; file names relative to the scene file):
     directional light points towards the light; point lights fall off with the squared distance.
   harmonic: a grid file (as 'hi surface example' writes) drawn by \"method\": interval (interval
     Newton, the default), bisection (interval bisection), bezier (C1 Hermite patches) or mesh
-    (256x256 quads); \"curvature\": \"gaussian\" or \"mean\" colours it by K or H.
+    (256x256 quads); \"curvature\": \"gaussian\" or \"mean\" colours it by K or H, and
+    \"palette\": \"thesis\" (|value|, blue to purple, the default), \"viridis\" (|value|) or
+    \"coolwarm\" (the signed value, blue through grey at 0 to red).
   mesh: .obj, .gltf or .glb (vertex colours are used if the file has them).
   bezier: the patches file of 'hi surface bezier -o patches.json', one colour per patch.
   Every object may have \"color\" (sRGB) and \"specular\" (0 to 1).
@@ -320,6 +322,9 @@ pub(crate) struct RenderArgs {
     /// With --quick: colour a harmonic grid (interval, bisection, mesh) by this curvature.
     #[arg(long, value_enum, value_name = "CURVATURE")]
     pub(crate) curvature: Option<ColorBy>,
+    /// With --curvature: the colours (coolwarm keeps the sign).
+    #[arg(long, value_enum, default_value = "thesis", requires = "curvature")]
+    pub(crate) palette: PaletteName,
     /// Image width in pixels [default: the scene's, else 512].
     #[arg(long, value_name = "W", allow_negative_numbers = true, value_parser = parse_whole)]
     pub(crate) width: Option<usize>,
@@ -955,6 +960,9 @@ pub(crate) struct SurfaceMeshArgs {
     /// Colour the vertices by this curvature.
     #[arg(long, value_enum, value_name = "CURVATURE")]
     pub(crate) color: Option<ColorBy>,
+    /// With --color: the colours (coolwarm keeps the sign).
+    #[arg(long, value_enum, default_value = "thesis", requires = "color")]
+    pub(crate) palette: PaletteName,
     /// The mesh file to write: .obj, .gltf (+ .bin) or .glb.
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub(crate) output: PathBuf,
@@ -981,6 +989,32 @@ pub(crate) enum ColorBy {
     Gaussian,
     /// Mean curvature H.
     Mean,
+}
+
+/// The colours of a curvature map.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+pub(crate) enum PaletteName {
+    /// The thesis's (§5.9): |value| from blue (0) to purple (the largest).
+    #[default]
+    Thesis,
+    /// Viridis: |value| from dark purple (0) to yellow (the largest), perceptually even.
+    Viridis,
+    /// Cool–warm: the value with its sign, blue (negative) through grey (0) to red (positive).
+    Coolwarm,
+}
+
+impl PaletteName {
+    /// The colour map: the magnitude from 0 for the sequential palettes, the signed value
+    /// about 0 for the diverging one; over every value.
+    pub(crate) fn color_map(self) -> hi_surface::ColorMap {
+        use hi_surface::{ColorMap, ColorScale, Palette};
+        let (scale, palette) = match self {
+            PaletteName::Thesis => (ColorScale::Magnitude, Palette::Thesis),
+            PaletteName::Viridis => (ColorScale::Magnitude, Palette::Viridis),
+            PaletteName::Coolwarm => (ColorScale::Symmetric, Palette::CoolWarm),
+        };
+        ColorMap { scale, coverage: 1.0, palette }
+    }
 }
 
 /// The subcommand path that a command line names, such as `hi curve eval`: where to point

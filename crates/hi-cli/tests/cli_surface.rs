@@ -231,3 +231,36 @@ fn bad_grids_and_outputs() {
     bad(&["surface", "example", "sphere", "--samples", "100000x100000"], "too many points");
     bad(&["surface", "example", "sphere", "-o", "/nonexistent/dir/sphere.json"], "cannot write");
 }
+
+#[test]
+fn a_diverging_palette_keeps_the_sign_of_the_curvature() {
+    // The torus's K is positive outside and negative inside: on cool–warm the legend runs from
+    // −a to a, the inside blue and the outside red; on the thesis's ramp from 0.
+    let glb = TempFile::path_with("glb");
+    let out = mesh_torus(
+        glb.path(),
+        &["--resolution", "16x16", "--color", "gaussian", "--palette", "coolwarm"],
+    );
+    let (min, max) =
+        (out["legend"]["min"].as_f64().unwrap(), out["legend"]["max"].as_f64().unwrap());
+    assert!(min < 0.0 && (min + max).abs() < 1e-12, "{out}");
+    let (doc, buffers, _) = gltf::import(glb.as_path()).expect("gltf reads the file");
+    let primitive = doc.meshes().next().expect("a mesh").primitives().next().expect("a primitive");
+    let reader = primitive.reader(|b| Some(&buffers[b.index()]));
+    let colors: Vec<[f32; 3]> = reader.read_colors(0).expect("colours").into_rgb_f32().collect();
+    let positions: Vec<[f32; 3]> = reader.read_positions().expect("positions").collect();
+    // Outermost vertex (K > 0): more red than blue; innermost (K < 0): more blue than red.
+    let radius = |p: &[f32; 3]| p[0].hypot(p[1]);
+    let outer = (0..positions.len())
+        .max_by(|&a, &b| radius(&positions[a]).total_cmp(&radius(&positions[b])))
+        .unwrap();
+    let inner = (0..positions.len())
+        .min_by(|&a, &b| radius(&positions[a]).total_cmp(&radius(&positions[b])))
+        .unwrap();
+    assert!(colors[outer][0] > colors[outer][2], "outside {:?}", colors[outer]);
+    assert!(colors[inner][2] > colors[inner][0], "inside {:?}", colors[inner]);
+    let thesis = mesh_torus(glb.path(), &["--resolution", "16x16", "--color", "gaussian"]);
+    assert_eq!(thesis["legend"]["min"], Value::from(0.0), "{thesis}");
+    // --palette needs --color.
+    bad(&["surface", "mesh", "--palette", "viridis", "-o", glb.path()], "--color");
+}

@@ -13,13 +13,13 @@ use hi_raytrace::{
     IntervalMethod, Light, MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, render,
 };
 use hi_surface::{
-    ColorMap, CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, TriangleMesh,
+    CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, TriangleMesh,
     srgb_to_linear_rgb,
 };
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::Value;
 
-use crate::cli::{ColorBy, RenderArgs, RenderMethod};
+use crate::cli::{ColorBy, PaletteName, RenderArgs, RenderMethod};
 use crate::error::Failure;
 use crate::input::parse_grid;
 use crate::output::{Json, Object};
@@ -43,7 +43,9 @@ pub(crate) fn run(args: &RenderArgs) -> Result<Json, Failure> {
         return Err(Failure::input(format!("-o {}: expected a .png file", args.output.display())));
     }
     let loaded = match (&args.quick, &args.scene) {
-        (Some(file), _) => quick_scene(file, args.method, args.curvature)?,
+        (Some(file), _) => {
+            quick_scene(file, args.method, args.curvature.map(|c| (c, args.palette)))?
+        }
         (None, Some(scene)) => read_scene(scene)?,
         (None, None) => return Err(Failure::input("give a SCENE file or --quick FILE")),
     };
@@ -125,7 +127,7 @@ fn frame(scene: &Scene, from: DVec3, up: DVec3, fov: f64) -> Result<Camera, Fail
 fn quick_scene(
     file: &Path,
     method: RenderMethod,
-    curvature: Option<ColorBy>,
+    curvature: Option<(ColorBy, PaletteName)>,
 ) -> Result<Loaded, Failure> {
     let name = file.display().to_string();
     let geometry = load_object(file, None, method, curvature)
@@ -233,7 +235,7 @@ fn load_object(
     file: &Path,
     want: Option<&str>,
     method: RenderMethod,
-    curvature: Option<ColorBy>,
+    curvature: Option<(ColorBy, PaletteName)>,
 ) -> Result<Geometry, String> {
     let kind = file_kind(file)?;
     let mismatch = |found: &str| match want {
@@ -262,9 +264,9 @@ fn load_object(
 fn harmonic_geometry(
     surface: HarmonicSurface<DVec3>,
     method: RenderMethod,
-    curvature: Option<ColorBy>,
+    curvature: Option<(ColorBy, PaletteName)>,
 ) -> Result<Geometry, Box<dyn std::error::Error>> {
-    let coloring = curvature.map(|c| (quantity(c), ColorMap::default()));
+    let coloring = curvature.map(|(c, p)| (quantity(c), p.color_map()));
     Ok(match method {
         RenderMethod::Interval | RenderMethod::Bisection => {
             let settings = HarmonicSettings {
@@ -371,10 +373,20 @@ fn read_scene(path: &Path) -> Result<Loaded, Failure> {
                 )));
             }
         };
+        let palette = match o["palette"].as_str() {
+            None | Some("thesis") => PaletteName::Thesis,
+            Some("viridis") => PaletteName::Viridis,
+            Some("coolwarm") => PaletteName::Coolwarm,
+            Some(other) => {
+                return Err(ctx(format!(
+                    "unknown palette '{other}': expected thesis, viridis or coolwarm"
+                )));
+            }
+        };
         let curvature = match o["curvature"].as_str() {
             None => None,
-            Some("gaussian") => Some(ColorBy::Gaussian),
-            Some("mean") => Some(ColorBy::Mean),
+            Some("gaussian") => Some((ColorBy::Gaussian, palette)),
+            Some("mean") => Some((ColorBy::Mean, palette)),
             Some(other) => {
                 return Err(ctx(format!("unknown curvature '{other}': expected gaussian or mean")));
             }

@@ -31,7 +31,8 @@ pub(crate) fn run(args: &SurfaceMeshArgs) -> Result<Json, Failure> {
         n_v: args.resolution.1,
         u_range: [u0, u1],
         v_range: [v0, v1],
-        color: quantity.map(|quantity| CurvatureColoring { quantity, ..Default::default() }),
+        color: quantity
+            .map(|quantity| CurvatureColoring { quantity, map: args.palette.color_map() }),
         ..Default::default()
     };
     let mesh = TriangleMesh::try_from_surface(&surface, &options)
