@@ -226,6 +226,35 @@ fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
     glb(&covering_mesh(&result.surface, setup.layout, 2)?)
 }
 
+/// The fit of the real model `file` of `fixtures/models` (stood up and turned to the viewer:
+/// its files have +y up and face −z, the figures have +z up and are seen from −y) by
+/// `hi fit`'s defaults (the spherical parameterisation of its mesh, no smoothing, the image
+/// size it picks for the model's size), meshed as `hi fit` writes it: one vertex per texel,
+/// welded into a closed surface, checked to enclose a positive volume (wound outwards).
+fn real_glb(file: &str) -> Result<Vec<u8>> {
+    let path = crate::project_root().join("fixtures/models").join(file);
+    let scan = hi_geomimage::scan::read_scan(&path).with_context(|| format!("reading {file}"))?;
+    let points = scan.points.iter().map(|p| DVec3::new(-p.x, p.z, p.y)).collect();
+    let scan = Scan { points, ..scan };
+    let options = FitOptions { error: ErrorMeasure::Off, ..FitOptions::default() };
+    let result = fit(&scan, &options, &mut |_| {})?;
+    ensure!(
+        result.report.method == hi_geomimage::Method::Mesh,
+        "{file}: fitted by {}, not by its mesh ({})",
+        result.report.method.name(),
+        result.report.method_reason
+    );
+    let mesh = hi_geomimage::layout_mesh::layout_mesh(&result.surface, options.layout, 1)?.mesh;
+    let p = mesh.positions();
+    let volume: f64 = mesh
+        .triangles()
+        .iter()
+        .map(|t| p[t[0] as usize].dot(p[t[1] as usize].cross(p[t[2] as usize])) / 6.0)
+        .sum();
+    ensure!(volume > 0.0, "{file}: the fitted surface is wound inwards (volume {volume})");
+    glb(&mesh)
+}
+
 /// The texels of a fit's image joined directly: one quad per texel, with normals from the
 /// faces (what the geometry image gives without harmonic interpolation).
 fn texel_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
@@ -429,41 +458,31 @@ pub(crate) const FIGURES: &[Figure] = &[
     Figure {
         number: (5, 21),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "The harmonic surface through a 64×64 flattened-octahedron image (smoothed, σ = 1 texel) of a scan of \
-                a bumpy solid, r = 1 + 0.15 sin 5θ cos 3φ.",
-        data: "built in (the thesis's public models are replaced by star-shaped solids; the real models are fitted \
-               by `cargo xtask bench fit`): 60 000 points with ±0.3% noise.",
+        drawn: "The harmonic surface fitted to Keenan Crane's Spot (a cow) by `hi fit`'s defaults: the mesh closed, \
+                mapped onto the sphere without folds, sampled as a geometry image of the size `hi fit` picks and \
+                interpolated, with no smoothing; meshed as `hi fit` writes it (one vertex per texel, welded, closed). Horns, ears and legs \
+                are reached, which the thesis's rays from a centre could not.",
+        data: "`fixtures/models/spot.obj` (public domain; 2 930 vertices), the thesis's cow among its models.",
         format: Format::Glb,
-        panels: &[Panel {
-            suffix: "",
-            title: "",
-            draw: |_| harmonic_glb(Model::Bumpy, FLAT_SMOOTH),
-        }],
+        panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("spot.obj") }],
     },
     Figure {
         number: (5, 22),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "As figure 5.21 for the rounded cube x⁴ + y⁴ + z⁴ = 1: its flat faces and rounded edges need more \
-                harmonics than 64×64 holds, and the fit ripples slightly along the edges.",
-        data: "built in: 60 000 points with ±0.3% noise.",
+        drawn: "As figure 5.21 for a duck, whose bill and tail are not star-shaped about any centre.",
+        data: "`fixtures/models/duck.obj` (MIT; 10 093 vertices), the thesis's duck among its models.",
         format: Format::Glb,
-        panels: &[Panel {
-            suffix: "",
-            title: "",
-            draw: |_| harmonic_glb(Model::RoundedCube, FLAT_SMOOTH),
-        }],
+        panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("duck.obj") }],
     },
     Figure {
         number: (5, 23),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "As figure 5.21 for a peanut, r = 0.7 + 0.5 z² (two lobes along z, star-shaped about its centre).",
-        data: "built in: 60 000 points with ±0.3% noise.",
+        drawn: "As figure 5.21 for Wuson, a four-legged cartoon animal in 54 pieces: its largest part (the body) is \
+                fitted and the small loose pieces left out, as `hi fit` reports.",
+        data: "`fixtures/models/wuson.off` (BSD-3-Clause; 3 205 vertices), in place of the thesis's bunny (whose \
+               licence does not allow it here).",
         format: Format::Glb,
-        panels: &[Panel {
-            suffix: "",
-            title: "",
-            draw: |_| harmonic_glb(Model::Peanut, FLAT_SMOOTH),
-        }],
+        panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("wuson.off") }],
     },
     Figure {
         number: (5, 24),
