@@ -35,12 +35,19 @@ pub(crate) const FIGURES: &[Figure] = &[
                 over the half period that covers the sphere once. As in the thesis the result is acceptable \
                 with some oscillation: each pole is a row of 24 equal points, met twice in a row by the \
                 reversed traversal, so the meridians wobble near the poles (the surface is within 0.01 of the \
-                sphere, and the fit reports no problem; both checked when the figure is generated). Panel \
-                (a), the points, is left out of the models.",
+                sphere, and the fit reports no problem; both checked when the figure is generated). (a) The \
+                data points (the 24 copies of each pole drawn once), as red beads.",
         data: "built-in: the unit sphere at polar angles iπ/12 (i = 0…12) and longitudes 2πj/24, poles repeated \
                24 times, as eq. 4.1 gives them.",
         format: Format::Glb,
-        panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| lat_long_fit() }],
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Data points",
+                draw: |_| points_glb(&lat_long_sections().concat()),
+            },
+            Panel { suffix: "b", title: "(b) Surface", draw: |_| lat_long_fit() },
+        ],
     },
     Figure {
         number: (5, 8),
@@ -52,10 +59,13 @@ pub(crate) const FIGURES: &[Figure] = &[
                 slabs near the poles hold bands rather than curves, which the polar angle orders into \
                 zigzags: the surface wrinkles and strays far from the sphere. The fit's report measures this \
                 (checked when the figure is generated): looping or scrambled contours, and a surface more \
-                than 0.1 from the sphere. Panel (a) is left out.",
+                than 0.1 from the sphere. (a) The points, as red beads.",
         data: "built-in: 600 points uniform on the unit sphere (z and the longitude uniform, a fixed 64-bit LCG).",
         format: Format::Glb,
-        panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| random_sphere_fit() }],
+        panels: &[
+            Panel { suffix: "a", title: "(a) Data points", draw: |_| points_glb(&random_points()) },
+            Panel { suffix: "b", title: "(b) Surface", draw: |_| random_sphere_fit() },
+        ],
     },
     Figure {
         number: (5, 9),
@@ -65,12 +75,19 @@ pub(crate) const FIGURES: &[Figure] = &[
                 so the polar angle about it, the thesis's ordering, zigzags between the inner and outer arcs; \
                 the harmonic curves through the zigzags loop, and the surface folds through itself. The \
                 fit's report flags every section as scrambled (checked when the figure is generated); \
-                ordering by nearest neighbours instead follows the Cs. Panel (a) is left out.",
+                ordering by nearest neighbours instead follows the Cs. (a) The points, as red beads.",
         data: "built-in: 12 C-shaped sections of 100 points each, evenly spaced by arc length, at the centres of \
                12 equal slabs of z ∈ [−1, 1], scaled by √(1 − 0.8 z²). The thesis's figure is of a scan not \
                named.",
         format: Format::Glb,
-        panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| c_solid_fit() }],
+        panels: &[
+            Panel {
+                suffix: "a",
+                title: "(a) Data points",
+                draw: |_| points_glb(&c_solid_points()),
+            },
+            Panel { suffix: "b", title: "(b) Surface", draw: |_| c_solid_fit() },
+        ],
     },
 ];
 
@@ -94,10 +111,18 @@ fn off_unit_sphere(fit: &SectionFit) -> Result<f64> {
     Ok(samples.iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max))
 }
 
-/// Figure 5.7(b).
-fn lat_long_fit() -> Result<Vec<u8>> {
+/// The radius of the beads that draw the data points, panels (a).
+const BEAD: f64 = 0.025;
+
+/// Panel (a): the data points as beads.
+fn points_glb(points: &[DVec3]) -> Result<Vec<u8>> {
+    glb(&super::surfaces::beads(points, BEAD)?)
+}
+
+/// The data of figure 5.7: the sphere's latitude rows (eq. 4.1).
+fn lat_long_sections() -> Vec<Vec<DVec3>> {
     let (m, n) = LAT_LONG;
-    let sections: Vec<Vec<DVec3>> = (0..=m)
+    (0..=m)
         .map(|i| {
             let u = PI * i as f64 / m as f64;
             (0..n)
@@ -107,7 +132,12 @@ fn lat_long_fit() -> Result<Vec<u8>> {
                 })
                 .collect()
         })
-        .collect();
+        .collect()
+}
+
+/// Figure 5.7(b).
+fn lat_long_fit() -> Result<Vec<u8>> {
+    let sections = lat_long_sections();
     let fit = fit_given_sections(&sections, &SectionOptions::default())?;
     let off = off_unit_sphere(&fit)?;
     ensure!(off < 0.01, "the surface is {off} off the sphere");
@@ -126,17 +156,22 @@ impl Lcg {
     }
 }
 
-/// Figure 5.8(b).
-fn random_sphere_fit() -> Result<Vec<u8>> {
+/// The data of figure 5.8: random points on the unit sphere.
+fn random_points() -> Vec<DVec3> {
     let mut rng = Lcg(5);
-    let points: Vec<DVec3> = (0..RANDOM_POINTS)
+    (0..RANDOM_POINTS)
         .map(|_| {
             let z = 2.0 * rng.next() - 1.0;
             let a = TAU * rng.next();
             let s = (1.0 - z * z).sqrt();
             DVec3::new(s * a.cos(), s * a.sin(), z)
         })
-        .collect();
+        .collect()
+}
+
+/// Figure 5.8(b).
+fn random_sphere_fit() -> Result<Vec<u8>> {
+    let points = random_points();
     let fit = fit_sections(&points, &SectionOptions::default())?;
     let off = off_unit_sphere(&fit)?;
     ensure!(off > 0.1, "the surface is only {off} off the sphere");
@@ -187,15 +222,21 @@ fn c_section(n: usize, s: f64, z: f64) -> Vec<DVec3> {
         .collect()
 }
 
-/// Figure 5.9(b).
-fn c_solid_fit() -> Result<Vec<u8>> {
+/// The data of figure 5.9: the C-shaped sections of the bean.
+fn c_solid_points() -> Vec<DVec3> {
     let (k, per_section) = C_SOLID;
-    let points: Vec<DVec3> = (0..k)
+    (0..k)
         .flat_map(|i| {
             let z = (2 * i + 1) as f64 / k as f64 - 1.0;
             c_section(per_section, (1.0 - 0.8 * z * z).sqrt(), z)
         })
-        .collect();
+        .collect()
+}
+
+/// Figure 5.9(b).
+fn c_solid_fit() -> Result<Vec<u8>> {
+    let k = C_SOLID.0;
+    let points = c_solid_points();
     let options = SectionOptions { slices: Some(k), ..SectionOptions::default() };
     let fit = fit_sections(&points, &options)?;
     let scrambled = fit

@@ -525,6 +525,47 @@ fn with_markers(mesh: &TriangleMesh, points: &[DVec3], radius: f64) -> Result<Tr
         || vec![srgb_to_linear_rgb(SURFACE_SRGB); mesh.n_vertices()],
         <[[f32; 3]]>::to_vec,
     );
+    push_octahedra(
+        (&mut positions, &mut normals, &mut uvs, &mut triangles, &mut colors),
+        points,
+        radius,
+    )?;
+    Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
+}
+
+/// Data points drawn alone as red octahedra ("beads") of `radius`, one per distinct point.
+///
+/// # Errors
+///
+/// If there is no point or more than 2³² corners.
+pub(crate) fn beads(points: &[DVec3], radius: f64) -> Result<TriangleMesh> {
+    let mut parts = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    push_octahedra(
+        (&mut parts.0, &mut parts.1, &mut parts.2, &mut parts.3, &mut parts.4),
+        points,
+        radius,
+    )?;
+    let (positions, normals, uvs, triangles, colors) = parts;
+    ensure!(!triangles.is_empty(), "no points to draw");
+    Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
+}
+
+/// The parts of a mesh being built: positions, normals, UVs, triangles and colours.
+type Parts<'a> = (
+    &'a mut Vec<DVec3>,
+    &'a mut Vec<DVec3>,
+    &'a mut Vec<DVec2>,
+    &'a mut Vec<[u32; 3]>,
+    &'a mut Vec<[f32; 3]>,
+);
+
+/// Appends a red octahedron of `radius` at each distinct point of `points` (points within a
+/// thousandth of the radius of one already drawn are drawn once).
+fn push_octahedra(
+    (positions, normals, uvs, triangles, colors): Parts<'_>,
+    points: &[DVec3],
+    radius: f64,
+) -> Result<()> {
     let mut distinct: Vec<DVec3> = Vec::new();
     for &p in points {
         if distinct.iter().all(|q| q.distance(p) > 1e-3 * radius) {
@@ -549,7 +590,7 @@ fn with_markers(mesh: &TriangleMesh, points: &[DVec3], radius: f64) -> Result<Tr
             triangles.push(if (sx + sy + sz) % 2 == 0 { [x, y, z] } else { [x, z, y] });
         }
     }
-    Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
+    Ok(())
 }
 
 /// The colour map of the §5.9 pictures: cool–warm from −`extent` to `extent`.
