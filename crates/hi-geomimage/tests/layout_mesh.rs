@@ -30,14 +30,6 @@ fn topology(mesh: &TriangleMesh) -> (i64, bool, usize) {
     (used.len() as i64 - edges + mesh.n_triangles() as i64, closed, degenerate)
 }
 
-fn volume(mesh: &TriangleMesh) -> f64 {
-    let p = mesh.positions();
-    mesh.triangles()
-        .iter()
-        .map(|t| p[t[0] as usize].dot(p[t[1] as usize].cross(p[t[2] as usize])) / 6.0)
-        .sum()
-}
-
 fn bumpy_surface(layout: Layout, rows: usize, cols: usize) -> HarmonicSurface<DVec3> {
     let golden = PI * (3.0 - 5f64.sqrt());
     let n = 20_000;
@@ -77,7 +69,7 @@ fn every_layout_gives_a_closed_outward_mesh() {
                 assert!(closed, "{what}: not watertight");
                 assert_eq!(degenerate, 0, "{what}");
                 assert_eq!(chi, 2, "{what}: Euler characteristic");
-                assert!(volume(&m) > 0.0, "{what}: wound inward");
+                assert!(m.signed_volume() > 0.0, "{what}: wound inward");
                 assert!(m.normals().iter().all(|n| (n.length() - 1.0).abs() < 1e-9), "{what}");
             }
         }
@@ -108,7 +100,7 @@ fn the_mesh_follows_the_surface() {
         let worst = m.positions().iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max);
 
         assert!(worst < tolerance, "{layout:?}: a vertex {worst} off the sphere");
-        let v = volume(&m);
+        let v = m.signed_volume();
         assert!((v / (4.0 / 3.0 * PI) - 1.0).abs() < volume_tolerance, "{layout:?}: volume {v}");
     }
 }

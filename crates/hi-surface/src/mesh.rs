@@ -345,6 +345,33 @@ impl TriangleMesh {
             .iter()
             .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)))
     }
+
+    /// The volume the triangles enclose, Σ a·(b × c)/6 over the triangles (divergence
+    /// theorem): positive when a closed mesh is wound counter-clockwise seen from outside,
+    /// negative when it is wound inwards; for an open mesh, the signed volume of the cone
+    /// from the origin.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::{DVec2, DVec3};
+    /// use hi_surface::TriangleMesh;
+    ///
+    /// // The tetrahedron on the unit axes, wound outwards: volume 1/6.
+    /// let p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+    /// let t = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let mesh = TriangleMesh::try_new(p, vec![DVec3::Z; 4], vec![DVec2::ZERO; 4], t)?;
+    /// assert!((mesh.signed_volume() - 1.0 / 6.0).abs() < 1e-15);
+    /// # Ok::<(), hi_surface::Error>(())
+    /// ```
+    #[must_use]
+    pub fn signed_volume(&self) -> f64 {
+        let p = &self.positions;
+        self.triangles
+            .iter()
+            .map(|t| p[t[0] as usize].dot(p[t[1] as usize].cross(p[t[2] as usize])) / 6.0)
+            .sum()
+    }
 }
 
 /// Whether `v` has length 1 to [`UNIT_TOLERANCE`] (false for NaN).

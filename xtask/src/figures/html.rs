@@ -335,39 +335,19 @@ mod tests {
         let in_tables: usize =
             super::super::tables().iter().map(|t| t.about.matches("![").count()).sum();
         assert_eq!(images, panels + in_tables, "one image per panel (a model's is its render)");
-        let profile =
-            std::env::temp_dir().join(format!("harmonic-chromium-{}", std::process::id()));
-        let output = Command::new(browser)
-            .args([
-                "--headless",
-                "--no-sandbox",
-                "--disable-gpu",
-                "--allow-file-access-from-files",
-                "--virtual-time-budget=20000",
-            ])
-            .arg(format!("--user-data-dir={}", profile.display()))
-            .arg("--dump-dom")
-            .arg(format!("file://{}", page.display()))
-            .output()
-            .expect("Chromium runs");
-        let _ = std::fs::remove_dir_all(&profile);
-        let dom = String::from_utf8_lossy(&output.stdout);
+        let (status, stderr) = page_status(browser, &format!("file://{}", page.display()));
         let want = format!("loaded {images} of {images} images");
-        assert!(
-            dom.contains(&want),
-            "expected '{want}' in the page; status: {:?}; stderr: {}",
-            dom.split("id=\"status\">").nth(1).and_then(|t| t.split('<').next()),
-            String::from_utf8_lossy(&output.stderr)
-        );
+        assert_eq!(status, want, "stderr: {stderr}");
     }
 
-    /// Opens `viewer.html#{fragment}` in `dir` with headless Chromium and returns its status line.
-    fn viewer_status(browser: &str, dir: &std::path::Path, fragment: &str) -> String {
-        let profile = std::env::temp_dir().join(format!(
-            "harmonic-viewer-{}-{}",
-            std::process::id(),
-            fragment.len()
-        ));
+    /// Opens `url` in headless Chromium (scripts run, files beside the page readable) and
+    /// returns the text of the page's `#status` element once it has settled, and what
+    /// Chromium wrote on stderr.
+    fn page_status(browser: &str, url: &str) -> (String, String) {
+        static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let profile =
+            std::env::temp_dir().join(format!("harmonic-chromium-{}-{run}", std::process::id()));
         let output = Command::new(browser)
             .args([
                 "--headless",
@@ -379,16 +359,23 @@ mod tests {
             ])
             .arg(format!("--user-data-dir={}", profile.display()))
             .arg("--dump-dom")
-            .arg(format!("file://{}#{fragment}", dir.join(VIEWER).display()))
+            .arg(url)
             .output()
             .expect("Chromium runs");
         let _ = std::fs::remove_dir_all(&profile);
         let dom = String::from_utf8_lossy(&output.stdout);
-        dom.split("id=\"status\">")
+        let status = dom
+            .split("id=\"status\">")
             .nth(1)
             .and_then(|t| t.split('<').next())
             .unwrap_or("no status line")
-            .to_owned()
+            .to_owned();
+        (status, String::from_utf8_lossy(&output.stderr).into_owned())
+    }
+
+    /// The viewer's status line for `viewer.html#{fragment}` in `dir`.
+    fn viewer_status(browser: &str, dir: &std::path::Path, fragment: &str) -> String {
+        page_status(browser, &format!("file://{}#{fragment}", dir.join(VIEWER).display())).0
     }
 
     /// A binary glTF of a tetrahedron with positions only (no normals), scaled by 2 and moved

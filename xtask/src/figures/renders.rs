@@ -128,7 +128,11 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
     let (lo, hi) = all
         .iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
-    let shared = meshes.iter().all(|m| diagonal(m) >= 0.5 * (hi - lo).length());
+    let shared = meshes
+        .iter()
+        .all(|m| diagonal(m) >= 0.5 * (hi - lo).length())
+        .then(|| Camera::fitting(&all, from, DVec3::Z, FOV, aspect, FILL))
+        .transpose()?;
     // Edges [`EDGE_PIXELS`] wide, as seen.
     let style = EdgeStyle {
         color: EDGE_COLOR,
@@ -138,12 +142,13 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
         .into_iter()
         .zip(edges)
         .map(|(mesh, edges)| {
-            let camera = if shared {
-                Camera::fitting(&all, from, DVec3::Z, FOV, aspect, FILL)?
-            } else {
-                Camera::fitting(mesh.positions(), from, DVec3::Z, FOV, aspect, FILL)?
+            let (camera, (lo, hi)) = match shared {
+                Some(camera) => (camera, (lo, hi)),
+                None => (
+                    Camera::fitting(mesh.positions(), from, DVec3::Z, FOV, aspect, FILL)?,
+                    mesh.bounds(),
+                ),
             };
-            let (lo, hi) = if shared { (lo, hi) } else { mesh.bounds() };
             let mut object = MeshObject::new(mesh);
             if !edges.is_empty() {
                 object = object.with_edges(&edges, style)?;

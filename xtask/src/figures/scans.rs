@@ -226,17 +226,26 @@ fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
     glb(&covering_mesh(&result.surface, setup.layout, 2)?)
 }
 
+/// The image size of the real models' fits: below what `hi fit` picks for them, so that each
+/// figure file stays under a megabyte (the scans themselves live in
+/// `fixtures/models`).
+const REAL_IMAGE: (usize, usize) = (160, 160);
+
 /// The fit of the real model `file` of `fixtures/models` (stood up and turned to the viewer:
 /// its files have +y up and face −z, the figures have +z up and are seen from −y) by
-/// `hi fit`'s defaults (the spherical parameterisation of its mesh, no smoothing, the image
-/// size it picks for the model's size), meshed as `hi fit` writes it: one vertex per texel,
+/// `hi fit`'s defaults (the spherical parameterisation of its mesh, no smoothing) at
+/// [`REAL_IMAGE`], meshed as `hi fit` writes it: one vertex per texel,
 /// welded into a closed surface, checked to enclose a positive volume (wound outwards).
 fn real_glb(file: &str) -> Result<Vec<u8>> {
     let path = crate::project_root().join("fixtures/models").join(file);
     let scan = hi_geomimage::scan::read_scan(&path).with_context(|| format!("reading {file}"))?;
     let points = scan.points.iter().map(|p| DVec3::new(-p.x, p.z, p.y)).collect();
     let scan = Scan { points, ..scan };
-    let options = FitOptions { error: ErrorMeasure::Off, ..FitOptions::default() };
+    let options = FitOptions {
+        resolution: Some(REAL_IMAGE),
+        error: ErrorMeasure::Off,
+        ..FitOptions::default()
+    };
     let result = fit(&scan, &options, &mut |_| {})?;
     ensure!(
         result.report.method == hi_geomimage::Method::Mesh,
@@ -245,12 +254,7 @@ fn real_glb(file: &str) -> Result<Vec<u8>> {
         result.report.method_reason
     );
     let mesh = hi_geomimage::layout_mesh::layout_mesh(&result.surface, options.layout, 1)?.mesh;
-    let p = mesh.positions();
-    let volume: f64 = mesh
-        .triangles()
-        .iter()
-        .map(|t| p[t[0] as usize].dot(p[t[1] as usize].cross(p[t[2] as usize])) / 6.0)
-        .sum();
+    let volume = mesh.signed_volume();
     ensure!(volume > 0.0, "{file}: the fitted surface is wound inwards (volume {volume})");
     glb(&mesh)
 }
@@ -459,8 +463,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 21),
         caption: "Surface fitting using harmonic tensor product surfaces",
         drawn: "The harmonic surface fitted to Keenan Crane's Spot (a cow) by `hi fit`'s defaults: the mesh closed, \
-                mapped onto the sphere without folds, sampled as a geometry image of the size `hi fit` picks and \
-                interpolated, with no smoothing; meshed as `hi fit` writes it (one vertex per texel, welded, closed). Horns, ears and legs \
+                mapped onto the sphere without folds, sampled as a 160×160 geometry image (smaller than `hi fit` \
+                picks, to keep the files small) and interpolated, with no smoothing; meshed as `hi fit` writes it (one vertex per texel, welded, closed). Horns, ears and legs \
                 are reached, which the thesis's rays from a centre could not.",
         data: "`fixtures/models/spot.obj` (public domain; 2 930 vertices), the thesis's cow among its models.",
         format: Format::Glb,
@@ -469,7 +473,8 @@ pub(crate) const FIGURES: &[Figure] = &[
     Figure {
         number: (5, 22),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "As figure 5.21 for a duck, whose bill and tail are not star-shaped about any centre.",
+        drawn: "As figure 5.21 for a duck, whose bill and tail are not star-shaped about any centre. The open bill's \
+                halves are thinner than a texel of the 160×160 image at their rims, which come out serrated.",
         data: "`fixtures/models/duck.obj` (MIT; 10 093 vertices), the thesis's duck among its models.",
         format: Format::Glb,
         panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("duck.obj") }],
