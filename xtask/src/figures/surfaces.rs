@@ -628,6 +628,8 @@ pub(crate) fn colour_bar(number: (u32, u32), suffix: &str) -> Result<(ColorLegen
 
 /// A number for a colour bar: three significant digits, a true minus sign.
 fn tick(x: f64) -> String {
+    // Rounded to three significant digits first, so that 0.99996 is 1.00, not 1.000.
+    let x: f64 = format!("{x:.2e}").parse().unwrap_or(x);
     let a = x.abs();
     let s = if x == 0.0 {
         "0".to_owned()
@@ -1001,6 +1003,16 @@ mod tests {
         }
         // Each pole quad gives one triangle.
         assert_eq!(mesh.n_triangles(), 2 * 8 * 6 - 2 * 8, "pole triangles dropped");
+    }
+
+    #[test]
+    fn ticks_have_three_significant_digits() {
+        assert_eq!(tick(0.99996), "1.00");
+        assert_eq!(tick(-0.5), "−0.500");
+        assert_eq!(tick(123.456), "123");
+        assert_eq!(tick(0.0), "0");
+        assert_eq!(tick(2.5e-4), "2.50·10⁻⁴");
+        assert_eq!(tick(-31_400.0), "−3.14·10⁴");
     }
 
     #[test]
