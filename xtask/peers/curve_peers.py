@@ -5,7 +5,7 @@
 usage: curve_peers.py RUNS N1 N2 ...
          for each n, the n planar points x_k = (3 sin 0.37k, cos 1.3k + 0.01k) sampled at 16n
          uniform parameters by scipy.signal.resample along axis 0 (the same periodic spectral
-         zero-padding as the harmonic curve, MATH.md §7); prints {"seconds": [median per n]},
+         zero-padding as the harmonic curve, docs/math.md §7); prints {"seconds": [median per n]},
          each the median of RUNS runs after one warm-up.
 Exit status 3: scipy is not installed.
 """

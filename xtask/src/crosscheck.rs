@@ -6,7 +6,7 @@
 //! The figures:
 //! - every figure is drawn again; each `.glb` was read back by the `gltf` crate as the mesh in
 //!   memory while it was drawn, and the committed files must equal what is drawn now;
-//! - every `.glb` is loaded (`hi_surface::export::load`, the `gltf` crate) and written again
+//! - every `.glb` is loaded (`hi_mesh::export::load`, the `gltf` crate) and written again
 //!   as OBJ and as glTF (JSON + `.bin`); both are read back (`tobj`, `gltf`) and must equal the
 //!   mesh exactly at f32;
 //! - trimesh loads every `.glb`, `.gltf` and `.obj` and must find the same vertices, faces and
@@ -27,7 +27,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use anyhow::{Context, Result, bail};
-use hi_surface::export;
+use hi_mesh::export;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::Value;
 
@@ -38,24 +38,24 @@ const BLENDER_SAMPLE: usize = 6;
 
 /// The test files that compare with peer programs: (what, peers, crate, test file).
 const PEER_SUITES: &[(&str, &str, &str, &str)] = &[
-    ("Hobby's curves (§2.9)", "METAPOST (`mpost`)", "hi-curve", "compare_hobby"),
+    ("Hobby's curves (§2.9)", "METAPOST (`mpost`)", "hi-compare", "hobby"),
     ("trigonometric resampling (§3.3)", "scipy `signal.resample`", "hi-curve", "peer_scipy"),
     (
         "interpolating and periodic B-splines (§2.6)",
         "scipy `make_interp_spline`",
-        "hi-curve",
-        "compare_bspline",
+        "hi-compare",
+        "bspline",
     ),
     (
         "B-spline surface interpolation (§4.4)",
         "scipy tensor-product splines",
-        "hi-surface",
+        "hi-compare",
         "peer_scipy_bspline",
     ),
     (
         "subdivision surfaces (§4.3)",
         "CGAL, OpenMesh, pymeshlab, trimesh",
-        "hi-surface",
+        "hi-mesh",
         "subdivision_peers",
     ),
     ("mesh export", "Khronos glTF-Validator", "hi-surface", "export_validator"),
@@ -166,7 +166,7 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
     });
     // Every model written again as OBJ and glTF, and read back.
     bar.set_message("re-exporting the models as OBJ and glTF");
-    let mut files: Vec<(PathBuf, hi_surface::TriangleMesh)> = Vec::new();
+    let mut files: Vec<(PathBuf, hi_mesh::TriangleMesh)> = Vec::new();
     let (mut obj_bad, mut gltf_bad) = (Vec::new(), Vec::new());
     for (name, bytes) in &glbs {
         let glb = tmp.join(name);
@@ -225,7 +225,7 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
     });
     bar.set_message("Blender");
     let step = (glbs.len() / (BLENDER_SAMPLE / 2)).max(1);
-    let sample: Vec<&(PathBuf, hi_surface::TriangleMesh)> = files
+    let sample: Vec<&(PathBuf, hi_mesh::TriangleMesh)> = files
         .iter()
         .filter(|(p, _)| p.extension().is_some_and(|e| e == "glb" || e == "obj"))
         .enumerate()
@@ -242,7 +242,7 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
 }
 
 /// trimesh's counts and coordinate sums against the meshes.
-fn trimesh(root: &Path, files: &[(PathBuf, hi_surface::TriangleMesh)]) -> Outcome {
+fn trimesh(root: &Path, files: &[(PathBuf, hi_mesh::TriangleMesh)]) -> Outcome {
     let script = root.join("xtask/peers/trimesh_load.py");
     let output =
         match Command::new("python3").arg(&script).args(files.iter().map(|(p, _)| p)).output() {
@@ -342,7 +342,7 @@ fn validator(files: &[&Path]) -> Outcome {
 }
 
 /// Blender's import of `sample`.
-fn blender(root: &Path, sample: &[&(PathBuf, hi_surface::TriangleMesh)]) -> Outcome {
+fn blender(root: &Path, sample: &[&(PathBuf, hi_mesh::TriangleMesh)]) -> Outcome {
     let script = root.join("xtask/peers/blender_import.py");
     let output = match Command::new("blender")
         .args(["--background", "--factory-startup", "--python"])

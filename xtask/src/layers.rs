@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! The layer rule of docs/architecture.md: a crate may depend only on crates below it.
 //!
-//! {hi-interval, hi-bezier} → hi-curve → hi-surface → {hi-geomimage, hi-raytrace} → hi-cli,
+//! {hi-interval, hi-bezier, hi-mesh} → hi-curve → {hi-surface, hi-compare} →
+//! {hi-geomimage, hi-raytrace} → hi-cli,
 //! with xtask on top. Every `[dependencies]`, `[dev-dependencies]` and
 //! `[build-dependencies]` table of every crate under `crates/` is read; a `hi-*` entry whose
 //! layer is not strictly lower than the crate's own is an error.
@@ -11,11 +12,13 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 /// Each crate and its layer; 0 is the foundation.
-pub(crate) const LAYERS: [(&str, u32); 8] = [
+pub(crate) const LAYERS: [(&str, u32); 10] = [
     ("hi-interval", 0),
     ("hi-bezier", 0),
+    ("hi-mesh", 0),
     ("hi-curve", 1),
     ("hi-surface", 2),
+    ("hi-compare", 2),
     ("hi-geomimage", 3),
     ("hi-raytrace", 3),
     ("hi-cli", 4),

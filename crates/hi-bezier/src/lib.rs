@@ -83,3 +83,8 @@ pub use point::ControlPoint;
 pub use rational::RationalBezierCurve;
 pub use rational_patch::RationalBezierPatch;
 pub use triangle::TriangularPatch;
+
+/// The example of this crate's README, run as a doctest so that it stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;

@@ -2,7 +2,7 @@
 //! Parsers for the values of command-line options: finite numbers, comma-separated lists,
 //! counts, derivative orders, curve kinds, grid sizes and parameter windows.
 
-use hi_curve::compare::CurveKind;
+use hi_compare::CurveKind;
 use hi_geomimage::regularise::Regularisation;
 
 /// Highest derivative order `--derivatives` accepts. Above it every derivative of a

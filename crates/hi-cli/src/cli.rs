@@ -4,8 +4,8 @@
 use std::path::PathBuf;
 
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
+use hi_compare::CurveKind;
 use hi_curve::bezier::BezierScheme;
-use hi_curve::compare::CurveKind;
 
 use crate::args::{
     FloatList, Size, Window, parse_count, parse_derivatives, parse_finite, parse_float_list,
@@ -792,7 +792,7 @@ Example: hi surface mesh --input torus.json --resolution 64x32 --color gaussian 
 /// The output of `hi surface example`.
 const SURFACE_EXAMPLE_HELP: &str = "\
 Output: the grid file {\"grid\": [[[x, y, z], ...], ...]} of a surface, on stdout or in FILE.
-  sphere: the exact unit sphere from a 4×4 grid (MATH.md §3); u ∈ [0, 1/2] covers it once, the
+  sphere: the exact unit sphere from a 4×4 grid (docs/math.md §3); u ∈ [0, 1/2] covers it once, the
     poles are at u = 0 and 1/2, and pu × pv points outward.
   torus: the exact torus with radii R = 2 and r = 1 from a 4×4 grid.
   With --samples MxN they are sampled at (j/M, k/N) instead: the same surface when M, N ≥ 4.
@@ -1006,8 +1006,8 @@ pub(crate) enum PaletteName {
 impl PaletteName {
     /// The colour map: the magnitude from 0 for the sequential palettes, the signed value
     /// about 0 for the diverging one; over every value.
-    pub(crate) fn color_map(self) -> hi_surface::ColorMap {
-        use hi_surface::{ColorMap, ColorScale, Palette};
+    pub(crate) fn color_map(self) -> hi_mesh::ColorMap {
+        use hi_mesh::{ColorMap, ColorScale, Palette};
         let (scale, palette) = match self {
             PaletteName::Thesis => (ColorScale::Magnitude, Palette::Thesis),
             PaletteName::Viridis => (ColorScale::Magnitude, Palette::Viridis),

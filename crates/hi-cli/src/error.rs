@@ -56,8 +56,20 @@ impl From<hi_surface::Error> for Failure {
     }
 }
 
+impl From<hi_mesh::Error> for Failure {
+    fn from(e: hi_mesh::Error) -> Self {
+        Failure::Input(e.to_string())
+    }
+}
+
+impl From<hi_compare::Error> for Failure {
+    fn from(e: hi_compare::Error) -> Self {
+        Failure::Input(e.to_string())
+    }
+}
+
 /// Prefixes a library error with the argument or file it came from: `"--count: …"`.
-pub(crate) fn context(what: &str) -> impl FnOnce(hi_curve::Error) -> Failure + '_ {
+pub(crate) fn context<E: fmt::Display>(what: &str) -> impl FnOnce(E) -> Failure + '_ {
     move |e| Failure::Input(format!("{what}: {e}"))
 }
 

@@ -1,23 +1,18 @@
 // SPDX-License-Identifier: MIT
-//! `hi`: the harmonic curves and surfaces of A. Hardy's 2005 thesis (crates `hi-curve` and
-//! `hi-surface`) on the command line, with JSON in and out.
+//! `hi`: the harmonic curves and surfaces of A. Hardy's 2005 thesis, everything they are
+//! compared with, scan fitting and rendering (the `hi-*` crates) on the command line, with JSON
+//! in and out. `hi --help` and `hi COMMAND --help` give every option.
 //!
 //! ```text
-//! hi basis --n N --k K --t T1,T2,... [--derivatives D]
-//! hi curve eval       --input FILE --t T1,T2,... [--derivatives D]
-//! hi curve sample     --input FILE --count N [--kind KIND]
-//! hi curve fairness   --input FILE [--kind KIND] [--samples N]
-//! hi curve to-bezier  --input FILE --kind KIND
-//! hi curve rotate     --input FILE --offset O [--exact]
-//! hi curve resample   --input FILE --count N
-//! hi curve subdivide  --input FILE --levels L
-//! hi curve nonuniform --input FILE --t T1,... --variant thesis|nodes [--params P0,...]
-//! hi surface eval     --input GRID --u U1,... --v V1,...
-//! hi surface mesh     --input GRID [--resolution UxV] [--window u0,u1,v0,v1]
-//!                     [--color gaussian|mean] -o OUT.obj|OUT.gltf|OUT.glb
-//! hi surface example  sphere|torus|<a §5.9 surface> [--samples MxN] [-o FILE]
-//! hi render           SCENE.json -o OUT.png [--width W --height H --spp S]
-//! hi render           --quick FILE [--method bezier|interval|bisection|mesh] -o OUT.png
+//! hi basis [roots]    values and derivatives of σⁿₖ; roots of its derivatives (§5.6)
+//! hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivide|nonuniform --input FILE
+//!                     the harmonic curve (or, with --kind, a comparison curve) through points
+//! hi surface eval|mesh|example|bezier|bspline-fit
+//!                     harmonic surfaces, meshes (OBJ, glTF, GLB), Bézier patches, B-spline fits
+//! hi subdivide        --scheme SCHEME --steps K IN.(obj|off) -o OUT: subdivision surfaces (§4.5)
+//! hi fit SCAN -o OUT  a harmonic surface fitted to a scan (§5.3, §5.4, §5.8)
+//! hi bezier basis     control values of σₖ on the pieces of a thesis scheme (§5.7)
+//! hi render           SCENE.json -o OUT.png, or --quick FILE -o OUT.png (§5.5, §5.6)
 //! ```
 //!
 //! The input is `{"points": [...]}` or a bare array of points, or for surfaces

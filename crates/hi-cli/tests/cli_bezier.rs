@@ -8,7 +8,7 @@ mod common;
 use common::{bad, bad_on, dist, num, nums, ok, ok_on, points};
 use serde_json::Value;
 
-/// The closed form for n = 3: σ₀(t) = (1 + 2 cos 2πt)/3 (MATH.md §1), shifted by k/3.
+/// The closed form for n = 3: σ₀(t) = (1 + 2 cos 2πt)/3 (docs/math.md §1), shifted by k/3.
 fn sigma3(k: usize, t: f64) -> f64 {
     (1.0 + 2.0 * (std::f64::consts::TAU * (t - k as f64 / 3.0)).cos()) / 3.0
 }

@@ -8,7 +8,7 @@
 mod common;
 
 use common::{TempFile, bad, bad_on, nums, ok, ok_on, points};
-use hi_curve::compare::bspline::BSplineBasis;
+use hi_compare::bspline::BSplineBasis;
 use serde_json::Value;
 
 /// Slices across a bump, of different lengths.

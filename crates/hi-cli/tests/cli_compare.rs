@@ -12,7 +12,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use common::{TempFile, bad, bad_on, dist, json_points, num, ok, ok_on, points};
 use serde_json::Value;
 
-/// The irregular pentagon of PEERS.md §1 and §2b.
+/// The irregular pentagon of docs/peers.md §1 and §2b.
 fn pentagon() -> Vec<Vec<f64>> {
     vec![vec![0.0, 0.0], vec![3.0, 1.0], vec![4.0, 4.0], vec![1.0, 5.0], vec![-1.0, 2.0]]
 }
@@ -182,7 +182,7 @@ fn catmull_rom_and_tcb_segments_have_the_central_difference_tangents() {
 
 #[test]
 fn hobby_control_points_are_metapost_s() {
-    // `mpost -numbersystem=double` on the closed pentagon (PEERS.md §1): postcontrol of z₀.
+    // `mpost -numbersystem=double` on the closed pentagon (docs/peers.md §1): postcontrol of z₀.
     let segs = segments(&json_points(&pentagon()), "hobby-closed");
     assert_eq!(segs.len(), 5, "five segments");
     assert!(dist(&segs[0][0], &[0.0, 0.0]) == 0.0, "a segment starts at its knot");

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! End-to-end tests of `hi subdivide`: the refined meshes are read back from the written files
 //! (OBJ parsed here by hand, GLB by the `gltf` crate) and checked against the values the peer
-//! programs give (shared/PEERS.md §3: CGAL, `OpenMesh` and trimesh agree on them).
+//! programs give (docs/peers.md §3: CGAL, `OpenMesh` and trimesh agree on them).
 
 #[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
 mod common;
@@ -57,7 +57,7 @@ fn catmull_clark_on_the_cube() {
     );
     let v = obj_vertices(out.as_path());
     assert_eq!(v.len(), 26);
-    // The corner (0, 0, 0) moves to (2/9, 2/9, 2/9) (PEERS.md §3).
+    // The corner (0, 0, 0) moves to (2/9, 2/9, 2/9) (docs/peers.md §3).
     let corner = v
         .iter()
         .copied()
@@ -75,7 +75,7 @@ fn loop_on_the_octahedron_to_glb() {
     let report =
         ok(&["subdivide", "--scheme", "loop", "--steps", "2", input.path(), "-o", out.path()]);
     assert_eq!((report["vertices"].as_u64(), report["faces"].as_u64()), (Some(66), Some(128)));
-    // (1, 0, 0) moves to x = 0.447510 after two steps (PEERS.md §3).
+    // (1, 0, 0) moves to x = 0.447510 after two steps (docs/peers.md §3).
     let x = obj_vertices(out.as_path()).iter().map(|p| p[0]).fold(f64::MIN, f64::max);
     assert!((x - 0.447_510).abs() < 5e-7, "{x}");
     let glb = TempFile::path_with("glb");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Uniform sampling of a harmonic curve at N = 16n points: the thesis's direct sum, O(nN),
-//! against the FFT path, O(N log N) (MATH.md §7), for n = 64 … 4096; and, in the same run, the
+//! against the FFT path, O(N log N) (docs/math.md §7), for n = 64 … 4096; and, in the same run, the
 //! independent peer `scipy.signal.resample` (which computes the same samples) when Python with
 //! scipy is installed, reported as a ratio.
 

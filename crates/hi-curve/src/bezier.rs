@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Harmonic curves as piecewise Bézier curves (Hardy 2005, §5.7; MATH.md §4): the thesis's two
+//! Harmonic curves as piecewise Bézier curves (Hardy 2005, §5.7; docs/math.md §4): the thesis's two
 //! schemes, which approximate the basis σₖ by piecewise polynomials, and a C1 Hermite scheme
 //! that reaches any tolerance, each with its deviation measured and bounded.
 //!
@@ -59,7 +59,7 @@ pub enum HermiteDegree {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum BezierScheme {
-    /// The thesis's cubic scheme (MATH.md §4): on each [a/n, (a+1)/n] one cubic per σₖ through
+    /// The thesis's cubic scheme (docs/math.md §4): on each [a/n, (a+1)/n] one cubic per σₖ through
     /// σₖ at a/n + i/(3n), i = 0 … 3. C0; the data points are interpolated.
     ThesisCubic,
     /// The thesis's earlier degree-5 scheme: two quintic Hermite pieces (value, σ′, σ″) between
@@ -168,7 +168,7 @@ fn cubic_hermite<P: ControlPoint>(f0: [P; 2], f1: [P; 2], h: f64) -> [P; 4] {
 }
 
 impl BasisPieces {
-    /// The thesis's cubic scheme for basis size n (MATH.md §4): n pieces [a/n, (a+1)/n]; on
+    /// The thesis's cubic scheme for basis size n (docs/math.md §4): n pieces [a/n, (a+1)/n]; on
     /// each, `P[a][k]` = B⁻¹·[σₖ(a/n + i/(3n))]ᵢ. `P[a][k][0]` = δₐₖ and `P[a][k][3]` = δₐ₊₁,ₖ.
     ///
     /// # Errors

@@ -125,7 +125,7 @@ impl<P: ControlPoint> HarmonicCurve<P> {
         ts.iter().map(|&t| self.eval(t)).collect()
     }
 
-    /// X(l/N) for l = 0, …, N−1 by FFT (spectral zero-padding, MATH.md §7): O(N log N).
+    /// X(l/N) for l = 0, …, N−1 by FFT (spectral zero-padding, docs/math.md §7): O(N log N).
     ///
     /// # Errors
     ///

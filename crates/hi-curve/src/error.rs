@@ -77,15 +77,6 @@ pub enum Error {
         /// Which system.
         what: &'static str,
     },
-    /// A construction needs more points than were given.
-    TooFewPoints {
-        /// What needs them.
-        what: &'static str,
-        /// How many it needs.
-        needed: usize,
-        /// How many there are.
-        got: usize,
-    },
     /// A scalar argument is outside the range a construction accepts.
     ParameterOutOfBounds {
         /// Name of the argument.
@@ -94,31 +85,6 @@ pub enum Error {
         value: f64,
         /// The accepted range, in words.
         expected: &'static str,
-    },
-    /// A knot vector is not a valid one (not non-decreasing, wrong length, or too many
-    /// repeated knots).
-    InvalidKnots {
-        /// What is wrong with it.
-        reason: &'static str,
-    },
-    /// A rational weight is not finite and positive.
-    InvalidWeight {
-        /// Index of the weight.
-        index: usize,
-        /// Its value.
-        value: f64,
-    },
-    /// Node parameters that must increase decrease somewhere: parameter `index` is smaller
-    /// than parameter `index − 1`.
-    ParametersNotIncreasing {
-        /// Index of the first parameter smaller than its predecessor.
-        index: usize,
-    },
-    /// A result overflows the range of `f64` (finite input whose coordinates are too large, or
-    /// a conversion whose coefficients grow too fast).
-    Overflow {
-        /// What overflows.
-        what: &'static str,
     },
 }
 
@@ -160,26 +126,9 @@ impl fmt::Display for Error {
                 "points {first} and {second} coincide, so their chord-length parameters do too"
             ),
             Error::Singular { what } => write!(f, "the {what} is singular to working precision"),
-            Error::TooFewPoints { what, needed, got } => {
-                write!(f, "{what} needs at least {}, got {got}", plural(*needed, "point"))
-            }
+
             Error::ParameterOutOfBounds { name, value, expected } => {
                 write!(f, "{name} = {value} is out of range: expected {expected}")
-            }
-            Error::InvalidKnots { reason } => write!(f, "invalid knot vector: {reason}"),
-            Error::InvalidWeight { index, value } => {
-                write!(
-                    f,
-                    "weight {index} = {value} is invalid: weights must be finite and positive"
-                )
-            }
-            Error::ParametersNotIncreasing { index } => write!(
-                f,
-                "parameter {index} is smaller than parameter {}: the parameters must increase",
-                index.saturating_sub(1)
-            ),
-            Error::Overflow { what } => {
-                write!(f, "the {what} overflows the range of floating-point numbers")
             }
         }
     }

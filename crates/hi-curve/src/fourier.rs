@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Fourier coefficients of a harmonic curve and uniform sampling by FFT (MATH.md §7).
+//! Fourier coefficients of a harmonic curve and uniform sampling by FFT (docs/math.md §7).
 //!
 //! The harmonic curve through n points is the real trigonometric polynomial
 //!
@@ -80,7 +80,7 @@ fn with_inverse_buffers<R>(
 }
 
 /// A real trigonometric polynomial X(t) = a₀ + Σⱼ₌₁ᴹ (aⱼ cos 2πjt + bⱼ sin 2πjt) with point
-/// coefficients: the spectrum of a harmonic curve (MATH.md §7, eq. 5.1).
+/// coefficients: the spectrum of a harmonic curve (docs/math.md §7, eq. 5.1).
 ///
 /// # Examples
 ///

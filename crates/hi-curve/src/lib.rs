@@ -28,7 +28,7 @@
 //! use glam::DVec2;
 //! use hi_curve::{HarmonicCurve, ParamCurve};
 //!
-//! // The harmonic curve through the vertices of a square is its circumcircle (MATH.md §3).
+//! // The harmonic curve through the vertices of a square is its circumcircle (docs/math.md §3).
 //! let square = vec![DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y];
 //! let curve = HarmonicCurve::new(square);
 //! for i in 0..100 {
@@ -39,13 +39,21 @@
 //! assert!((curve.eval(0.25) - DVec2::Y).length() < 1e-15); // passes through x₁ at t = 1/4
 //! ```
 //!
+//! # References
+//!
+//! Sections cited as "`docs/math.md` §N" are those of the repository's page of
+//! [formulas](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/math.md), each
+//! checked numerically; "`docs/peers.md` §N", of its page of
+//! [peer programs](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/peers.md)
+//! that the tests compare against.
+//!
 //! # Feature flags
 //!
 //! None: the crate has no optional features.
 
 mod basis;
 pub mod bezier;
-pub mod compare;
+
 mod curve;
 mod differential;
 mod error;
@@ -73,3 +81,8 @@ pub struct ReadmeDoctests;
 
 /// Default accuracy for methods that take an `accuracy` argument (arc length), as in kurbo.
 pub const DEFAULT_ACCURACY: f64 = 1e-9;
+
+/// The example of this crate's README, run as a doctest so that it stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! The theorems of chapter 5 on a harmonic curve: rotation (Thm 5.1), insertion and reduction
-//! (Thm 5.3, §5.4) and harmonic subdivision (§5.2). MATH.md §2.
+//! (Thm 5.3, §5.4) and harmonic subdivision (§5.2). docs/math.md §2.
 //!
 //! All of them resample the curve at N uniform parameters, yⱼ = X(j/N + o), which is an
 //! inverse FFT of the (shifted) spectrum: O(N log N) where the thesis sums in O(nN).
@@ -30,7 +30,7 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     /// X(j/n + o), and the harmonic curve through them.
     ///
     /// For odd n the new curve is the old one shifted, Y(t) = X(t + o). **For even n it is not**
-    /// (MATH.md §2): Y(t) = X(t + o) + c·sin(πno)·sin(πnt) with c = (1/n)Σₖ(−1)ᵏxₖ, so the
+    /// (docs/math.md §2): Y(t) = X(t + o) + c·sin(πno)·sin(πnt) with c = (1/n)Σₖ(−1)ᵏxₖ, so the
     /// theorem holds only when n·o is an integer (a relabelling of the points) or c = 0 (for
     /// instance a regular polygon). [`HarmonicCurve::rotate`] is exact for every n.
     ///
@@ -58,7 +58,7 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     ///
     /// For odd n this is [`HarmonicCurve::rotate_theorem_5_1`]. For even n the curve is first
     /// lifted to n + 1 points by Theorem 5.3 (exact), so the result has n + 1 points
-    /// (MATH.md §7).
+    /// (docs/math.md §7).
     ///
     /// # Errors
     ///
@@ -165,7 +165,7 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     }
 
     /// The alternating sum c = (1/n)·Σₖ (−1)ᵏ·xₖ of an even-n curve: the cosine coefficient of
-    /// the Nyquist frequency, and the size of the defect of Theorem 5.1 (MATH.md §2).
+    /// the Nyquist frequency, and the size of the defect of Theorem 5.1 (docs/math.md §2).
     /// Zero for odd n.
     #[must_use]
     pub fn alternating_mean(&self) -> P {

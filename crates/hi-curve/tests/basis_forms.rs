@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! The four evaluation forms of σⁿₖ agree (MATH.md §1), including near the integers and far
+//! The four evaluation forms of σⁿₖ agree (docs/math.md §1), including near the integers and far
 //! from zero, for n up to 4096.
 
 use hi_curve::{Form, Sigma};

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! The Bézier forms of §5.7 (`hi_curve::bezier`): the thesis's cubic scheme against the numbers
-//! of MATH.md §4, partition of unity, interpolation of the data, the Hermite scheme's tolerance
+//! of docs/math.md §4, partition of unity, interpolation of the data, the Hermite scheme's tolerance
 //! and C1 joins, and the guaranteed bounds against dense sampling.
 
 use glam::{DVec2, DVec3};
@@ -72,7 +72,7 @@ fn thesis_cubic_control_values_solve_the_bernstein_system() {
 
 #[test]
 fn thesis_cubic_basis_error_is_the_plateau_of_math_md() {
-    // MATH.md §4, computed there independently: max over k, t of |σₖ − Bézier|.
+    // docs/math.md §4, computed there independently: max over k, t of |σₖ − Bézier|.
     let table = [
         (2, 5.48e-3),
         (3, 6.21e-3),
@@ -90,8 +90,8 @@ fn thesis_cubic_basis_error_is_the_plateau_of_math_md() {
     for (n, want) in table {
         let p = BasisPieces::thesis_cubic(n).expect("n ≥ 1");
         let got = basis_error(&p, 400 * n);
-        assert!((got - want).abs() < 0.01 * want + 5e-6, "n = {n}: {got:e}, MATH.md {want:e}");
-        assert!(got < 7.5e-3, "n = {n}: the MATH.md bound 7.5e-3");
+        assert!((got - want).abs() < 0.01 * want + 5e-6, "n = {n}: {got:e}, docs/math.md {want:e}");
+        assert!(got < 7.5e-3, "n = {n}: the docs/math.md bound 7.5e-3");
     }
 }
 
@@ -140,7 +140,7 @@ fn the_quintic_pieces_are_exact_hermite_data_at_the_zeros_of_sigma_prime() {
 
 #[test]
 fn the_thesis_cubic_has_a_derivative_jump_of_about_twelve_percent() {
-    // MATH.md §4: the derivative jumps at the knots by about 12% of max|σ′| for all n.
+    // docs/math.md §4: the derivative jumps at the knots by about 12% of max|σ′| for all n.
     for n in [5usize, 8, 16] {
         let p = BasisPieces::thesis_cubic(n).expect("n");
         let sigma = Sigma::new(n);
@@ -308,7 +308,7 @@ fn the_thesis_cubic_on_a_curve_has_a_c0_plateau_and_a_tangent_jump() {
     let r = curve.to_bezier(BezierScheme::ThesisCubic, None).expect("converts").report;
     assert_eq!((r.pieces, r.degree), (7, 3), "n cubic pieces");
     assert!(r.max_tangent_jump > 1e-4, "C0 only: {r:?}");
-    // The basis error of MATH.md §4 (below 7.5e-3 per σₖ) bounds the curve's, as the
+    // The basis error of docs/math.md §4 (below 7.5e-3 per σₖ) bounds the curve's, as the
     // approximated basis sums to one: ≤ 7.5e-3·Σ‖xₖ − c‖ = 7.5e-3·7 here.
     assert!(r.max_deviation > 0.0 && r.max_deviation < 7.5e-3 * 7.0, "{r:?}");
     assert!(r.max_deviation <= r.bound, "{r:?}");

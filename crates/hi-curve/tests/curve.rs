@@ -118,7 +118,7 @@ fn cusp_has_no_curvature() {
 #[test]
 fn reduction_reports_its_error() {
     // Band-limited data: resample(resample(x, 6), 11) reduced back to 6 points loses nothing
-    // but the even Nyquist sine, so the error is tiny (MATH.md §2).
+    // but the even Nyquist sine, so the error is tiny (docs/math.md §2).
     let base = HarmonicCurve::new(knot(7)).resample(6).unwrap().0;
     let up = base.resample(11).unwrap().0;
     let (down, err) = up.resample(6).unwrap();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Non-uniform interpolation (§3.10, MATH.md §5): both readings, on random and awkward nodes.
+//! Non-uniform interpolation (§3.10, docs/math.md §5): both readings, on random and awkward nodes.
 
 use std::f64::consts::PI;
 
@@ -97,7 +97,7 @@ proptest! {
 
 #[test]
 fn thesis_variant_does_not_pass_through_the_points_at_their_params() {
-    // MATH.md §5: the tⱼ act as frequencies; at t = tₖ the curve misses xₖ by O(1).
+    // docs/math.md §5: the tⱼ act as frequencies; at t = tₖ the curve misses xₖ by O(1).
     let pts = vec![
         DVec2::new(0.0, 0.0),
         DVec2::new(3.0, 1.0),

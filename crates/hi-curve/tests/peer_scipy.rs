@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Cross-check against an independent program: `scipy.signal.resample` samples the same curve
-//! as the harmonic interpolant, for both parities of n (PEERS.md §2a).
+//! as the harmonic interpolant, for both parities of n (docs/peers.md §2a).
 //!
 //! Two checks: the committed fixture (random data and scipy's output, written by
 //! `fixtures/curve/scipy_resample.py --fixture`), and a live run of scipy on fresh random data
@@ -64,7 +64,7 @@ fn fixture_from_scipy_matches() {
         let big_n = case["N"].as_u64().unwrap() as usize;
         let expected = to_rows(&case["y"]);
         let err = max_error(&ours(&x, big_n), &expected);
-        // N(0,1) data: scipy and we agree to rounding (PEERS.md measured ≤ 7e-15 at n = 33).
+        // N(0,1) data: scipy and we agree to rounding (docs/peers.md measured ≤ 7e-15 at n = 33).
         assert!(err < 1e-13, "n = {}, N = {big_n}: {err:e}", x.len());
         if x.len().is_multiple_of(2) { even += 1 } else { odd += 1 }
     }

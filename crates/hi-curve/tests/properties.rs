@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Property tests of the harmonic basis and curve: the identities of MATH.md §1–2 on random
+//! Property tests of the harmonic basis and curve: the identities of docs/math.md §1–2 on random
 //! input, for both parities of n.
 
 use std::f64::consts::PI;
@@ -8,7 +8,7 @@ use glam::{DMat2, DVec2, DVec3};
 use hi_curve::{HarmonicCurve, ParamCurve, PlaneCurve, Sigma};
 use proptest::prelude::*;
 
-/// The suggested tolerance of MATH.md for O(1) data.
+/// The suggested tolerance of docs/math.md for O(1) data.
 fn close(got: f64, expected: f64, rel: f64) -> bool {
     (got - expected).abs() <= 1e-11 + rel * expected.abs()
 }
@@ -64,7 +64,7 @@ proptest! {
         prop_assert!((sum - 1.0).abs() < 1e-12, "n={n} t={t}: {sum}");
     }
 
-    /// Σₖ σₖ(t)² = 1 for odd n and 1 − sin²(πnt)/n for even n (MATH.md §1).
+    /// Σₖ σₖ(t)² = 1 for odd n and 1 − sin²(πnt)/n for even n (docs/math.md §1).
     #[test]
     fn sum_of_squares(n in 1usize..400, t in 0.0..1.0f64) {
         let sum: f64 = Sigma::new(n).values(t).iter().map(|v| v * v).sum();
@@ -105,7 +105,7 @@ proptest! {
     }
 
     /// Theorem 5.1 as stated: exact for odd n; for even n off by exactly
-    /// −c·sin(πno)·sin(πnt), c = (1/n)Σ(−1)ᵏxₖ (MATH.md §2).
+    /// −c·sin(πno)·sin(πnt), c = (1/n)Σ(−1)ᵏxₖ (docs/math.md §2).
     #[test]
     fn thesis_rotation(pts in points_2d(60), o in -1.5..1.5f64, t in 0.0..1.0f64) {
         let curve = HarmonicCurve::new(pts);

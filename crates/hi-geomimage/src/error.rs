@@ -75,6 +75,8 @@ pub enum Error {
     },
     /// An error from the surface layer.
     Surface(hi_surface::Error),
+    /// An error from the mesh layer (`hi-mesh`): a mesh, a colour map, a mesh file.
+    Mesh(hi_mesh::Error),
 }
 
 impl fmt::Display for Error {
@@ -103,6 +105,7 @@ impl fmt::Display for Error {
                 100.0 * fraction
             ),
             Self::Surface(e) => write!(f, "{e}"),
+            Self::Mesh(e) => write!(f, "{e}"),
         }
     }
 }
@@ -112,6 +115,7 @@ impl std::error::Error for Error {
         match self {
             Self::Scan(e) => Some(e),
             Self::Surface(e) => Some(e),
+            Self::Mesh(e) => Some(e),
             _ => None,
         }
     }
@@ -126,5 +130,11 @@ impl From<ScanError> for Error {
 impl From<hi_surface::Error> for Error {
     fn from(e: hi_surface::Error) -> Self {
         Self::Surface(e)
+    }
+}
+
+impl From<hi_mesh::Error> for Error {
+    fn from(e: hi_mesh::Error) -> Self {
+        Self::Mesh(e)
     }
 }

@@ -1047,7 +1047,7 @@ impl HermiteGrid {
 /// The distance from x to the surface near the point `q` of mesh triangle `t`: from the (u, v)
 /// of q (barycentric in the triangle's UVs, unwrapped across the period), Gauss–Newton steps
 /// on |p(u, v) − x|², the least distance seen (every iterate is a point of the surface).
-fn project(grid: &HermiteGrid, mesh: &hi_surface::TriangleMesh, x: DVec3, t: u32, q: DVec3) -> f64 {
+fn project(grid: &HermiteGrid, mesh: &hi_mesh::TriangleMesh, x: DVec3, t: u32, q: DVec3) -> f64 {
     let tri = mesh.triangles()[t as usize];
     let [a, b, c] = tri.map(|k| mesh.positions()[k as usize]);
     let [ua, ub, uc] = tri.map(|k| mesh.uvs()[k as usize]);

@@ -27,7 +27,8 @@
 use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
-use hi_surface::{HarmonicSurface, TriangleMesh};
+use hi_mesh::TriangleMesh;
+use hi_surface::HarmonicSurface;
 
 use crate::spherical::{Layout, octahedral_direction};
 use crate::{Error, MAX_TEXELS};

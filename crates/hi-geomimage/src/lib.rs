@@ -25,6 +25,14 @@
 //! | the fitting pipeline, timed stage by stage, with diagnostics and errors | §5.3, §5.8, Table 5.1 | [`fit()`] |
 //! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
 //! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
+//!
+//! # References
+//!
+//! Sections cited as "`docs/math.md` §N" are those of the repository's page of
+//! [formulas](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/math.md), each
+//! checked numerically; "`docs/peers.md` §N", of its page of
+//! [peer programs](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/peers.md)
+//! that the tests compare against.
 
 pub mod closest;
 pub mod contours;
@@ -54,3 +62,8 @@ pub use fit::{
 pub use image::{GeometryImage, MAX_TEXELS};
 pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};
 pub use spherical::Layout;
+
+/// The example of this crate's README, run as a doctest so that it stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;

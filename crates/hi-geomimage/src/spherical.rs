@@ -5,7 +5,7 @@
 //! Texel (i, j) looks along d(u, v) = (sin 2πu cos 2πv, sin 2πu sin 2πv, cos 2πu) at
 //! u = i/rows, v = j/cols: u runs from the north pole over the south pole and back (a full
 //! meridian circle), v around the axis — the parameterisation of the exact harmonic sphere
-//! (MATH.md §3), under which the harmonic surface covers the object once for u ∈ [0, ½].
+//! (docs/math.md §3), under which the harmonic surface covers the object once for u ∈ [0, ½].
 //! Since d(1 − u, v + ½) = d(u, v), the rows past the south pole repeat the first half with v
 //! turned by ½; for an even number of columns they are copied exactly.
 //!

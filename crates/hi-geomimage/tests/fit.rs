@@ -248,11 +248,15 @@ fn every_layout_faces_outwards() {
         };
         let result = fit(&scan, &options, &mut |_| {}).unwrap();
         let (u0, u1) = layout.covering_window();
-        let mesh = hi_surface::TriangleMesh::try_from_surface(
-            &result.surface,
-            &hi_surface::MeshOptions { n_u: 64, n_v: 64, u_range: [u0, u1], ..Default::default() },
-        )
-        .unwrap();
+        let mesh = result
+            .surface
+            .to_mesh(&hi_surface::MeshOptions {
+                n_u: 64,
+                n_v: 64,
+                u_range: [u0, u1],
+                ..Default::default()
+            })
+            .unwrap();
         let volume = mesh.signed_volume();
         let exact = 4.0 / 3.0 * PI * axes.x * axes.y * axes.z;
         // The plain octahedron's seams (figure 5.19) cost it a few per cent.

@@ -10,7 +10,8 @@ use glam::DVec3;
 use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, fit};
-use hi_surface::{HarmonicSurface, TriangleMesh};
+use hi_mesh::TriangleMesh;
+use hi_surface::HarmonicSurface;
 
 /// V − E + F, and whether every undirected edge has two triangles and every directed edge one.
 fn topology(mesh: &TriangleMesh) -> (i64, bool, usize) {
@@ -122,7 +123,7 @@ fn trimesh_finds_the_written_meshes_watertight() {
         let m = layout_mesh(&bumpy_surface(layout, 32, 32), layout, 2).unwrap().mesh;
         let path = std::env::temp_dir()
             .join(format!("hi-layout-mesh-{}-{layout:?}.glb", std::process::id()));
-        hi_surface::export::save(&m, &path).unwrap();
+        hi_mesh::export::save(&m, &path).unwrap();
         let script = "import sys, trimesh\n\
                       m = trimesh.load(sys.argv[1], force='mesh', process=False)\n\
                       print(m.is_watertight, m.is_winding_consistent, m.volume > 0)";

@@ -121,7 +121,7 @@ fn the_mesh_loader_computes_flat_normals() {
     // The scan reader from a path too.
     let scan = read_scan(&path).unwrap();
     assert_eq!(scan.points.len(), 7);
-    let mesh = hi_surface::export::load(&path).unwrap();
+    let mesh = hi_mesh::export::load(&path).unwrap();
     // A had no normals: flat, its triangle (rotated into the plane z = 3) faces +z.
     let a: Vec<DVec3> = expected()[..3].to_vec();
     let flat = (a[1] - a[0]).cross(a[2] - a[0]).normalize();

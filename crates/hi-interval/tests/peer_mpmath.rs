@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Inclusion property against an independent multi-precision reference: mpmath's `iv` at 160
-//! bits (PEERS.md §6), through `fixtures/interval/mpmath_interval.py`.
+//! bits (docs/peers.md §6), through `fixtures/interval/mpmath_interval.py`.
 //!
 //! For every operation, 10⁵ seeded random and adversarial cases (next to multiples of π/2, tiny,
 //! subnormal, huge, signed zeros, exact points, infinite ends) are sent to the script, which

@@ -40,6 +40,8 @@ pub enum Error {
     },
     /// An error from the surface layer (Bézier conversion, meshing, colour maps).
     Surface(hi_surface::Error),
+    /// An error from the mesh layer (`hi-mesh`): a mesh, a colour map, a mesh file.
+    Mesh(hi_mesh::Error),
     /// The image could not be encoded or written.
     Image(String),
 }
@@ -57,6 +59,7 @@ impl fmt::Display for Error {
                 write!(f, "{what} is {value}, expected {expected}")
             }
             Error::Surface(e) => write!(f, "{e}"),
+            Error::Mesh(e) => write!(f, "{e}"),
             Error::Image(e) => write!(f, "cannot write the image: {e}"),
         }
     }
@@ -66,6 +69,7 @@ impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             Error::Surface(e) => Some(e),
+            Error::Mesh(e) => Some(e),
             _ => None,
         }
     }
@@ -94,5 +98,11 @@ pub(crate) fn check_positive(what: &'static str, x: f64) -> Result<f64, Error> {
         Ok(x)
     } else {
         Err(Error::InvalidValue { what, value: x, expected: "a positive number" })
+    }
+}
+
+impl From<hi_mesh::Error> for Error {
+    fn from(e: hi_mesh::Error) -> Self {
+        Error::Mesh(e)
     }
 }

@@ -34,7 +34,8 @@
 
 use glam::DVec3;
 use hi_interval::Interval;
-use hi_surface::{ColorLegend, ColorMap, CurvatureQuantity, HarmonicSurface};
+use hi_mesh::{ColorLegend, ColorMap};
+use hi_surface::{CurvatureQuantity, HarmonicSurface};
 
 use crate::bvh::{Bvh, slab};
 use crate::error::{Error, check_positive};

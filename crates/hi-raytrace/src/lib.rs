@@ -55,3 +55,8 @@ pub use render::{
 };
 pub use scene::{Geometry, Light, Material, Scene, SceneObject};
 pub use timing::{TorusMethod, render_torus, torus_scene};
+
+/// The example of this crate's README, run as a doctest so that it stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;

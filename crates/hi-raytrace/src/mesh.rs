@@ -5,7 +5,7 @@
 //! its error bound of the hit point.
 
 use glam::DVec3;
-use hi_surface::TriangleMesh;
+use hi_mesh::TriangleMesh;
 
 use crate::Error;
 use crate::bvh::Bvh;
@@ -75,7 +75,7 @@ impl MeshObject {
     /// ```
     /// use glam::{DVec2, DVec3};
     /// use hi_raytrace::{EdgeStyle, MeshObject, Ray};
-    /// use hi_surface::TriangleMesh;
+    /// use hi_mesh::TriangleMesh;
     ///
     /// // A unit square of two triangles; its outline drawn, not its diagonal.
     /// let p = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];

@@ -11,7 +11,7 @@ use std::io::Write;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-use hi_surface::linear_to_srgb;
+use hi_mesh::linear_to_srgb;
 use image::{ImageFormat, RgbImage};
 use rayon::prelude::*;
 

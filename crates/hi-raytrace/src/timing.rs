@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_surface::{MeshOptions, TriangleMesh, torus};
+use hi_surface::{MeshOptions, torus};
 
 use crate::bezier::{BezierObject, BezierSettings};
 use crate::camera::Camera;
@@ -83,7 +83,7 @@ pub fn torus_scene(method: TorusMethod) -> Result<(Scene, Camera), Error> {
         }
         TorusMethod::Mesh => {
             let options = MeshOptions { n_u: 128, n_v: 256, ..MeshOptions::default() };
-            Geometry::Mesh(MeshObject::new(TriangleMesh::try_from_surface(&surface, &options)?))
+            Geometry::Mesh(MeshObject::new(surface.to_mesh(&options)?))
         }
     };
     let mut object = SceneObject::new(geometry);

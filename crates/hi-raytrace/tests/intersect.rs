@@ -7,11 +7,12 @@
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
+use hi_mesh::TriangleMesh;
 use hi_raytrace::{
     BezierObject, BezierSettings, Camera, HarmonicObject, HarmonicSettings, IntervalMethod,
     MeshObject, Ray,
 };
-use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh, sphere, torus};
+use hi_surface::{HarmonicSurface, MeshOptions, sphere, torus};
 use proptest::prelude::*;
 use proptest::test_runner::Config as ProptestConfig;
 
@@ -322,7 +323,7 @@ fn moller_trumbore(ray: &Ray, a: DVec3, b: DVec3, c: DVec3) -> Option<f64> {
 #[test]
 fn mesh_hits_match_brute_force() {
     let options = MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() };
-    let mesh = TriangleMesh::try_from_surface(&bumpy(6, 8, 0.2), &options).unwrap();
+    let mesh = bumpy(6, 8, 0.2).to_mesh(&options).unwrap();
     let object = MeshObject::new(mesh.clone());
     let camera = Camera::try_new(DVec3::new(1.0, -9.0, 5.0), DVec3::ZERO, DVec3::Z, 0.8).unwrap();
     let mut n_hits = 0;
@@ -361,11 +362,8 @@ fn any_hit_occlusion_matches_the_nearest_hit() {
     let surface = bumpy(5, 6, 0.3);
     let patches =
         surface.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4)).unwrap();
-    let mesh = TriangleMesh::try_from_surface(
-        &surface,
-        &MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() },
-    )
-    .unwrap();
+    let mesh =
+        surface.to_mesh(&MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() }).unwrap();
     let mesh = MeshObject::new(mesh);
     let bezier = BezierObject::from_surface(&patches, &BezierSettings::default()).unwrap();
     let krawczyk =

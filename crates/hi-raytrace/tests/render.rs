@@ -4,11 +4,12 @@
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
+use hi_mesh::ColorMap;
 use hi_raytrace::{
     BezierObject, BezierSettings, Camera, Error, Geometry, HarmonicObject, HarmonicSettings,
     IntervalMethod, Light, MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, render,
 };
-use hi_surface::{ColorMap, CurvatureQuantity, MeshOptions, TriangleMesh, sphere, torus};
+use hi_surface::{CurvatureQuantity, MeshOptions, sphere, torus};
 
 fn small(width: u32, height: u32, spp: u32) -> RenderSettings {
     RenderSettings { width, height, samples_per_pixel: spp, tile_size: 8, first_pass: 0 }
@@ -25,11 +26,9 @@ fn harmonic(surface: hi_surface::HarmonicSurface<DVec3>, method: IntervalMethod)
 
 #[test]
 fn renders_are_deterministic_and_decode_as_png() {
-    let torus_mesh = TriangleMesh::try_from_surface(
-        &torus(2.0, 0.6),
-        &MeshOptions { n_u: 16, n_v: 32, ..MeshOptions::default() },
-    )
-    .unwrap();
+    let torus_mesh = torus(2.0, 0.6)
+        .to_mesh(&MeshOptions { n_u: 16, n_v: 32, ..MeshOptions::default() })
+        .unwrap();
     let objects = vec![
         SceneObject::new(harmonic(sphere(0.8), IntervalMethod::Krawczyk)),
         SceneObject::new(Geometry::Mesh(MeshObject::new(torus_mesh))),
@@ -51,7 +50,7 @@ fn renders_are_deterministic_and_decode_as_png() {
     assert_eq!(decoded.dimensions(), (30, 20), "image size");
     assert_eq!(decoded, a.image, "decodes to the rendered pixels");
     // Corners see the background, converted to sRGB.
-    let bg = [0.02f32, 0.03, 0.05].map(|c| (hi_surface::linear_to_srgb(c) * 255.0).round() as u8);
+    let bg = [0.02f32, 0.03, 0.05].map(|c| (hi_mesh::linear_to_srgb(c) * 255.0).round() as u8);
     assert_eq!(a.image.get_pixel(0, 0).0, bg, "background in sRGB");
     assert!(a.counts.hits > 100, "objects in view");
 }
@@ -301,11 +300,9 @@ fn fitting_names_bad_input() {
 
 #[test]
 fn a_first_pass_renders_edges_in_full_and_the_rest_from_its_samples() {
-    let torus_mesh = TriangleMesh::try_from_surface(
-        &torus(2.0, 0.6),
-        &MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() },
-    )
-    .unwrap();
+    let torus_mesh = torus(2.0, 0.6)
+        .to_mesh(&MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() })
+        .unwrap();
     let scene = Scene::try_new(
         vec![SceneObject::new(Geometry::Mesh(MeshObject::new(torus_mesh)))],
         vec![sun(DVec3::new(1.0, -1.0, 2.0))],

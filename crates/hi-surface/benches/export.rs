@@ -5,14 +5,13 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use hi_surface::{
-    ColorMap, CurvatureColoring, CurvatureQuantity, MeshOptions, TriangleMesh, export, torus,
-};
+use hi_mesh::{ColorMap, export};
+use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions, torus};
 
 fn export_benches(c: &mut Criterion) {
     let surface = torus(2.0, 0.5);
     let opts = MeshOptions { n_u: 512, n_v: 512, ..Default::default() };
-    let mesh = TriangleMesh::try_from_surface(&surface, &opts).expect("torus mesh");
+    let mesh = surface.to_mesh(&opts).expect("torus mesh");
     let colored_opts = MeshOptions {
         color: Some(CurvatureColoring {
             quantity: CurvatureQuantity::Gaussian,
@@ -23,11 +22,9 @@ fn export_benches(c: &mut Criterion) {
     let mut group = c.benchmark_group("torus 512x512");
     group.sample_size(10);
     group.throughput(Throughput::Elements(mesh.n_vertices() as u64));
-    group.bench_function("mesh", |b| {
-        b.iter(|| TriangleMesh::try_from_surface(black_box(&surface), &opts))
-    });
+    group.bench_function("mesh", |b| b.iter(|| black_box(&surface).to_mesh(&opts)));
     group.bench_function("mesh with curvature colours", |b| {
-        b.iter(|| TriangleMesh::try_from_surface(black_box(&surface), &colored_opts))
+        b.iter(|| black_box(&surface).to_mesh(&colored_opts))
     });
     let mut out = Vec::new();
     group.bench_function("write glb", |b| {
@@ -45,7 +42,7 @@ fn export_benches(c: &mut Criterion) {
     group.bench_function("mesh and write glb", |b| {
         b.iter(|| {
             out.clear();
-            let m = TriangleMesh::try_from_surface(black_box(&surface), &opts).expect("mesh");
+            let m = black_box(&surface).to_mesh(&opts).expect("mesh");
             export::write_glb(&m, &mut out).expect("glb");
         });
     });

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Harmonic surfaces as Bézier patches (Hardy 2005, §5.7; MATH.md §4), "so that most computer
+//! Harmonic surfaces as Bézier patches (Hardy 2005, §5.7; docs/math.md §4), "so that most computer
 //! graphics software will be able to import the surface".
 //!
 //! The schemes are those of curves ([`hi_curve::bezier`]), applied along u and v:
@@ -31,7 +31,9 @@ use glam::{DVec2, DVec3};
 use hi_bezier::{Aabb, BezierPatch, ControlPoint};
 use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree, locate};
 
-use crate::{Error, HarmonicSurface, TriangleMesh, srgb_to_linear};
+use hi_mesh::{TriangleMesh, srgb_to_linear};
+
+use crate::{Error, HarmonicSurface};
 
 /// The most patches a conversion makes.
 pub const MAX_PATCHES: usize = 1 << 22;
@@ -214,7 +216,7 @@ impl SurfaceBezier<DVec3> {
                 }
             }
         }
-        TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)
+        Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
     }
 
     /// Writes the patches as an OBJ free-form surface file: the control points as `v` lines,
@@ -420,7 +422,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
         Ok((bu.breaks().to_vec(), bv.breaks().to_vec(), patches, bound))
     }
 
-    /// The thesis's cubic patches from the surface itself (MATH.md §4): patch (a, b)
+    /// The thesis's cubic patches from the surface itself (docs/math.md §4): patch (a, b)
     /// interpolates p at the 4×4 points (a/m + r/(3m), b/n + s/(3n)), r, s = 0 … 3, so its
     /// control points are B⁻¹·S·B⁻ᵀ with S those samples and B the cubic Bernstein matrix at
     /// 0, ⅓, ⅔, 1. The samples are the uniform 3m × 3n grid, taken by FFT: O(mn log mn)

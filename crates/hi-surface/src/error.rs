@@ -49,68 +49,19 @@ pub enum Error {
     },
     /// An error from the curve layer (per-axis operations).
     Curve(hi_curve::Error),
-    /// A value is out of its range: a mesh normal not of unit length, a colour component
-    /// outside [0, 1], a colour-map bound.
+    /// A value is out of its range (a tolerance, a colour).
     InvalidValue {
         /// What the value is.
         what: &'static str,
-        /// Its index, for an element of a list (a vertex).
+        /// Its index, for an element of a list.
         index: Option<usize>,
         /// The value.
         value: f64,
         /// The accepted range, in words.
         expected: &'static str,
     },
-    /// Writing or reading a mesh file failed (see [`crate::export`]).
-    MeshFile(crate::export::FileError),
-    /// Too few slices for a B-spline surface fit ([`crate::bspline_fit`]).
-    TooFewSlices {
-        /// The least number of slices.
-        needed: usize,
-        /// The number given.
-        got: usize,
-    },
-    /// A slice has too few points for its U-curve ([`crate::bspline_fit`]).
-    TooFewSlicePoints {
-        /// Index of the slice.
-        slice: usize,
-        /// The least number of points.
-        needed: usize,
-        /// Its number of points.
-        got: usize,
-    },
-    /// A point of a slice has a NaN or infinite coordinate.
-    NonFiniteSlicePoint {
-        /// Index of the slice.
-        slice: usize,
-        /// Index of the point in the slice.
-        point: usize,
-    },
-    /// A slice has a different number of points from the given u parameters.
-    SliceLengthMismatch {
-        /// Index of the slice.
-        slice: usize,
-        /// Its number of points.
-        len: usize,
-        /// The number of given u parameters.
-        expected: usize,
-    },
-    /// Two consecutive points of a slice are equal: a zero chord length.
-    CoincidentSlicePoints {
-        /// Index of the slice.
-        slice: usize,
-        /// Index of the first point.
-        first: usize,
-        /// Index of the second point.
-        second: usize,
-    },
-    /// Two consecutive slices have a zero (averaged) chord length between them.
-    CoincidentSlices {
-        /// Index of the first slice.
-        first: usize,
-        /// Index of the second slice.
-        second: usize,
-    },
+    /// An error from the mesh layer (`hi-mesh`): a colour map's bounds, a mesh file.
+    Mesh(hi_mesh::Error),
 }
 
 impl fmt::Display for Error {
@@ -144,28 +95,7 @@ impl fmt::Display for Error {
             Error::InvalidValue { what, index: None, value, expected } => {
                 write!(f, "{what} = {value} is invalid: expected {expected}")
             }
-            Error::MeshFile(e) => write!(f, "{e}"),
-            Error::TooFewSlices { needed, got } => {
-                write!(f, "the B-spline surface fit needs at least {needed} slices, {got} given")
-            }
-            Error::TooFewSlicePoints { slice, needed, got } => {
-                write!(f, "slice {slice} has {got} points: its U-curve needs at least {needed}")
-            }
-            Error::NonFiniteSlicePoint { slice, point } => write!(
-                f,
-                "slice {slice}, point {point} has a non-finite coordinate (NaN or infinity)"
-            ),
-            Error::SliceLengthMismatch { slice, len, expected } => write!(
-                f,
-                "slice {slice} has {len} points but {expected} u parameters are given: with given \
-                 parameters every slice needs one point per parameter"
-            ),
-            Error::CoincidentSlicePoints { slice, first, second } => {
-                write!(f, "slice {slice}: points {first} and {second} coincide (zero chord length)")
-            }
-            Error::CoincidentSlices { first, second } => {
-                write!(f, "slices {first} and {second} coincide (zero chord length between them)")
-            }
+            Error::Mesh(e) => write!(f, "{e}"),
         }
     }
 }
@@ -174,7 +104,7 @@ impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             Error::Curve(e) => Some(e),
-            Error::MeshFile(e) => Some(e),
+            Error::Mesh(e) => Some(e),
             _ => None,
         }
     }
@@ -186,8 +116,8 @@ impl From<hi_curve::Error> for Error {
     }
 }
 
-impl From<crate::export::FileError> for Error {
-    fn from(e: crate::export::FileError) -> Self {
-        Error::MeshFile(e)
+impl From<hi_mesh::Error> for Error {
+    fn from(e: hi_mesh::Error) -> Self {
+        Error::Mesh(e)
     }
 }

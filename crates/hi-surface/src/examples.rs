@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Surfaces that harmonic interpolation reproduces exactly (MATH.md §3).
+//! Surfaces that harmonic interpolation reproduces exactly (docs/math.md §3).
 
 use std::f64::consts::FRAC_PI_2;
 
@@ -16,7 +16,7 @@ fn revolve(profile: [DVec3; 4]) -> HarmonicSurface<DVec3> {
     HarmonicSurface::new(grid)
 }
 
-/// The exact sphere of radius `r` from a 4×4 grid (MATH.md §3):
+/// The exact sphere of radius `r` from a 4×4 grid (docs/math.md §3):
 /// p(u, v) = r·(sin 2πu·cos 2πv, sin 2πu·sin 2πv, cos 2πu).
 ///
 /// The profile is the diamond (0, 0, r), (r, 0, 0), (0, 0, −r), (−r, 0, 0), so four grid points
@@ -42,7 +42,7 @@ pub fn sphere(r: f64) -> HarmonicSurface<DVec3> {
     ])
 }
 
-/// The exact torus with tube radius `r` around a circle of radius `big_r` (MATH.md §3):
+/// The exact torus with tube radius `r` around a circle of radius `big_r` (docs/math.md §3):
 /// p(u, v) = ((R + r sin θ) cos 2πv, (R + r sin θ) sin 2πv, r cos θ) with θ = 2πu.
 ///
 /// K = sin θ/(r(R + r sin θ)) and |H| = (R + 2r sin θ)/(2r(R + r sin θ)).

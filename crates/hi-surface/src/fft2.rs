@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! The 2-D spectral path of [`HarmonicSurface::sample_uniform`](crate::HarmonicSurface::sample_uniform)
-//! when both axes grow past the grid's highest frequency (Theorem 5.3 on both axes, MATH.md §7).
+//! when both axes grow past the grid's highest frequency (Theorem 5.3 on both axes, docs/math.md §7).
 //!
 //! One coordinate at a time: a real FFT along v for each of the m grid rows (n/2 + 1 bins), a
 //! complex FFT along u for each of those bins, the derivative factors (2πis)ᵖ(2πik)^q, the

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Differential geometry of a harmonic surface in space (Hardy 2005, §4.6; MATH.md §3):
+//! Differential geometry of a harmonic surface in space (Hardy 2005, §4.6; docs/math.md §3):
 //! normal, fundamental forms, Gaussian and mean curvature, principal curvatures and directions.
 //!
 //! With E, F, G = pᵤ·pᵤ, pᵤ·pᵥ, pᵥ·pᵥ and L, M, N = pᵤᵤ·n, pᵤᵥ·n, pᵥᵥ·n for the unit
@@ -9,7 +9,7 @@
 //! **Convention.** The thesis labels (EN − 2FM + GL)/(EG − F²) = κ₁ + κ₂ the "mean curvature"
 //! (its sphere example gives ±2/r). Here H is the average, and κ₁ + κ₂ = 2H is reported under
 //! its own name, [`Curvature::k1_plus_k2`]. Signs follow the normal pᵤ × pᵥ: for the sphere
-//! and torus grids of MATH.md §3 it points outward, so L, N < 0 and H < 0 there (a convex
+//! and torus grids of docs/math.md §3 it points outward, so L, N < 0 and H < 0 there (a convex
 //! surface with an outward normal has negative mean curvature in this convention).
 
 use glam::DVec3;
@@ -163,5 +163,45 @@ impl HarmonicSurface<DVec3> {
     #[must_use]
     pub fn curvature(&self, u: f64, v: f64) -> Option<Curvature> {
         self.derivs(u, v).curvature(self.radius())
+    }
+}
+
+/// Which curvature a colour shows (§4.6); signs refer to the normal the mesh was built with.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum CurvatureQuantity {
+    /// Gaussian curvature K = κ₁κ₂ (the default).
+    #[default]
+    Gaussian,
+    /// Mean curvature H = (κ₁ + κ₂)/2.
+    Mean,
+    /// κ₁ + κ₂ = 2H, which the thesis calls the mean curvature.
+    K1PlusK2,
+}
+
+impl CurvatureQuantity {
+    /// The quantity at a point, from its [`Curvature`].
+    #[must_use]
+    pub fn of(self, c: &Curvature) -> f64 {
+        match self {
+            CurvatureQuantity::Gaussian => c.gaussian,
+            CurvatureQuantity::Mean => c.mean,
+            CurvatureQuantity::K1PlusK2 => c.k1_plus_k2,
+        }
+    }
+
+    /// Whether the value changes sign with the normal (H and κ₁ + κ₂ do, K does not).
+    #[must_use]
+    pub fn is_odd_in_normal(self) -> bool {
+        !matches!(self, CurvatureQuantity::Gaussian)
+    }
+
+    /// A short name for legends: "K", "H" or "κ₁ + κ₂".
+    #[must_use]
+    pub fn symbol(self) -> &'static str {
+        match self {
+            CurvatureQuantity::Gaussian => "K",
+            CurvatureQuantity::Mean => "H",
+            CurvatureQuantity::K1PlusK2 => "κ₁ + κ₂",
+        }
     }
 }

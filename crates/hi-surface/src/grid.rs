@@ -6,7 +6,7 @@
 //!   Bᵥ[l][k] = σⁿₖ⁽q⁾(vₗ), the samples are Bᵤ·X·Bᵥᵀ, O(m·n·V + U·m·V) instead of
 //!   O(U·V·m·n);
 //! * the 2-D FFT for the uniform grid over the whole period, p(i/U, l/V): Theorem 5.3 on both
-//!   axes (O(U·V·log(U·V)), Nyquist terms split for even sizes, MATH.md §7). When both axes
+//!   axes (O(U·V·log(U·V)), Nyquist terms split for even sizes, docs/math.md §7). When both axes
 //!   grow past the grid's highest frequency the padded 2-D spectrum is transformed directly
 //!   (`fft2`, the work of `scipy.signal.resample` on both axes); otherwise the frequencies fold
 //!   and each row, then each column, is sampled by its own FFT.

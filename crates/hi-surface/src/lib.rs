@@ -17,11 +17,7 @@
 //! | Theorems 5.1 and 5.3 per axis, subdivision (§5.2) | [`HarmonicSurface::resample`], [`HarmonicSurface::rotate`], [`HarmonicSurface::subdivide`] |
 //! | the exact sphere and torus | [`sphere`], [`torus`] |
 //! | the thirteen test surfaces of §5.9 and their curvature comparison | [`test_surfaces`], [`compare_curvature`] |
-//! | triangle meshes over a parameter window: welded or split seams, poles, normals (§5.5) | [`TriangleMesh`], [`MeshOptions`] |
-//! | curvature colours, blue → purple as in §5.9, with a legend | [`ColorMap`], [`ColorLegend`] |
-//! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files, read-back checks | [`export`] |
-//! | bicubic B-spline surfaces through slices of data (§4.4, Watt & Watt's curve network), exact and Adini Bézier patches | [`bspline_fit`], [`BSplineSurface`] |
-//! | subdivision surfaces of §4.5 on polygon meshes (Loop, butterfly, √3, Catmull-Clark, Doo-Sabin) | [`subdivision`] |
+//! | triangle meshes over a parameter window: welded or split seams, poles, normals (§5.5), coloured by curvature (§5.9) | [`HarmonicSurface::to_mesh`], [`MeshOptions`] |
 //! | Bézier patches (§5.7): the thesis's cubic and quintic schemes, C1 Hermite patches to a tolerance | [`bezier`] |
 //!
 //! # Examples
@@ -34,16 +30,21 @@
 //! assert!((p - glam::DVec3::new(2.5, 0.0, 0.0)).length() < 1e-14);
 //! ```
 //!
+//! # References
+//!
+//! Sections cited as "`docs/math.md` §N" are those of the repository's page of
+//! [formulas](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/math.md), each
+//! checked numerically; "`docs/peers.md` §N", of its page of
+//! [peer programs](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/peers.md)
+//! that the tests compare against.
+//!
 //! # Feature flags
 //!
 //! None: the crate has no optional features.
 
 pub mod bezier;
-pub mod bspline_fit;
-mod colormap;
 mod error;
 mod examples;
-pub mod export;
 mod fft2;
 mod geometry;
 mod grid;
@@ -51,23 +52,20 @@ mod mesh;
 mod parametric;
 mod resample;
 mod spectrum;
-pub mod subdivision;
 mod surface;
 
-pub use bspline_fit::{BSplineFit, BSplineSurface, BezierPatchGrid};
-pub use colormap::{
-    ColorLegend, ColorMap, ColorMapping, ColorScale, CurvatureQuantity, HIGH_SRGB, LOW_SRGB,
-    NEGATIVE_SRGB, NEUTRAL_SRGB, Palette, linear_to_srgb, linear_to_srgb_rgb, srgb_to_linear,
-    srgb_to_linear_rgb,
-};
 pub use error::Error;
 pub use examples::{sphere, torus};
-pub use geometry::{Curvature, FundamentalForms, SurfaceDerivs};
+pub use geometry::{Curvature, CurvatureQuantity, FundamentalForms, SurfaceDerivs};
 pub use grid::GridSamples;
-pub use mesh::{CurvatureColoring, MeshOptions, Seam, TriangleMesh};
+pub use mesh::{CurvatureColoring, MeshOptions, Seam};
 pub use parametric::{
     CurvatureComparison, ParametricSurface, compare_curvature, test_surface, test_surfaces,
 };
 pub use resample::Axis;
-pub use subdivision::{MeshError, PolyMesh};
 pub use surface::HarmonicSurface;
+
+/// The example of this crate's README, run as a doctest so that it stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;

@@ -3,7 +3,7 @@
 //! and joined into polygons, as for the scanline-rendered torus of Hardy 2005, §5.5
 //! (figure 5.25), optionally coloured by curvature as in §5.9.
 //!
-//! [`TriangleMesh::try_from_surface`] samples p, `p_u` and `p_v` on an (`n_u` + 1)×(`n_v` + 1)
+//! [`HarmonicSurface::to_mesh`] samples p, `p_u` and `p_v` on an (`n_u` + 1)×(`n_v` + 1)
 //! grid of a parameter window [u0, u1]×[v0, v1] with the fast grid paths of
 //! [`crate::HarmonicSurface`]: the 2-D FFT when the window is exactly [0, 1]², separable basis
 //! matrices otherwise. Each grid quad (i, l) becomes the triangles (i, l), (i + 1, l),
@@ -43,8 +43,9 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::colormap::{ColorLegend, ColorMap, CurvatureQuantity};
-use crate::{Error, HarmonicSurface, SurfaceDerivs};
+use hi_mesh::{ColorMap, TriangleMesh};
+
+use crate::{CurvatureQuantity, Error, HarmonicSurface, SurfaceDerivs};
 
 /// Relative size below which sample points coincide (welding at poles), as a fraction of the
 /// size of the surface.
@@ -53,9 +54,6 @@ const WELD: f64 = 1e-10;
 /// Below this, relative to the size of the surface squared, `|p_u × p_v|` counts as zero (the
 /// threshold of [`SurfaceDerivs::normal`]).
 const DEGENERATE: f64 = 1e-10;
-
-/// Tolerance on the length of a normal given to [`TriangleMesh::try_new`].
-const UNIT_TOLERANCE: f64 = 1e-6;
 
 /// Windows whose width is within this of 1 are a whole period.
 const PERIOD_TOLERANCE: f64 = 1e-12;
@@ -116,151 +114,8 @@ impl Default for MeshOptions {
     }
 }
 
-/// An indexed triangle mesh with one normal and one UV per vertex and optional vertex colours.
-///
-/// Invariants (checked by [`TriangleMesh::try_new`]): at least one triangle; every index less
-/// than the number of vertices, which is less than 2³² − 1; finite positions and UVs; normals
-/// of unit length (to 10⁻⁶); colours, if any, one per vertex with components in [0, 1].
-///
-/// UVs are (s, t) = ((u − u0)/(u1 − u0), (v − v0)/(v1 − v0)) for a mesh of a surface, in
-/// glTF's convention (t down the texture image); the OBJ writer stores (s, 1 − t).
-///
-/// # Examples
-///
-/// ```
-/// use hi_surface::{MeshOptions, Seam, TriangleMesh, torus};
-///
-/// let t = torus(2.0, 0.5);
-/// let opts = MeshOptions { n_u: 8, n_v: 16, ..Default::default() };
-/// let mesh = TriangleMesh::try_from_surface(&t, &opts).unwrap();
-/// assert_eq!(mesh.n_vertices(), 8 * 16); // closed both ways: no seam copies
-/// assert_eq!(mesh.n_triangles(), 2 * 8 * 16);
-/// let split = MeshOptions { n_u: 8, n_v: 16, seam: Seam::Split, ..Default::default() };
-/// assert_eq!(TriangleMesh::try_from_surface(&t, &split).unwrap().n_vertices(), 9 * 17);
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct TriangleMesh {
-    positions: Vec<DVec3>,
-    normals: Vec<DVec3>,
-    uvs: Vec<DVec2>,
-    colors: Option<Vec<[f32; 3]>>,
-    triangles: Vec<[u32; 3]>,
-    legend: Option<ColorLegend>,
-}
-
-impl TriangleMesh {
-    /// A mesh from its parts, checked against the invariants of [`TriangleMesh`].
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidCount`] for no triangles, too many vertices, a normal or UV count
-    /// different from the number of positions, or an index out of range;
-    /// [`Error::InvalidValue`] for a non-finite position or UV coordinate or a normal whose
-    /// length is not 1.
-    pub fn try_new(
-        positions: Vec<DVec3>,
-        normals: Vec<DVec3>,
-        uvs: Vec<DVec2>,
-        triangles: Vec<[u32; 3]>,
-    ) -> Result<Self, Error> {
-        let n = positions.len();
-        if n >= u32::MAX as usize {
-            return Err(Error::InvalidCount {
-                what: "number of mesh vertices",
-                value: n,
-                expected: "less than 2^32 - 1",
-            });
-        }
-        if triangles.is_empty() {
-            return Err(Error::InvalidCount {
-                what: "number of triangles",
-                value: 0,
-                expected: "at least 1",
-            });
-        }
-        for (what, len) in [("number of normals", normals.len()), ("number of UVs", uvs.len())] {
-            if len != n {
-                return Err(Error::InvalidCount { what, value: len, expected: "one per position" });
-            }
-        }
-        if let Some(i) = positions.iter().position(|p| !p.is_finite()) {
-            let value =
-                positions[i].to_array().into_iter().find(|c| !c.is_finite()).unwrap_or(f64::NAN);
-            return Err(Error::InvalidValue {
-                what: "coordinate of position",
-                index: Some(i),
-                value,
-                expected: "a finite number",
-            });
-        }
-        if let Some(i) = uvs.iter().position(|t| !t.is_finite()) {
-            let value = uvs[i].to_array().into_iter().find(|c| !c.is_finite()).unwrap_or(f64::NAN);
-            return Err(Error::InvalidValue {
-                what: "coordinate of UV",
-                index: Some(i),
-                value,
-                expected: "a finite number",
-            });
-        }
-        if let Some(i) = normals.iter().position(|v| !is_unit(*v)) {
-            return Err(Error::InvalidValue {
-                what: "length of normal",
-                index: Some(i),
-                value: normals[i].length(),
-                expected: "1 (within 1e-6)",
-            });
-        }
-        if let Some(&bad) = triangles.iter().flatten().find(|&&k| k as usize >= n) {
-            return Err(Error::InvalidCount {
-                what: "triangle vertex index",
-                value: bad as usize,
-                expected: "less than the number of vertices",
-            });
-        }
-        Ok(TriangleMesh { positions, normals, uvs, colors: None, triangles, legend: None })
-    }
-
-    /// The mesh with vertex colours (linear RGB, one per vertex), replacing any it had, and
-    /// no legend.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidCount`] if there is not one colour per vertex, [`Error::InvalidValue`]
-    /// for a component outside [0, 1] (or NaN).
-    pub fn try_with_colors(mut self, colors: Vec<[f32; 3]>) -> Result<Self, Error> {
-        if colors.len() != self.positions.len() {
-            return Err(Error::InvalidCount {
-                what: "number of colours",
-                value: colors.len(),
-                expected: "one per vertex",
-            });
-        }
-        if let Some(i) = colors.iter().position(|c| !c.iter().all(|x| (0.0..=1.0).contains(x))) {
-            let value = colors[i]
-                .into_iter()
-                .find(|x| !(0.0..=1.0).contains(x))
-                .map_or(f64::NAN, f64::from);
-            return Err(Error::InvalidValue {
-                what: "component of colour",
-                index: Some(i),
-                value,
-                expected: "in [0, 1]",
-            });
-        }
-        self.colors = Some(colors);
-        self.legend = None;
-        Ok(self)
-    }
-
-    /// The mesh without vertex colours.
-    #[must_use]
-    pub fn without_colors(mut self) -> Self {
-        self.colors = None;
-        self.legend = None;
-        self
-    }
-
-    /// A mesh of `surface` over the window and at the resolution of `options`; see the module
+impl HarmonicSurface<DVec3> {
+    /// A mesh of the surface over the window and at the resolution of `options`; see the module
     /// notes for seams, poles and normals.
     ///
     /// # Errors
@@ -268,115 +123,31 @@ impl TriangleMesh {
     /// [`Error::InvalidWindow`] unless the bounds are finite with u0 < u1 and v0 < v1;
     /// [`Error::InvalidCount`] if `n_u` or `n_v` is 0 (or less than 3 for a whole-period
     /// direction), if the grid is too large for the sampling paths, or if every triangle is
-    /// degenerate (a surface that is one point); [`Error::InvalidValue`] for an invalid colour
-    /// map.
+    /// degenerate (a surface that is one point); [`Error::Mesh`] for an invalid colour map.
     ///
     /// # Examples
     ///
     /// ```
-    /// use hi_surface::{MeshOptions, TriangleMesh, sphere};
+    /// use hi_surface::{MeshOptions, Seam, sphere, torus};
     ///
     /// // The sphere once: u ∈ [0, ½] from pole to pole, v closed.
     /// let opts = MeshOptions { n_u: 16, n_v: 32, u_range: [0.0, 0.5], ..Default::default() };
-    /// let mesh = TriangleMesh::try_from_surface(&sphere(1.0), &opts).unwrap();
+    /// let mesh = sphere(1.0).to_mesh(&opts).unwrap();
     /// assert_eq!(mesh.n_vertices(), 15 * 32 + 2); // two pole vertices
     /// assert_eq!(mesh.n_triangles(), 2 * 16 * 32 - 2 * 32); // one triangle per pole quad
     /// assert!(mesh.positions().iter().all(|p| (p.length() - 1.0).abs() < 1e-14));
-    /// ```
-    pub fn try_from_surface(
-        surface: &HarmonicSurface<DVec3>,
-        options: &MeshOptions,
-    ) -> Result<Self, Error> {
-        Builder::new(surface, options)?.build()
-    }
-
-    /// Number of vertices.
-    #[must_use]
-    pub fn n_vertices(&self) -> usize {
-        self.positions.len()
-    }
-
-    /// Number of triangles.
-    #[must_use]
-    pub fn n_triangles(&self) -> usize {
-        self.triangles.len()
-    }
-
-    /// Vertex positions.
-    #[must_use]
-    pub fn positions(&self) -> &[DVec3] {
-        &self.positions
-    }
-
-    /// Unit vertex normals.
-    #[must_use]
-    pub fn normals(&self) -> &[DVec3] {
-        &self.normals
-    }
-
-    /// Vertex UVs (s, t), glTF convention (see [`TriangleMesh`]).
-    #[must_use]
-    pub fn uvs(&self) -> &[DVec2] {
-        &self.uvs
-    }
-
-    /// Vertex colours, linear RGB in [0, 1], if any.
-    #[must_use]
-    pub fn colors(&self) -> Option<&[[f32; 3]]> {
-        self.colors.as_deref()
-    }
-
-    /// The triangles: vertex indices, counter-clockwise about the normal.
-    #[must_use]
-    pub fn triangles(&self) -> &[[u32; 3]] {
-        &self.triangles
-    }
-
-    /// The legend of the curvature colour map the colours came from, if they did.
-    #[must_use]
-    pub fn legend(&self) -> Option<&ColorLegend> {
-        self.legend.as_ref()
-    }
-
-    /// The smallest and largest coordinates of the positions (f64).
-    #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        self.positions
-            .iter()
-            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)))
-    }
-
-    /// The volume the triangles enclose, Σ a·(b × c)/6 over the triangles (divergence
-    /// theorem): positive when a closed mesh is wound counter-clockwise seen from outside,
-    /// negative when it is wound inwards; for an open mesh, the signed volume of the cone
-    /// from the origin.
     ///
-    /// # Examples
-    ///
+    /// // The torus is closed both ways: welded, no seam copies; split, one more row and column.
+    /// let t = torus(2.0, 0.5);
+    /// let opts = MeshOptions { n_u: 8, n_v: 16, ..Default::default() };
+    /// let mesh = t.to_mesh(&opts).unwrap();
+    /// assert_eq!((mesh.n_vertices(), mesh.n_triangles()), (8 * 16, 2 * 8 * 16));
+    /// let split = MeshOptions { seam: Seam::Split, ..opts };
+    /// assert_eq!(t.to_mesh(&split).unwrap().n_vertices(), 9 * 17);
     /// ```
-    /// use glam::{DVec2, DVec3};
-    /// use hi_surface::TriangleMesh;
-    ///
-    /// // The tetrahedron on the unit axes, wound outwards: volume 1/6.
-    /// let p = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
-    /// let t = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-    /// let mesh = TriangleMesh::try_new(p, vec![DVec3::Z; 4], vec![DVec2::ZERO; 4], t)?;
-    /// assert!((mesh.signed_volume() - 1.0 / 6.0).abs() < 1e-15);
-    /// # Ok::<(), hi_surface::Error>(())
-    /// ```
-    #[must_use]
-    pub fn signed_volume(&self) -> f64 {
-        let p = &self.positions;
-        self.triangles
-            .iter()
-            .map(|t| p[t[0] as usize].dot(p[t[1] as usize].cross(p[t[2] as usize])) / 6.0)
-            .sum()
+    pub fn to_mesh(&self, options: &MeshOptions) -> Result<TriangleMesh, Error> {
+        Builder::new(self, options)?.build()
     }
-}
-
-/// Whether `v` has length 1 to [`UNIT_TOLERANCE`] (false for NaN).
-fn is_unit(v: DVec3) -> bool {
-    (v.length() - 1.0).abs() <= UNIT_TOLERANCE
 }
 
 /// One direction of the window: its parameters and how its logical grid maps to samples.
@@ -669,8 +440,7 @@ impl<'a> Builder<'a> {
                 })
                 .collect();
             let mapping = coloring.map.try_apply(&values)?;
-            mesh = mesh.try_with_colors(mapping.colors)?;
-            mesh.legend = Some(mapping.legend);
+            mesh = mesh.try_with_mapping(mapping)?;
         }
         Ok(mesh)
     }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! The theorems of chapter 5 along each axis of a surface: rotation (Thm 5.1 and an exact
 //! rotation), insertion and reduction (Thm 5.3, §5.4), and harmonic surface subdivision
-//! (§5.2, figures 5.3–5.5). MATH.md §2: inserting along both axes keeps the surface exactly.
+//! (§5.2, figures 5.3–5.5). docs/math.md §2: inserting along both axes keeps the surface exactly.
 //!
 //! Each operation applies the curve operation of `hi-curve` to every column (along u) or every
 //! row (along v) of the grid; since the surface is a tensor product, that is the operation on
@@ -99,7 +99,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     }
 
     /// Theorem 5.1 as the thesis states it along `axis`: samples shifted by `offset` — exact
-    /// only for an odd number of points along that axis (MATH.md §2).
+    /// only for an odd number of points along that axis (docs/math.md §2).
     ///
     /// # Errors
     ///

@@ -4,7 +4,7 @@
 //! p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv
 //!                  + Cₐᵦ·sin 2πau·cos 2πβv + Dₐᵦ·sin 2πau·sin 2πβv],
 //! a ≤ ⌊m/2⌋, β ≤ ⌊n/2⌋, computed by 1-D FFTs along v (each row) and then along u (each
-//! coefficient sequence), with the even-size Nyquist terms halved as for curves (MATH.md §7).
+//! coefficient sequence), with the even-size Nyquist terms halved as for curves (docs/math.md §7).
 //! Any partial derivative is the same sum with each factor differentiated.
 
 use hi_curve::{ControlPoint, Fourier};

@@ -7,7 +7,7 @@ use crate::Error;
 use crate::spectrum::Spectrum2;
 
 /// A harmonic tensor-product surface over an m×n grid of points: smooth, 1-periodic in u and
-/// in v, and p(j/m, k/n) = xⱼₖ (Hardy 2005, §5.1; MATH.md §3).
+/// in v, and p(j/m, k/n) = xⱼₖ (Hardy 2005, §5.1; docs/math.md §3).
 ///
 /// Row j of the grid runs along v at u = j/m; column k runs along u at v = k/n. Points may be
 /// any [`ControlPoint`]; the differential geometry (normals, curvature) needs [`glam::DVec3`].
@@ -172,7 +172,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
 
     /// The real 2-D spectrum: p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv +
     /// Cₐᵦ·sin 2πau·cos 2πβv + Dₐᵦ·sin 2πau·sin 2πβv] for a ≤ ⌊m/2⌋, β ≤ ⌊n/2⌋ (the tensor
-    /// product of the curve spectra of eq. 5.1, even-size Nyquist terms halved, MATH.md §7), as
+    /// product of the curve spectra of eq. 5.1, even-size Nyquist terms halved, docs/math.md §7), as
     /// `[A, B, C, D]` at index a·(⌊n/2⌋ + 1) + β.
     ///
     /// # Examples

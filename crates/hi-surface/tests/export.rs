@@ -6,11 +6,10 @@
 use std::io::{self, Write};
 use std::path::PathBuf;
 
-use hi_surface::export::{self, Connectivity, FileError, MeshFormat};
-use hi_surface::{
-    ColorMap, ColorScale, CurvatureColoring, CurvatureQuantity, Error, MeshOptions, Seam,
-    TriangleMesh, sphere, torus,
-};
+use hi_mesh::Error;
+use hi_mesh::export::{self, Connectivity, FileError, MeshFormat};
+use hi_mesh::{ColorMap, ColorScale, TriangleMesh};
+use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions, Seam, sphere, torus};
 
 fn tmp(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("export");
@@ -24,7 +23,7 @@ fn colored(quantity: CurvatureQuantity) -> Option<CurvatureColoring> {
         map: ColorMap {
             scale: ColorScale::Symmetric,
             coverage: 1.0,
-            palette: hi_surface::Palette::Thesis,
+            palette: hi_mesh::Palette::Thesis,
         },
     })
 }
@@ -56,10 +55,7 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
             },
         ),
     ];
-    cases
-        .into_iter()
-        .map(|(n, s, o)| (n, TriangleMesh::try_from_surface(&s, &o).unwrap()))
-        .collect()
+    cases.into_iter().map(|(n, s, o)| (n, s.to_mesh(&o).unwrap())).collect()
 }
 
 #[test]
@@ -181,10 +177,10 @@ fn unknown_extensions_are_errors() {
     for name in ["mesh.stl", "mesh", "mesh.gltf.txt", "mesh.bin"] {
         let path = tmp(name);
         let e = export::save(&mesh, &path).unwrap_err();
-        assert!(matches!(e, Error::MeshFile(FileError::UnknownExtension { .. })), "{name}: {e:?}");
+        assert!(matches!(e, Error::File(FileError::UnknownExtension { .. })), "{name}: {e:?}");
         assert!(!path.exists() || name == "mesh.bin", "{name}: nothing written");
         assert!(
-            matches!(export::load(&path), Err(Error::MeshFile(FileError::UnknownExtension { .. }))),
+            matches!(export::load(&path), Err(Error::File(FileError::UnknownExtension { .. }))),
             "{name}"
         );
         assert!(e.to_string().contains(name) && !e.to_string().contains('\n'), "{e}");
@@ -201,7 +197,7 @@ fn unwritable_paths_are_errors() {
         let path = missing_dir.join(format!("mesh.{ext}"));
         let e = export::save(&mesh, &path).unwrap_err();
         match &e {
-            Error::MeshFile(FileError::Io { path: Some(p), kind, .. }) => {
+            Error::File(FileError::Io { path: Some(p), kind, .. }) => {
                 assert_eq!(p, &path, "{ext}: names the file");
                 assert_eq!(*kind, io::ErrorKind::NotFound, "{ext}");
             }
@@ -213,7 +209,7 @@ fn unwritable_paths_are_errors() {
     let dir_path = tmp("a-directory.glb");
     std::fs::create_dir_all(&dir_path).unwrap();
     let e = export::save(&mesh, &dir_path).unwrap_err();
-    assert!(matches!(e, Error::MeshFile(FileError::Io { .. })), "{e:?}");
+    assert!(matches!(e, Error::File(FileError::Io { .. })), "{e:?}");
 }
 
 /// A writer that fails after `left` bytes.
@@ -248,7 +244,7 @@ fn failing_writers_are_errors() {
             assert!(
                 matches!(
                     r,
-                    Err(Error::MeshFile(FileError::Io {
+                    Err(Error::File(FileError::Io {
                         path: None,
                         kind: io::ErrorKind::StorageFull,
                         ..
@@ -267,14 +263,14 @@ fn unreadable_files_are_errors() {
     assert!(
         matches!(
             export::load(&missing),
-            Err(Error::MeshFile(FileError::Io { kind: io::ErrorKind::NotFound, .. }))
+            Err(Error::File(FileError::Io { kind: io::ErrorKind::NotFound, .. }))
         ),
         "missing glb"
     );
     let missing_obj = tmp("missing.obj");
     let _ = std::fs::remove_file(&missing_obj);
     assert!(
-        matches!(export::load(&missing_obj), Err(Error::MeshFile(FileError::Io { .. }))),
+        matches!(export::load(&missing_obj), Err(Error::File(FileError::Io { .. }))),
         "missing obj"
     );
     for (name, content) in [
@@ -285,10 +281,7 @@ fn unreadable_files_are_errors() {
         let path = tmp(name);
         std::fs::write(&path, content).unwrap();
         let e = export::load(&path).unwrap_err();
-        assert!(
-            matches!(e, Error::MeshFile(FileError::Format { path: Some(_), .. })),
-            "{name}: {e:?}"
-        );
+        assert!(matches!(e, Error::File(FileError::Format { path: Some(_), .. })), "{name}: {e:?}");
         assert!(!e.to_string().contains('\n'), "{name}: one line: {e}");
     }
     // A .gltf whose buffer is missing.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Cross-check against an independent program: the Khronos glTF-Validator (npm
-//! `gltf-validator`, PEERS.md §4) must report 0 errors and 0 warnings on our `.gltf` and `.glb`
+//! `gltf-validator`, docs/peers.md §4) must report 0 errors and 0 warnings on our `.gltf` and `.glb`
 //! exports of the sphere (with its poles), the torus, a larger torus (u32 indices) and a random
 //! grid surface, with and without curvature colours.
 //!
@@ -13,9 +13,9 @@ use std::process::Command;
 
 use glam::DVec3;
 use hi_curve::bezier::BezierScheme;
+use hi_mesh::{ColorMap, ColorScale, TriangleMesh, export};
 use hi_surface::{
-    ColorMap, ColorScale, CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, Seam,
-    TriangleMesh, export, sphere, torus,
+    CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, Seam, sphere, torus,
 };
 
 const VALIDATOR_DIR: &str =
@@ -59,7 +59,7 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
         map: ColorMap {
             scale: ColorScale::Symmetric,
             coverage: 0.98,
-            palette: hi_surface::Palette::Thesis,
+            palette: hi_mesh::Palette::Thesis,
         },
     });
     let mean =
@@ -99,10 +99,8 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
             },
         ),
     ];
-    let mut all: Vec<(&'static str, TriangleMesh)> = cases
-        .into_iter()
-        .map(|(name, s, opts)| (name, TriangleMesh::try_from_surface(&s, &opts).unwrap()))
-        .collect();
+    let mut all: Vec<(&'static str, TriangleMesh)> =
+        cases.into_iter().map(|(name, s, opts)| (name, s.to_mesh(&opts).unwrap())).collect();
     // Bézier patches of §5.7, one colour per patch (the sphere's patches meet at the poles).
     for (name, s) in [("torus_patches", torus(2.0, 0.5)), ("sphere_patches", sphere(1.0))] {
         let patches = s.to_bezier(BezierScheme::ThesisCubic, None).unwrap();

@@ -5,14 +5,14 @@
 use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
+use hi_mesh::{ColorMap, ColorScale, TriangleMesh};
 use hi_surface::{
-    ColorMap, ColorScale, CurvatureColoring, CurvatureQuantity, Error, HarmonicSurface,
-    MeshOptions, Seam, TriangleMesh, sphere, torus,
+    CurvatureColoring, CurvatureQuantity, Error, HarmonicSurface, MeshOptions, Seam, sphere, torus,
 };
 use proptest::prelude::*;
 
 fn mesh(s: &HarmonicSurface<DVec3>, opts: MeshOptions) -> TriangleMesh {
-    TriangleMesh::try_from_surface(s, &opts).unwrap()
+    s.to_mesh(&opts).unwrap()
 }
 
 /// How many triangles use each undirected edge.
@@ -282,8 +282,8 @@ fn curvature_colours_and_legend() {
     assert_eq!(legend.n_invalid, 2, "the poles");
     assert!((legend.max - 0.25).abs() < 1e-12, "extent {}", legend.max);
     assert_eq!(legend.min, 0.0, "magnitude scale starts at 0");
-    let purple = hi_surface::srgb_to_linear_rgb(hi_surface::HIGH_SRGB);
-    let grey = hi_surface::srgb_to_linear_rgb(hi_surface::NEUTRAL_SRGB);
+    let purple = hi_mesh::srgb_to_linear_rgb(hi_mesh::HIGH_SRGB);
+    let grey = hi_mesh::srgb_to_linear_rgb(hi_mesh::NEUTRAL_SRGB);
     let n_grey = colors.iter().filter(|&&c| c == grey).count();
     assert_eq!(n_grey, 2, "pole vertices grey");
     for c in colors.iter().filter(|&&c| c != grey) {
@@ -296,7 +296,7 @@ fn curvature_colours_and_legend() {
 #[test]
 fn mean_curvature_sign_follows_the_mesh_normal() {
     let map =
-        ColorMap { scale: ColorScale::MinMax, coverage: 1.0, palette: hi_surface::Palette::Thesis };
+        ColorMap { scale: ColorScale::MinMax, coverage: 1.0, palette: hi_mesh::Palette::Thesis };
     let color = Some(CurvatureColoring { quantity: CurvatureQuantity::Mean, map });
     let t = torus(2.0, 0.5);
     let plain = mesh(&t, MeshOptions { n_u: 16, n_v: 16, color, ..Default::default() });
@@ -316,75 +316,26 @@ fn invalid_options_are_errors() {
     let t = torus(2.0, 0.5);
     let bad_windows = [[0.5, 0.5], [0.7, 0.2], [f64::NAN, 1.0], [0.0, f64::INFINITY]];
     for u_range in bad_windows {
-        let r = TriangleMesh::try_from_surface(&t, &MeshOptions { u_range, ..Default::default() });
+        let r = t.to_mesh(&MeshOptions { u_range, ..Default::default() });
         assert!(matches!(r, Err(Error::InvalidWindow { .. })), "{u_range:?}: {r:?}");
     }
     for (n_u, u_range) in [(0, [0.0, 0.5]), (2, [0.0, 1.0]), (1 << 24, [0.0, 0.5])] {
-        let r =
-            TriangleMesh::try_from_surface(&t, &MeshOptions { n_u, u_range, ..Default::default() });
+        let r = t.to_mesh(&MeshOptions { n_u, u_range, ..Default::default() });
         assert!(matches!(r, Err(Error::InvalidCount { .. })), "n_u = {n_u}: {r:?}");
     }
     // A surface that is one point has no non-degenerate triangle.
     let point = HarmonicSurface::new(vec![vec![DVec3::ONE; 3]; 3]);
-    let r = TriangleMesh::try_from_surface(&point, &MeshOptions::default());
+    let r = point.to_mesh(&MeshOptions::default());
     assert!(matches!(r, Err(Error::InvalidCount { value: 0, .. })), "{r:?}");
-    let map = ColorMap {
-        scale: ColorScale::Magnitude,
-        coverage: 0.0,
-        palette: hi_surface::Palette::Thesis,
-    };
+    let map =
+        ColorMap { scale: ColorScale::Magnitude, coverage: 0.0, palette: hi_mesh::Palette::Thesis };
     let color = Some(CurvatureColoring { quantity: CurvatureQuantity::Mean, map });
-    let r = TriangleMesh::try_from_surface(&t, &MeshOptions { color, ..Default::default() });
-    assert!(matches!(r, Err(Error::InvalidValue { .. })), "{r:?}");
+    let r = t.to_mesh(&MeshOptions { color, ..Default::default() });
+    assert!(matches!(r, Err(Error::Mesh(hi_mesh::Error::InvalidValue { .. }))), "{r:?}");
     // Messages are one line.
-    for e in [
-        r.unwrap_err(),
-        TriangleMesh::try_from_surface(&point, &MeshOptions::default()).unwrap_err(),
-    ] {
+    for e in [r.unwrap_err(), point.to_mesh(&MeshOptions::default()).unwrap_err()] {
         assert!(!e.to_string().contains('\n'), "{e}");
     }
-}
-
-#[test]
-fn try_new_checks_the_invariants() {
-    let p = vec![DVec3::ZERO, DVec3::X, DVec3::Y];
-    let n = vec![DVec3::Z; 3];
-    let uv = vec![DVec2::ZERO; 3];
-    let ok = TriangleMesh::try_new(p.clone(), n.clone(), uv.clone(), vec![[0, 1, 2]]).unwrap();
-    assert_eq!((ok.n_vertices(), ok.n_triangles()), (3, 1), "one triangle");
-    let cases: Vec<(&str, Result<TriangleMesh, Error>)> = vec![
-        ("no triangles", TriangleMesh::try_new(p.clone(), n.clone(), uv.clone(), vec![])),
-        ("index", TriangleMesh::try_new(p.clone(), n.clone(), uv.clone(), vec![[0, 1, 3]])),
-        ("normals", TriangleMesh::try_new(p.clone(), n[..2].to_vec(), uv.clone(), vec![[0, 1, 2]])),
-        ("uvs", TriangleMesh::try_new(p.clone(), n.clone(), uv[..1].to_vec(), vec![[0, 1, 2]])),
-        (
-            "length",
-            TriangleMesh::try_new(p.clone(), vec![DVec3::Z * 1.1; 3], uv.clone(), vec![[0, 1, 2]]),
-        ),
-        (
-            "zero",
-            TriangleMesh::try_new(p.clone(), vec![DVec3::ZERO; 3], uv.clone(), vec![[0, 1, 2]]),
-        ),
-        ("nan", TriangleMesh::try_new(vec![DVec3::NAN; 3], n.clone(), uv.clone(), vec![[0, 1, 2]])),
-        (
-            "uv nan",
-            TriangleMesh::try_new(p.clone(), n.clone(), vec![DVec2::NAN; 3], vec![[0, 1, 2]]),
-        ),
-        ("colours", ok.clone().try_with_colors(vec![[0.5; 3]; 2])),
-        ("colour range", ok.clone().try_with_colors(vec![[0.5, 1.5, 0.0]; 3])),
-        ("colour nan", ok.clone().try_with_colors(vec![[0.5, f32::NAN, 0.0]; 3])),
-    ];
-    for (what, r) in cases {
-        let e = r.expect_err(what);
-        assert!(
-            matches!(e, Error::InvalidCount { .. } | Error::InvalidValue { .. }),
-            "{what}: {e:?}"
-        );
-        assert!(!e.to_string().contains('\n'), "{what}: one line");
-    }
-    let colored = ok.try_with_colors(vec![[0.0, 0.5, 1.0]; 3]).unwrap();
-    assert_eq!(colored.colors().unwrap()[2], [0.0, 0.5, 1.0], "kept");
-    assert!(colored.without_colors().colors().is_none(), "removed");
 }
 
 proptest! {
@@ -418,7 +369,7 @@ proptest! {
         let seam = if split { Seam::Split } else { Seam::Welded };
         let u_range = [u0, u0 + du];
         let opts = MeshOptions { n_u, n_v, u_range, v_range, seam, ..Default::default() };
-        let m = TriangleMesh::try_from_surface(&s, &opts).unwrap();
+        let m = s.to_mesh(&opts).unwrap();
         let cols = if closed_v && !split { n_v } else { n_v + 1 };
         let rows = if (du - 1.0).abs() < 1e-12 && !split { n_u.max(3) } else { n_u + 1 };
         prop_assert_eq!(m.n_vertices(), rows * cols);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Harmonic surfaces: the identities of MATH.md §3 and §2 on random grids, exact sphere and
+//! Harmonic surfaces: the identities of docs/math.md §3 and §2 on random grids, exact sphere and
 //! torus, derivatives against finite differences, fast grid paths against the direct sum.
 
 use std::f64::consts::PI;

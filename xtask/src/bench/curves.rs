@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! `cargo xtask bench curves`: uniform sampling of a harmonic curve through n points at N = 16n
 //! parameters, by the thesis's direct sum of the basis (O(nN), the baseline), by our FFT path
-//! (spectral zero-padding, O(N log N), MATH.md §7) and by `scipy.signal.resample`, which
+//! (spectral zero-padding, O(N log N), docs/math.md §7) and by `scipy.signal.resample`, which
 //! computes the same samples (checked in `crates/hi-curve/tests/peer_scipy.rs`), in one run,
 //! for n = 16 … 16 384; and how each grows with n, on log axes (`docs/perf-curves.svg`).
 //! The peer runs through `xtask/peers/curve_peers.py`.
@@ -159,7 +159,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         &series,
     )?;
     let body = format!(
-        "## Harmonic curves (§2.3, MATH.md §7)\n\n\
+        "## Harmonic curves (§2.3, docs/math.md §7)\n\n\
          Machine: {}.\n\n\
          A planar harmonic curve through n points xₖ = (3 sin 0.37k, cos 1.3k + 0.01k), sampled \
          at N = {FACTOR}n uniform parameters on one thread: by the thesis's direct sum of the \

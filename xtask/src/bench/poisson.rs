@@ -31,10 +31,10 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, bail};
 use glam::{DVec2, DVec3};
 use hi_geomimage::scan::read_scan;
+use hi_mesh::TriangleMesh;
 use hi_raytrace::{
     Camera, Geometry, Light, MeshObject, RenderSettings, Scene, SceneObject, render,
 };
-use hi_surface::TriangleMesh;
 use indicatif::ProgressBar;
 
 use super::{Headline, median, table};

@@ -4,7 +4,7 @@
 //! `Subdivision_method_3` (the program `fixtures/subdivision/cgal_subdiv.cpp`, built here with
 //! `-O2`), in the same run.
 //!
-//! The inputs are those of the criterion bench `crates/hi-surface/benches/subdivision.rs`: the
+//! The inputs are those of the criterion bench `crates/hi-mesh/benches/subdivision.rs`: the
 //! star after five Loop steps and two √3 steps (221 184 triangles) and the star after seven
 //! Catmull-Clark steps (294 912 quads). Our time is one in-memory step, building the new
 //! half-edge mesh included; each peer reads the same mesh from an OFF file and prints the time
@@ -19,7 +19,7 @@ use std::process::Command;
 use std::time::Duration;
 
 use anyhow::{Context, Result, bail, ensure};
-use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
+use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 use indicatif::ProgressBar;
 
 use super::{
@@ -162,8 +162,8 @@ fn inputs() -> Result<[(String, PolyMesh); 2]> {
 /// points with chord-length parameters (whose merged knot vectors grow with the slices).
 fn extra_rows() -> Result<Vec<Vec<String>>> {
     use glam::DVec3;
+    use hi_compare::bspline_fit::{BSplineFit, BSplineFitOptions, Parameters};
     use hi_surface::HarmonicSurface;
-    use hi_surface::bspline_fit::{BSplineFit, BSplineFitOptions, Parameters};
     let m = 256;
     let point = |j: usize, k: usize| {
         let (u, v) = (j as f64 / m as f64, k as f64 / m as f64);
@@ -357,7 +357,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         "## Subdivision (§4.5, Table 4.1)\n\n\
          One step of each scheme on a closed mesh of at least 100 000 faces: the star \
          (`PolyMesh::star`) after five Loop and two √3 steps, and after seven Catmull-Clark steps. \
-         Ours: `hi_surface::subdivision`, one step in memory, the new half-edge mesh built and \
+         Ours: `hi_mesh::subdivision`, one step in memory, the new half-edge mesh built and \
          validated, one thread, median of {OUR_RUNS} runs. Peers, median of {PEER_RUNS} runs of \
          the time they print for the subdivision call alone: `OpenMesh-commandlineSubdivider` \
          (OpenMesh {}), CGAL `Subdivision_method_3` (CGAL {}) through \
@@ -411,7 +411,7 @@ mod tests {
     #[test]
     fn every_peer_scheme_is_one_the_peer_tests_compare() {
         // The peers must run the same scheme as ours (checked vertex by vertex in
-        // hi-surface's subdivision_peers test): Loop's β, not Warren's; no CC in OpenMesh.
+        // hi-mesh's subdivision_peers test): Loop's β, not Warren's; no CC in OpenMesh.
         assert_eq!(Peer::OpenMesh.method(Scheme::Loop(LoopWeights::Warren)), None, "Warren");
         assert_eq!(Peer::OpenMesh.method(Scheme::CatmullClark), None, "no CC in OpenMesh");
         assert_eq!(Peer::Cgal.method(Scheme::Butterfly), None, "no butterfly in CGAL");

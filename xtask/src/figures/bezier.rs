@@ -10,8 +10,9 @@ use glam::DVec3;
 use hi_curve::HarmonicCurve;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
+use hi_mesh::TriangleMesh;
 use hi_surface::bezier::SurfaceBezier;
-use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh, torus};
+use hi_surface::{HarmonicSurface, MeshOptions, torus};
 
 use super::glb::glb;
 use super::scans::{ensure_outward, head_scan};
@@ -45,7 +46,7 @@ fn patch_mesh(
 /// Figure 5.27(a): the harmonic torus itself.
 fn harmonic_torus() -> Result<Vec<u8>> {
     let options = MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() };
-    glb(&TriangleMesh::try_from_surface(&the_torus(), &options)?)
+    glb(&the_torus().to_mesh(&options)?)
 }
 
 /// The torus as patches by `scheme` (Hermite: within 1e-3 of the bounding-box diagonal),
@@ -128,7 +129,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 thesis's 16 bicubic Bézier patches (§5.7: one cubic per interval through 4 equally spaced samples of \
                 each σₖ), each patch sampled 7×7. The patches pass through the 16 points (checked) and are C0: their \
                 normals jump at the patch edges.",
-        data: "the exact 4×4 torus grid of MATH.md §3 (`hi_surface::torus(2, 1)`).",
+        data: "the exact 4×4 torus grid of docs/math.md §3 (`hi_surface::torus(2, 1)`).",
         format: Format::Glb,
         panels: &[
             Panel { suffix: "a", title: "(a) Harmonic surface", draw: |_| harmonic_torus() },
@@ -145,7 +146,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "(a) The thesis's 16 patches of figure 5.27(b), one colour per patch; (b) ours: C1 bicubic Hermite \
                 patches from the surface's value, pᵤ, pᵥ and twist at the corners, refined until the guaranteed bound \
                 is below 6e-3 (1e-3 of the torus's width; the report of each conversion is in the table below).",
-        data: "the exact 4×4 torus grid of MATH.md §3.",
+        data: "the exact 4×4 torus grid of docs/math.md §3.",
         format: Format::Glb,
         panels: &[
             Panel {
@@ -196,7 +197,7 @@ pub(crate) const TABLES: &[Table] = &[
         about: "Each scheme applied to σ₀ of size n (the curve through the points δ₀ₖ; every σₖ is a shift of it): the \
             largest deviation on 33 parameters per piece, the guaranteed bound (interval arithmetic on the Fourier \
             series, see `hi_curve::bezier`), and the continuity. The thesis's cubic scheme has a plateau of about 6e-3 \
-            (MATH.md §4) and jumps in the derivative of about 12% of max|σ′|; its quintic scheme a plateau of about \
+            (docs/math.md §4) and jumps in the derivative of about 12% of max|σ′|; its quintic scheme a plateau of about \
             3e-4, and it does not pass exactly through the nodes; the Hermite scheme reaches the tolerance 1e-4 with C1 \
             joins, its pieces growing like n.",
         make: scheme_table,

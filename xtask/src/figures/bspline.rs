@@ -4,9 +4,9 @@
 
 use anyhow::{Result, ensure};
 use glam::{DVec2, DVec3};
-use hi_curve::compare::bspline::BSplineCurve;
-use hi_curve::compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
-use hi_surface::bspline_fit::{BSplineFit, BSplineFitOptions};
+use hi_compare::bspline::BSplineCurve;
+use hi_compare::bspline_fit::{BSplineFit, BSplineFitOptions};
+use hi_compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
 
 use super::plot::{BLUE, GREEN, Marker, Oblique, Pen, Plot, VERMILION};
 use super::{Figure, Format, Panel};
@@ -21,7 +21,7 @@ const SAMPLES: usize = 160;
 pub(crate) const FIGURES: &[Figure] = &[Figure {
     number: (4, 5),
     caption: "B-spline surface fitting: curve network (after [90])",
-    drawn: "Watt & Watt's algorithm (`hi_surface::bspline_fit`). (a) the cubic U-curves through the five slices, \
+    drawn: "Watt & Watt's algorithm (`hi_compare::bspline_fit`). (a) the cubic U-curves through the five slices, \
             chord-length parameters, natural ends; (b) the same curves on the merged U-knot vector, its knots marked on \
             every curve (knot insertion leaves the curves unchanged); (c) V-curves across the slices through the U-curves' \
             points at the U-knots, each with its own chord-length parameters as the thesis describes; (d) the V-curves of \

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 //! Figures 2.1–2.18: the background curves of chapter 2, drawn with `hi-bezier` and
-//! `hi_curve::compare`: Lagrange interpolation (§2.4), Bézier curves and their properties
+//! `hi_compare`: Lagrange interpolation (§2.4), Bézier curves and their properties
 //! (§2.5), B-splines (§2.9–2.11), METAPOST (§2.14), and curvature and torsion (§2.15).
 
 use anyhow::Result;
 use glam::{DVec2, DVec3};
 use hi_bezier::{Bernstein, BezierCurve, PiecewiseBezier, RationalBezierCurve};
-use hi_curve::compare::bspline::{BSplineBasis, BSplineCurve};
-use hi_curve::compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
-use hi_curve::compare::hobby::{HobbyConfig, HobbyCurve};
-use hi_curve::compare::lagrange::{LagrangeBasis, LagrangeCurve};
+use hi_compare::bspline::{BSplineBasis, BSplineCurve};
+use hi_compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
+use hi_compare::hobby::{HobbyConfig, HobbyCurve};
+use hi_compare::lagrange::{LagrangeBasis, LagrangeCurve};
 use hi_curve::{ParamCurve, PlaneCurve, SpaceCurve};
 
 use super::data;

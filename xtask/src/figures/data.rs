@@ -91,7 +91,7 @@ pub(crate) const STAND_INS: &[StandIn] = &[
     },
     StandIn {
         name: "peer pentagon",
-        about: "the irregular pentagon of the METAPOST and scipy cross-checks (shared/PEERS.md), for figures 2.14 and 2.16",
+        about: "the irregular pentagon of the METAPOST and scipy cross-checks (docs/peers.md §1, §2b), for figures 2.14 and 2.16",
         letter: "x",
         space: false,
         points: || lift(&PEER_PENTAGON),

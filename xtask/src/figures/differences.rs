@@ -3,7 +3,7 @@
 //! the gallery's "differs from the thesis" column and under each figure (`docs/figures/`).
 //!
 //! A difference here is one of result or method: the thesis is wrong (Theorem 5.1 for even n,
-//! the final non-uniform formula; `shared/spec/MATH.md` §2 and §5), a convention differs (mean
+//! the final non-uniform formula; `docs/math.md` §2 and §5), a convention differs (mean
 //! curvature), or the figure shows something else or more for a stated reason. Stand-in data is
 //! not listed here: each figure's data line names it.
 
@@ -12,7 +12,7 @@ const DIFFERENCES: &[((u32, u32), &str)] = &[
     (
         (3, 20),
         "The thesis's final formula (§3.10) does not pass through xₖ at its chord-length tₖ: the tₖ act as \
-         frequencies, and the curve passes through xₖ at t = k/(n−1) and is open (MATH.md §5). Drawn as \
+         frequencies, and the curve passes through xₖ at t = k/(n−1) and is open (docs/math.md §5). Drawn as \
          printed, beside true interpolation at the nodes tₖ.",
     ),
     (
@@ -49,7 +49,7 @@ const DIFFERENCES: &[((u32, u32), &str)] = &[
     (
         (5, 6),
         "Theorem 5.1 is exact only for odd n. For even n the thesis's rotation misses by \
-         c·sin(πno)·sin(πnt) with c = (1/n)Σ(−1)ᵏxₖ (MATH.md §2): panel (c), not in the thesis, shows \
+         c·sin(πno)·sin(πnt) with c = (1/n)Σ(−1)ᵏxₖ (docs/math.md §2): panel (c), not in the thesis, shows \
          the defect beside the exact rotation.",
     ),
     (
@@ -66,7 +66,7 @@ const DIFFERENCES: &[((u32, u32), &str)] = &[
     (
         (5, 27),
         "The thesis's cubic patches are C0 only: the derivative jumps by about 12% of max|σ′| at the \
-         patch edges and the deviation does not shrink with n (MATH.md §4), so the normals visibly \
+         patch edges and the deviation does not shrink with n (docs/math.md §4), so the normals visibly \
          jump; 5.28(b) adds C1 patches.",
     ),
     (

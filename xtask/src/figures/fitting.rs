@@ -8,7 +8,7 @@ use anyhow::{Result, ensure};
 use glam::DVec3;
 use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, fit};
-use hi_surface::{MeshOptions, TriangleMesh};
+use hi_surface::MeshOptions;
 
 use super::glb::glb;
 use super::{Figure, Format, Panel, Table};
@@ -81,5 +81,5 @@ fn sphere_fit() -> Result<Vec<u8>> {
     let (u0, u1) = Layout::Sphere.covering_window();
     let mesh_options =
         MeshOptions { n_u: 32, n_v: 64, u_range: [u0, u1], ..MeshOptions::default() };
-    glb(&TriangleMesh::try_from_surface(&result.surface, &mesh_options)?)
+    glb(&result.surface.to_mesh(&mesh_options)?)
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Binary glTF (`.glb`) figure files: written with `hi_surface::export::write_glb` and read
+//! Binary glTF (`.glb`) figure files: written with `hi_mesh::export::write_glb` and read
 //! back at once with the `gltf` crate, so that a model that does not read back as the mesh in
 //! memory is an error of `cargo xtask figures`, not a file in `docs/figures/`.
 //!
@@ -16,7 +16,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail, ensure};
 use glam::{DVec2, DVec3};
-use hi_surface::TriangleMesh;
+use hi_mesh::TriangleMesh;
 
 /// The `.glb` file of `mesh`, checked by reading it back.
 ///
@@ -28,14 +28,14 @@ pub(crate) fn glb(mesh: &TriangleMesh) -> Result<Vec<u8>> {
 }
 
 /// The `.glb` file of `mesh` with `edges` as a second primitive of lines
-/// (`hi_surface::export::write_glb_with_edges`), checked by reading it back.
+/// (`hi_mesh::export::write_glb_with_edges`), checked by reading it back.
 ///
 /// # Errors
 ///
 /// As [`glb`].
 pub(crate) fn glb_with_edges(mesh: &TriangleMesh, edges: &[[u32; 2]]) -> Result<Vec<u8>> {
     let mut bytes = Vec::new();
-    hi_surface::export::write_glb_with_edges(mesh, edges, &mut bytes).context("writing the GLB")?;
+    hi_mesh::export::write_glb_with_edges(mesh, edges, &mut bytes).context("writing the GLB")?;
     check_read_back(mesh, edges, &bytes).context("reading the GLB back")?;
     Ok(bytes)
 }
@@ -205,17 +205,13 @@ mod tests {
 
     #[test]
     fn a_changed_file_does_not_read_back() {
-        let mesh = TriangleMesh::try_from_surface(
-            &hi_surface::torus(2.0, 1.0),
-            &hi_surface::MeshOptions { n_u: 4, n_v: 6, ..Default::default() },
-        )
-        .expect("meshes");
+        let mesh = hi_surface::torus(2.0, 1.0)
+            .to_mesh(&hi_surface::MeshOptions { n_u: 4, n_v: 6, ..Default::default() })
+            .expect("meshes");
         let bytes = glb(&mesh).expect("reads back");
-        let other = TriangleMesh::try_from_surface(
-            &hi_surface::torus(2.0, 0.9),
-            &hi_surface::MeshOptions { n_u: 4, n_v: 6, ..Default::default() },
-        )
-        .expect("meshes");
+        let other = hi_surface::torus(2.0, 0.9)
+            .to_mesh(&hi_surface::MeshOptions { n_u: 4, n_v: 6, ..Default::default() })
+            .expect("meshes");
         let error = check_read_back(&other, &[], &bytes).expect_err("another mesh");
         assert!(error.to_string().contains("position"), "{error}");
         let error = check_read_back(&mesh, &[], &bytes[..bytes.len() - 8]).expect_err("truncated");

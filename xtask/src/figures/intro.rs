@@ -7,10 +7,11 @@
 use anyhow::{Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_bezier::{BezierCurve, BezierPatch, TriangularPatch};
-use hi_curve::compare::corner_cutting::{DEFAULT_FOUR_POINT_WEIGHT, chaikin_step, four_point_step};
+use hi_compare::corner_cutting::{DEFAULT_FOUR_POINT_WEIGHT, chaikin_step, four_point_step};
+use hi_mesh::TriangleMesh;
+use hi_mesh::subdivision::PolyMesh;
 use hi_surface::bezier::SurfaceBezier;
-use hi_surface::subdivision::PolyMesh;
-use hi_surface::{TriangleMesh, torus};
+use hi_surface::torus;
 
 use super::data;
 use super::glb::{flat_with_edges, glb, glb_with_edges};

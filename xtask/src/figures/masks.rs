@@ -3,7 +3,7 @@
 //! schemes of §4.5 and how Loop, √3 and Catmull-Clark subdivision split the faces.
 //!
 //! The weights drawn are read off the library, never typed in. One step of
-//! `hi_surface::subdivision` is linear in the vertex positions, so with x = 1 at one old
+//! `hi_mesh::subdivision` is linear in the vertex positions, so with x = 1 at one old
 //! vertex j and x = 0 at the others (y and z keep the mesh's own coordinates), the x coordinate
 //! of every new vertex is the weight of j in that vertex's mask. One step per old vertex gives
 //! the whole subdivision matrix ([`Step`]) of a closed mesh: a torus for the regular masks
@@ -22,7 +22,7 @@ use std::f64::consts::PI;
 
 use anyhow::{Context, Result, bail, ensure};
 use glam::{DVec2, DVec3};
-use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
+use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 
 use super::plot::{
     BLUE, GREEN, GREY, INK, Legend, Marker, ORANGE, Pen, Plot, VERMILION, render_row, sub,
@@ -79,7 +79,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The vertex mask 1 − nβ, β (n = 6 and n = 5, Loop's β = (1/n)(5/8 − (3/8 + ¼cos(2π/n))²), and \
                 n = 5 with Warren's β = 3/(8n)), the edge mask 3/8, 3/8, 1/8, 1/8 and the boundary masks of \
                 Hoppe et al. (3/4, 1/8, 1/8 and 1/2, 1/2); the red ring is the new point. The weights were \
-                read off one step of `hi_surface::subdivision` (x = 1 at one old vertex of a closed mesh, 0 \
+                read off one step of `hi_mesh::subdivision` (x = 1 at one old vertex of a closed mesh, 0 \
                 at the others; the x coordinates of the new vertices are that vertex's weights) and \
                 checked to 1e-12 against the formulas; the boundary masks on a flat open patch.",
         data: "exact",
@@ -120,7 +120,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 two outer points weigh w = 0); (b)–(d) the semiregular masks for an end of valence K = 3, \
                 4, 5 (3/4 at that end, sⱼ on its neighbours, s₀ on the other end; sⱼ = (1/4 + cos(2πj/K) + \
                 ½cos(4πj/K))/K for K ≥ 5); the red ring is the new point. The weights were read off one \
-                step of `hi_surface::subdivision` (x = 1 at one old vertex of a closed mesh, 0 at the \
+                step of `hi_mesh::subdivision` (x = 1 at one old vertex of a closed mesh, 0 at the \
                 others; the x coordinates of the new vertices are that vertex's weights) and checked to \
                 1e-12 against the formulas.",
         data: "exact",
@@ -153,7 +153,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Masks for √3 subdivision (after [1])",
         drawn: "Kobbelt's vertex mask 1 − αₙ, αₙ/n with αₙ = (4 − 2cos(2π/n))/9 (n = 6 and n = 5) and the face \
                 mask 1/3, 1/3, 1/3; the red ring is the new point. The weights were read off one step of \
-                `hi_surface::subdivision` (x = 1 at one old vertex of a closed mesh, 0 at the others; the x \
+                `hi_mesh::subdivision` (x = 1 at one old vertex of a closed mesh, 0 at the others; the x \
                 coordinates of the new vertices are that vertex's weights) and checked to 1e-12 against \
                 the formulas.",
         data: "exact",
@@ -208,7 +208,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 tips of the neighbouring triangles, −2/81 at the other six); (b)–(d) the semiregular masks \
                 for a corner of valence K = 3, 4, 5 (K ≥ 5: with a = ⅔cos(π/K), 1 − a² at the corner and \
                 (a² + 2a·cos θ + 2a²·cos 2θ)/K on a neighbour at angle θ from the face); the red ring is the \
-                new point. The weights were read off one step of `hi_surface::subdivision` (x = 1 at one \
+                new point. The weights were read off one step of `hi_mesh::subdivision` (x = 1 at one \
                 old vertex of a closed mesh, 0 at the others; the x coordinates of the new vertices are \
                 that vertex's weights) and checked to 1e-12 against the formulas.",
         data: "exact",
@@ -243,7 +243,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 edge midpoints and old vertices) and the quads of one `catmull_clark_step` (connectivity \
                 from the library); (d)–(g) the masks: face 1/4 each, edge ¼(v + v′ + f + f′) = 3/8, 3/8, \
                 1/16 × 4, vertex (n − 2)/n·v + 1/n²·Σeᵢ + 1/n²·Σfᵢ for n = 4, 3, 5; the red ring is the new \
-                point. The weights were read off one step of `hi_surface::subdivision` (x = 1 at one old \
+                point. The weights were read off one step of `hi_mesh::subdivision` (x = 1 at one old \
                 vertex of a closed mesh, 0 at the others; the x coordinates of the new vertices are that \
                 vertex's weights) and checked to 1e-12 against the formulas.",
         data: "exact",

@@ -76,7 +76,7 @@ type Draw = fn(&str) -> Result<Vec<u8>>;
 pub(crate) struct Figure {
     /// Chapter and number: (3, 13) is figure 3.13.
     pub(crate) number: (u32, u32),
-    /// The thesis's caption (as in shared/spec/FIGURES.md).
+    /// The thesis's caption, as the thesis prints it.
     pub(crate) caption: &'static str,
     /// One line on what is drawn.
     pub(crate) drawn: &'static str,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! Figures 3.20–3.23: non-uniform harmonic interpolation (§3.10) beside the uniform curve.
 //!
-//! The section can be read two ways (MATH.md §5), and both are drawn, each named for what it
+//! The section can be read two ways (docs/math.md §5), and both are drawn, each named for what it
 //! is: the thesis's final formula as printed ([`NonUniformVariant::Thesis`]: the chord-length
 //! tⱼ act as frequencies, the curve passes through xₖ at t = k/(n−1) and is open, ending at
 //! xₙ₋₁ "before the uniform curve does", as the thesis remarks) and true interpolation at the

@@ -9,9 +9,9 @@
 
 use anyhow::Result;
 use glam::DVec2;
-use hi_curve::compare::bspline_interp::{InterpolatingSpline, Parameters};
-use hi_curve::compare::fairness::{curvature_plot, fairness};
-use hi_curve::compare::hobby::{HobbyConfig, HobbyCurve};
+use hi_compare::bspline_interp::{InterpolatingSpline, Parameters};
+use hi_compare::fairness::{curvature_plot, fairness};
+use hi_compare::hobby::{HobbyConfig, HobbyCurve};
 use hi_curve::{HarmonicCurve, ParamCurve};
 
 use super::curves::{closed, data_plot};
@@ -313,7 +313,7 @@ pub(crate) const FIGURES: &[Figure] = &[
 pub(crate) const TABLES: &[Table] = &[Table {
     anchor: "fairness",
     title: "Fairness of the polygon curves",
-    about: "The fairness measures of §2.15 and §3.5 (`hi_curve::compare::fairness`) for the closed polygons of \
+    about: "The fairness measures of §2.15 and §3.5 (`hi_compare::fairness`) for the closed polygons of \
             figures 3.7–3.18, each through the harmonic curve, periodic cubic B-spline interpolation (uniform \
             parameters) and METAPOST's closed curve: the largest |κ|, the number of monotone pieces of κ around \
             the cycle (fewer is fairer; constant κ is 1), the bending energy ∫κ² ds over one period, and the \

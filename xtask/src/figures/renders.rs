@@ -12,11 +12,12 @@ use std::f64::consts::PI;
 
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
+use hi_mesh::TriangleMesh;
 use hi_raytrace::{
     Camera, EdgeStyle, Geometry, HarmonicObject, HarmonicSettings, IntervalMethod, Light,
     MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, TorusMethod, render, torus_scene,
 };
-use hi_surface::{HarmonicSurface, TriangleMesh, sphere, torus};
+use hi_surface::{HarmonicSurface, sphere, torus};
 
 use super::{Figure, Format, Panel};
 
@@ -255,7 +256,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 renderer's stand-in for the thesis's scanline rendering), 400×300, 4 samples per pixel and 16 where they or a neighbour differ (edges, shadows' borders), a \
                 directional and a point light with shadows. `cargo xtask bench render` times it beside the direct \
                 methods.",
-        data: "the exact 4×4 torus grid of MATH.md §3 (`hi_surface::torus(2, 1)`).",
+        data: "the exact 4×4 torus grid of docs/math.md §3 (`hi_surface::torus(2, 1)`).",
         format: Format::Png,
         panels: &[Panel { suffix: "", title: "", draw: |_| scanline_torus() }],
     },

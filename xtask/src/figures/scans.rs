@@ -21,8 +21,9 @@ use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
-use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
-use hi_surface::{HarmonicSurface, MeshOptions, TriangleMesh};
+use hi_mesh::TriangleMesh;
+use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
+use hi_surface::{HarmonicSurface, MeshOptions};
 
 use super::glb::glb;
 use super::subdivision::head_with;
@@ -196,7 +197,7 @@ fn covering_mesh(
         u_range: [u0, u1],
         ..MeshOptions::default()
     };
-    let mesh = TriangleMesh::try_from_surface(surface, &options)?;
+    let mesh = surface.to_mesh(&options)?;
     ensure_outward(&mesh, 0.9, "the fitted surface")?;
     Ok(mesh)
 }

@@ -11,7 +11,7 @@ use glam::DVec3;
 use hi_geomimage::sections::{
     Problem, SectionFit, SectionOptions, fit_given_sections, fit_sections,
 };
-use hi_surface::{MeshOptions, TriangleMesh};
+use hi_surface::MeshOptions;
 
 use super::glb::glb;
 use super::{Figure, Format, Panel};
@@ -101,7 +101,7 @@ fn mesh(fit: &SectionFit, per_row: usize) -> Result<Vec<u8>> {
         u_range: [u0, u1],
         ..MeshOptions::default()
     };
-    glb(&TriangleMesh::try_from_surface(&fit.surface, &options)?)
+    glb(&fit.surface.to_mesh(&options)?)
 }
 
 /// The largest | |p| − 1 | over the surface sampled 4 times finer than its grid.

@@ -2,7 +2,7 @@
 //! Figures 4.11–4.35 and Table 4.1: the subdivision schemes of §4.5 on the cube, the star and
 //! a head, as binary glTF models, and the comparison of the schemes measured on them.
 //!
-//! Every stage is a [`PolyMesh`] from `hi_surface::subdivision`, drawn flat (each face fanned
+//! Every stage is a [`PolyMesh`] from `hi_mesh::subdivision`, drawn flat (each face fanned
 //! into triangles with its own normal) with its faces' edges as a second primitive of lines,
 //! so that the refinement shows and a quad mesh differs from its triangulation
 //! ([`super::glb::flat_with_edges`]); the limit
@@ -15,8 +15,8 @@ use std::fmt::Write as _;
 
 use anyhow::{Context, Result, ensure};
 use glam::DVec3;
-use hi_surface::TriangleMesh;
-use hi_surface::subdivision::{
+use hi_mesh::TriangleMesh;
+use hi_mesh::subdivision::{
     LimitPoint, LoopWeights, PolyMesh, Scheme, catmull_clark_limit, loop_limit,
 };
 
@@ -204,7 +204,7 @@ fn signed_volume(mesh: &PolyMesh) -> f64 {
 }
 
 /// What every figure of steps draws.
-const STEPS_DRAWN: &str = "(a) The control mesh and (b)–(d) the first three steps of the scheme (`hi_surface::subdivision`), \
+const STEPS_DRAWN: &str = "(a) The control mesh and (b)–(d) the first three steps of the scheme (`hi_mesh::subdivision`), \
     each face drawn flat (a fan of triangles with the face's own normal) and its edges as a second primitive of lines \
     (dark in the renders, drawn by glTF viewers), so that a quad mesh and its triangulation differ; no colours. The \
     four panels share one camera, so the shrinking of an approximating scheme shows. The thesis's four panels \
@@ -555,7 +555,7 @@ fn scheme_table() -> Result<String> {
 /// The row of the B-spline surface fit (§4.4): eight closed slices of a torus with 6 to 9
 /// points each (so the U-knots must be merged), closed across the slices.
 fn bspline_row() -> Result<String> {
-    use hi_surface::bspline_fit::{BSplineFit, BSplineFitOptions};
+    use hi_compare::bspline_fit::{BSplineFit, BSplineFitOptions};
     let slices: Vec<Vec<DVec3>> = (0..8)
         .map(|s| {
             let v = 2.0 * PI * f64::from(s) / 8.0;

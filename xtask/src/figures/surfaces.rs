@@ -5,11 +5,11 @@
 //! one file per panel; and two tables: the curvature comparison of §5.9 and the meshes and
 //! colour scales of figures 5.31–5.43.
 //!
-//! Every model is a triangle mesh of `hi_surface` written by `hi_surface::export::write_glb` and
+//! Every model is a triangle mesh of `hi_surface` written by `hi_mesh::export::write_glb` and
 //! read back with the `gltf` crate before it is accepted ([`super::glb`]). Images of the models
 //! come with the ray tracer; the index page links the files.
 //!
-//! **Meshes.** Harmonic surfaces are meshed by `TriangleMesh::try_from_surface` (welded seams
+//! **Meshes.** Harmonic surfaces are meshed by `HarmonicSurface::to_mesh` (welded seams
 //! where the window is a whole period, one vertex per pole). A parametric surface is meshed
 //! here ([`parametric_mesh`]): an open (n + 1)×(n + 1) grid of f(u, v) with normals pᵤ × pᵥ from
 //! `ParametricSurface::derivs`; triangles with two corners at one point (a pole) are dropped,
@@ -28,10 +28,10 @@
 
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
+use hi_mesh::{ColorLegend, ColorMap, ColorScale, Palette, TriangleMesh, srgb_to_linear_rgb};
 use hi_surface::{
-    ColorLegend, ColorMap, ColorScale, CurvatureQuantity, HarmonicSurface, MeshOptions, Palette,
-    ParametricSurface, SurfaceDerivs, TriangleMesh, compare_curvature, srgb_to_linear_rgb,
-    test_surface, test_surfaces,
+    CurvatureQuantity, HarmonicSurface, MeshOptions, ParametricSurface, SurfaceDerivs,
+    compare_curvature, test_surface, test_surfaces,
 };
 
 use super::glb::{glb, glb_with_edges};
@@ -217,7 +217,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "(a) The harmonic sphere over u ∈ [0, ½] and (b) the harmonic torus, meshed with 24×48 quads \
                 (24 along the meridian or around the tube, 48 around the axis; one vertex per pole), light grey, with the \
                 16 interpolation points overlaid as small red octahedra (the sphere's 4 points at each pole are one).",
-        data: "the exact 4×4 grids of MATH.md §3 (`hi_surface::sphere(1)`, `hi_surface::torus(2, 1)`): the diamond \
+        data: "the exact 4×4 grids of docs/math.md §3 (`hi_surface::sphere(1)`, `hi_surface::torus(2, 1)`): the diamond \
                of four points turned by 90° three times.",
         format: Format::Glb,
         panels: &[
@@ -229,7 +229,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         3,
         "Stages in subdivision to produce a torus",
         Torus::Round,
-        "the 4×4 torus grid of MATH.md §3, `hi_surface::torus(2, 1)`."
+        "the 4×4 torus grid of docs/math.md §3, `hi_surface::torus(2, 1)`."
     ),
     subdivision!(
         4,
@@ -744,7 +744,7 @@ fn harmonic_figure(which: Exact) -> Result<Vec<u8>> {
         Exact::Torus => (hi_surface::torus(2.0, 1.0), [0.0, 1.0]),
     };
     let options = MeshOptions { n_u: 24, n_v: 48, u_range, ..Default::default() };
-    let mesh = TriangleMesh::try_from_surface(&surface, &options)?;
+    let mesh = surface.to_mesh(&options)?;
     glb(&with_markers(&mesh, surface.points(), MARKER_SIZE * surface.radius())?)
 }
 
@@ -847,7 +847,7 @@ impl Comparison {
             v_range: [v0, v1],
             ..Default::default()
         };
-        let mesh = TriangleMesh::try_from_surface(&harmonic, &options)?;
+        let mesh = harmonic.to_mesh(&options)?;
         let params = mesh
             .uvs()
             .iter()

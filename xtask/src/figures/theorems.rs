@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! Figures 5.2 and 5.6: harmonic subdivision (§5.2), rotation (Theorem 5.1) and insertion
 //! (Theorem 5.3) on the heptagon of figure 3.9, and (beyond the thesis) why Theorem 5.1 is not
-//! a rotation for even n (MATH.md §2).
+//! a rotation for even n (docs/math.md §2).
 
 use anyhow::{Result, ensure};
 use glam::DVec2;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! `hi curve fairness`: the fairness measures of a plane curve (Hardy 2005, §2.4, §2.15, §3.5).
 
-use hi_curve::compare::fairness::fairness;
+use hi_compare::fairness::fairness;
 
 use crate::cli::FairnessArgs;
 use crate::error::{Failure, context};

@@ -13,7 +13,7 @@ use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::regularise::Regularisation;
 use hi_geomimage::scan::read_scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
-use hi_surface::export::{self, MeshFormat};
+use hi_mesh::export::{self, MeshFormat};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::cli::{FitArgs, MethodName, ParamName};

@@ -9,8 +9,8 @@ use hi_geomimage::Stage;
 use hi_geomimage::distance::Distances;
 use hi_geomimage::scan::read_scan;
 use hi_geomimage::sections::{ContourOrder, SectionFit, SectionOptions, SliceAxis, fit_sections};
-use hi_surface::export::{self, MeshFormat};
-use hi_surface::{MeshOptions, TriangleMesh};
+use hi_mesh::export::{self, MeshFormat};
+use hi_surface::MeshOptions;
 
 use crate::cli::{AxisName, FitArgs, OrderName};
 use crate::commands::surface_example::{grid_json, write_file};
@@ -77,7 +77,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
             v_range: [0.0, 1.0],
             ..MeshOptions::default()
         };
-        let mesh = TriangleMesh::try_from_surface(&fitted.surface, &mesh_options)?;
+        let mesh = fitted.surface.to_mesh(&mesh_options)?;
         export::save(&mesh, &args.output)?
     };
     let summary = summary(args, &fitted, scan.dropped_points, &files);

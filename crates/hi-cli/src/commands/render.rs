@@ -8,14 +8,12 @@ use std::path::{Path, PathBuf};
 use glam::{DVec2, DVec3};
 use hi_bezier::BezierPatch;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
+use hi_mesh::{TriangleMesh, srgb_to_linear_rgb};
 use hi_raytrace::{
     BezierObject, BezierSettings, Camera, Geometry, HarmonicObject, HarmonicSettings,
     IntervalMethod, Light, MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, render,
 };
-use hi_surface::{
-    CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, TriangleMesh,
-    srgb_to_linear_rgb,
-};
+use hi_surface::{CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::Value;
 
@@ -290,7 +288,7 @@ fn harmonic_geometry(
         RenderMethod::Mesh => {
             let color = coloring.map(|(quantity, map)| CurvatureColoring { quantity, map });
             let options = MeshOptions { n_u: 256, n_v: 256, color, ..MeshOptions::default() };
-            Geometry::Mesh(MeshObject::new(TriangleMesh::try_from_surface(&surface, &options)?))
+            Geometry::Mesh(MeshObject::new(surface.to_mesh(&options)?))
         }
     })
 }
@@ -298,7 +296,7 @@ fn harmonic_geometry(
 /// A triangle mesh from an OBJ or glTF file: as `hi surface mesh` writes them, or (OBJ without
 /// normals or UVs) positions and faces with normals from the faces.
 fn read_mesh(path: &Path) -> Result<TriangleMesh, String> {
-    match hi_surface::export::load(path) {
+    match hi_mesh::export::load(path) {
         Ok(mesh) => Ok(mesh),
         Err(first) => {
             let is_obj = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"));

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! `hi curve sample`: uniform samples of the curve of a kind (the harmonic one by FFT).
 
+use hi_compare::CurveKind;
 use hi_curve::ControlPoint;
-use hi_curve::compare::CurveKind;
 
 use crate::cli::SampleArgs;
 use crate::error::{Failure, context};

@@ -3,8 +3,8 @@
 
 use std::path::PathBuf;
 
-use hi_surface::export;
-use hi_surface::subdivision::{LoopWeights, PolyMesh, Scheme};
+use hi_mesh::export;
+use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 
 use crate::cli::{LoopBeta, SchemeName, SubdivideMeshArgs};
 use crate::error::Failure;

@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use glam::DVec3;
+use hi_mesh::export;
 use hi_surface::bezier::{PatchReport, SurfaceBezier};
-use hi_surface::export;
 
 use crate::cli::SurfaceBezierArgs;
 use crate::commands::surface_example::write_file;

@@ -6,10 +6,10 @@
 use std::path::Path;
 
 use glam::DVec3;
-use hi_surface::bspline_fit::{
+use hi_compare::bspline_fit::{
     BSplineFit, BSplineFitOptions, BezierPatchGrid, EndCondition, Parameters,
 };
-use hi_surface::export::{self, MeshFormat};
+use hi_mesh::export::{self, MeshFormat};
 
 use crate::cli::{BsplineEnd, BsplineParams, SurfaceBsplineArgs};
 use crate::commands::surface_example::write_file;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! `hi surface example`: the grid of the exact sphere or torus (MATH.md §3) or of a test
+//! `hi surface example`: the grid of the exact sphere or torus (docs/math.md §3) or of a test
 //! surface of Hardy 2005, §5.9.
 
 use std::path::Path;

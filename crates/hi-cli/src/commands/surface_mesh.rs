@@ -2,8 +2,8 @@
 //! `hi surface mesh`: a triangle mesh of a harmonic surface written as OBJ, glTF or GLB
 //! (Hardy 2005, §5.5, with the curvature colours of §5.9).
 
-use hi_surface::export::{self, MeshFormat};
-use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions, TriangleMesh};
+use hi_mesh::export::{self, MeshFormat};
+use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions};
 
 use crate::cli::{ColorBy, SurfaceMeshArgs};
 use crate::error::Failure;
@@ -35,7 +35,8 @@ pub(crate) fn run(args: &SurfaceMeshArgs) -> Result<Json, Failure> {
             .map(|quantity| CurvatureColoring { quantity, map: args.palette.color_map() }),
         ..Default::default()
     };
-    let mesh = TriangleMesh::try_from_surface(&surface, &options)
+    let mesh = surface
+        .to_mesh(&options)
         .map_err(|e| Failure::input(format!("--resolution/--window: {e}")))?;
     let files = export::save(&mesh, &args.output)?;
     let mut out = Object::new()

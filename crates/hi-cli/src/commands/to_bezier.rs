@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! `hi curve to-bezier`: the piecewise Bézier form of a piecewise polynomial curve.
 
+use hi_compare::CurveKind;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_curve::compare::CurveKind;
 use hi_curve::{ControlPoint, HarmonicCurve};
 
 use crate::cli::ToBezierArgs;

@@ -4,7 +4,7 @@
 //! n = 2m+1: σ(d) = (1/n)·[1 + 2·Σⱼ₌₁ᵐ cos(2πjd)]
 //! n = 2m:   σ(d) = (1/n)·[1 + cos(nπd) + 2·Σⱼ₌₁ᵐ⁻¹ cos(2πjd)]
 //!
-//! (The extracted thesis text drops the leading "1 +"; MATH.md §1.) Differentiating term by
+//! (The extracted thesis text drops the leading "1 +"; docs/math.md §1.) Differentiating term by
 //! term with dᵖ/ddᵖ cos(ωd) = ωᵖ·cos(ωd + pπ/2) gives every derivative (eq. 5.4 for p = 1).
 
 use std::f64::consts::PI;

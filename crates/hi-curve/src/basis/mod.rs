@@ -235,13 +235,13 @@ mod tests {
         assert!(s4.kernel(0.5).abs() < 1e-16);
         let pi8 = std::f64::consts::PI / 8.0;
         assert!((s4.kernel(0.125) - pi8.cos() / (4.0 * pi8.sin())).abs() < 1e-15);
-        // The even kernel is 1-periodic, not just 2-periodic (MATH.md §1).
+        // The even kernel is 1-periodic, not just 2-periodic (docs/math.md §1).
         assert!((s4.kernel(1.125) - s4.kernel(0.125)).abs() < 1e-15);
     }
 
     #[test]
     fn even_kernel_near_one_is_reduced() {
-        // MATH.md §1: the naive formula gives 1.0000942 at n = 6, t = 1 − 1e-12.
+        // docs/math.md §1: the naive formula gives 1.0000942 at n = 6, t = 1 − 1e-12.
         let v = Sigma::new(6).kernel(1.0 - 1e-12);
         assert!((v - 1.0).abs() < 1e-15, "{v}");
     }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-//! Non-uniform harmonic interpolation (Hardy 2005, §3.10; MATH.md §5).
+//! Non-uniform harmonic interpolation (Hardy 2005, §3.10; docs/math.md §5).
 //!
 //! Two readings of the section, each named for what it is:
 //!
@@ -25,7 +25,7 @@ use crate::differential::ParamCurve;
 use crate::point::check_points;
 use crate::{ControlPoint, Error, Fourier};
 
-/// Which reading of §3.10 a [`NonUniformCurve`] follows (MATH.md §5).
+/// Which reading of §3.10 a [`NonUniformCurve`] follows (docs/math.md §5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum NonUniformVariant {
     /// The thesis's final formula as printed (real part, m = ⌊n/2⌋, the (n−1)·t scaling).

@@ -14,7 +14,7 @@
 use std::path::Path;
 
 use glam::{DMat3, DVec3};
-use hi_surface::export::primitive_triangles;
+use hi_mesh::export::primitive_triangles;
 
 use super::{Scan, ScanError, ScanFormat};
 
@@ -69,7 +69,7 @@ fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
         other => format!("glTF buffers: {other}"),
     })?;
     let limit = ELEMENTS_PER_BYTE * bytes.len() + 1024;
-    let instances = hi_surface::export::placed_meshes(&document)?;
+    let instances = hi_mesh::export::placed_meshes(&document)?;
     let (mut points, mut normals, mut faces): (Vec<DVec3>, Vec<DVec3>, Vec<Vec<u32>>) =
         (Vec::new(), Vec::new(), Vec::new());
     let mut all_normals = true;

@@ -156,7 +156,7 @@ mod tests {
 
     #[test]
     fn the_curve_through_a_square_overshoots_by_its_sagitta() {
-        // The harmonic curve through a square's corners is its circumcircle (MATH.md §3): it
+        // The harmonic curve through a square's corners is its circumcircle (docs/math.md §3): it
         // bulges 1 − cos 45° beyond each side.
         let c = HarmonicCurve::new(vec![DVec3::X, DVec3::Y, -DVec3::X, -DVec3::Y]);
         let (dense, over) = dense_and_overshoot(&c).unwrap();

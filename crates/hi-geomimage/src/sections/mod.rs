@@ -34,7 +34,7 @@
 //!    its points and those of the (already turned) contour below it — over the N whole steps,
 //!    then refined continuously by golden-section search ([`Alignment`]). Because every
 //!    inserted curve has degree below N/2, its alternating sum is 0 and Theorem 5.1 is exact
-//!    even for even N (MATH.md §2): the turned contour is the same curve, and the original
+//!    even for even N (docs/math.md §2): the turned contour is the same curve, and the original
 //!    points are still interpolated. For the same reason the total deviation between two
 //!    contours depends only on the difference of their offsets, so turning each contour
 //!    against the one below reaches the minimum of the total.

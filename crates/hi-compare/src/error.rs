@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: MIT
+//! The error type of `hi-compare`.
+
+use std::fmt;
+
+/// Everything that can be wrong with the input of a `hi-compare` function; `Display` gives one
+/// line naming the problem.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// No points were given.
+    Empty,
+    /// Point `index` has a NaN or infinite coordinate.
+    NonFinitePoint {
+        /// Index of the first offending point.
+        index: usize,
+    },
+    /// A scalar argument is NaN or infinite.
+    NonFiniteParameter {
+        /// Name of the argument.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A count (of samples, points or levels) is out of the range an operation accepts.
+    InvalidCount {
+        /// Which count.
+        what: &'static str,
+        /// Its value.
+        value: usize,
+        /// The range it must lie in, in words.
+        expected: &'static str,
+    },
+    /// The number of parameters differs from the number of points.
+    ParameterCountMismatch {
+        /// Number of points.
+        points: usize,
+        /// Number of parameters.
+        params: usize,
+    },
+    /// A node parameter lies outside [0, 1).
+    ParameterOutOfRange {
+        /// Index of the parameter.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// Two node parameters coincide (modulo 1), so no curve can pass through both points.
+    ParametersNotDistinct {
+        /// Index of the first parameter.
+        first: usize,
+        /// Index of the second parameter.
+        second: usize,
+    },
+    /// Two consecutive points coincide, so their chord-length parameters coincide too.
+    CoincidentPoints {
+        /// Index of the first point.
+        first: usize,
+        /// Index of the next point (cyclically).
+        second: usize,
+    },
+    /// A linear system of the construction is singular to working precision.
+    Singular {
+        /// Which system.
+        what: &'static str,
+    },
+    /// A construction needs more points than were given.
+    TooFewPoints {
+        /// What needs them.
+        what: &'static str,
+        /// How many it needs.
+        needed: usize,
+        /// How many there are.
+        got: usize,
+    },
+    /// A scalar argument is outside the range a construction accepts.
+    ParameterOutOfBounds {
+        /// Name of the argument.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The accepted range, in words.
+        expected: &'static str,
+    },
+    /// A knot vector is not a valid one (not non-decreasing, wrong length, or too many
+    /// repeated knots).
+    InvalidKnots {
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// A rational weight is not finite and positive.
+    InvalidWeight {
+        /// Index of the weight.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// Node parameters that must increase decrease somewhere: parameter `index` is smaller
+    /// than parameter `index − 1`.
+    ParametersNotIncreasing {
+        /// Index of the first parameter smaller than its predecessor.
+        index: usize,
+    },
+    /// A result overflows the range of `f64` (finite input whose coordinates are too large, or
+    /// a conversion whose coefficients grow too fast).
+    Overflow {
+        /// What overflows.
+        what: &'static str,
+    },
+    /// The grid has no rows, or its first row is empty.
+    EmptyGrid,
+    /// A row of the grid has a different length from the first.
+    RaggedGrid {
+        /// Index of the offending row.
+        row: usize,
+        /// Its length.
+        len: usize,
+        /// The length of row 0.
+        expected: usize,
+    },
+    /// Grid point (row, column) has a NaN or infinite coordinate.
+    NonFiniteGridPoint {
+        /// Row index (the u direction).
+        row: usize,
+        /// Column index (the v direction).
+        col: usize,
+    },
+    /// A value is out of its range: a mesh normal not of unit length, a colour component
+    /// outside [0, 1], a colour-map bound.
+    InvalidValue {
+        /// What the value is.
+        what: &'static str,
+        /// Its index, for an element of a list (a vertex).
+        index: Option<usize>,
+        /// The value.
+        value: f64,
+        /// The accepted range, in words.
+        expected: &'static str,
+    },
+    /// Too few slices for a B-spline surface fit ([`crate::bspline_fit`]).
+    TooFewSlices {
+        /// The least number of slices.
+        needed: usize,
+        /// The number given.
+        got: usize,
+    },
+    /// A slice has too few points for its U-curve ([`crate::bspline_fit`]).
+    TooFewSlicePoints {
+        /// Index of the slice.
+        slice: usize,
+        /// The least number of points.
+        needed: usize,
+        /// Its number of points.
+        got: usize,
+    },
+    /// A point of a slice has a NaN or infinite coordinate.
+    NonFiniteSlicePoint {
+        /// Index of the slice.
+        slice: usize,
+        /// Index of the point in the slice.
+        point: usize,
+    },
+    /// A slice has a different number of points from the given u parameters.
+    SliceLengthMismatch {
+        /// Index of the slice.
+        slice: usize,
+        /// Its number of points.
+        len: usize,
+        /// The number of given u parameters.
+        expected: usize,
+    },
+    /// Two consecutive points of a slice are equal: a zero chord length.
+    CoincidentSlicePoints {
+        /// Index of the slice.
+        slice: usize,
+        /// Index of the first point.
+        first: usize,
+        /// Index of the second point.
+        second: usize,
+    },
+    /// Two consecutive slices have a zero (averaged) chord length between them.
+    CoincidentSlices {
+        /// Index of the first slice.
+        first: usize,
+        /// Index of the second slice.
+        second: usize,
+    },
+    /// An error from the harmonic curves of `hi-curve` (a [`crate::CurveKind::Harmonic`] or
+    /// [`crate::CurveKind::Trig`] curve).
+    Harmonic(hi_curve::Error),
+    /// An error from `hi-mesh` (a triangle mesh of a B-spline surface).
+    Mesh(hi_mesh::Error),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Empty => write!(f, "no points given: at least one point is needed"),
+            Error::NonFinitePoint { index } => {
+                write!(f, "point {index} has a non-finite coordinate (NaN or infinity)")
+            }
+            Error::NonFiniteParameter { name, value } => {
+                write!(f, "{name} = {value} is not a finite number")
+            }
+            Error::InvalidCount { what, value, expected } => {
+                write!(f, "{what} = {value} is invalid: expected {expected}")
+            }
+            Error::ParameterCountMismatch { points, params } => write!(
+                f,
+                "{} given for {}: one parameter per point is needed",
+                plural(*params, "parameter"),
+                plural(*points, "point")
+            ),
+            Error::ParameterOutOfRange { index, value } => {
+                write!(f, "parameter {index} = {value} is outside [0, 1)")
+            }
+            Error::ParametersNotDistinct { first, second } => write!(
+                f,
+                "parameters {first} and {second} coincide (modulo 1): the nodes must be distinct"
+            ),
+            Error::CoincidentPoints { first, second } => write!(
+                f,
+                "points {first} and {second} coincide, so their chord-length parameters do too"
+            ),
+            Error::Singular { what } => write!(f, "the {what} is singular to working precision"),
+            Error::TooFewPoints { what, needed, got } => {
+                write!(f, "{what} needs at least {}, got {got}", plural(*needed, "point"))
+            }
+            Error::ParameterOutOfBounds { name, value, expected } => {
+                write!(f, "{name} = {value} is out of range: expected {expected}")
+            }
+            Error::InvalidKnots { reason } => write!(f, "invalid knot vector: {reason}"),
+            Error::InvalidWeight { index, value } => {
+                write!(
+                    f,
+                    "weight {index} = {value} is invalid: weights must be finite and positive"
+                )
+            }
+            Error::ParametersNotIncreasing { index } => write!(
+                f,
+                "parameter {index} is smaller than parameter {}: the parameters must increase",
+                index.saturating_sub(1)
+            ),
+            Error::Overflow { what } => {
+                write!(f, "the {what} overflows the range of floating-point numbers")
+            }
+            Error::EmptyGrid => {
+                write!(f, "the grid is empty: at least one row of one point is needed")
+            }
+            Error::RaggedGrid { row, len, expected } => write!(
+                f,
+                "row {row} of the grid has {len} points, row 0 has {expected}: the grid must be rectangular"
+            ),
+            Error::NonFiniteGridPoint { row, col } => {
+                write!(f, "grid point ({row}, {col}) has a non-finite coordinate (NaN or infinity)")
+            }
+            Error::InvalidValue { what, index: Some(i), value, expected } => {
+                write!(f, "{what} {i} = {value} is invalid: expected {expected}")
+            }
+            Error::InvalidValue { what, index: None, value, expected } => {
+                write!(f, "{what} = {value} is invalid: expected {expected}")
+            }
+            Error::TooFewSlices { needed, got } => {
+                write!(f, "the B-spline surface fit needs at least {needed} slices, {got} given")
+            }
+            Error::TooFewSlicePoints { slice, needed, got } => {
+                write!(f, "slice {slice} has {got} points: its U-curve needs at least {needed}")
+            }
+            Error::NonFiniteSlicePoint { slice, point } => write!(
+                f,
+                "slice {slice}, point {point} has a non-finite coordinate (NaN or infinity)"
+            ),
+            Error::SliceLengthMismatch { slice, len, expected } => write!(
+                f,
+                "slice {slice} has {len} points but {expected} u parameters are given: with given \
+                 parameters every slice needs one point per parameter"
+            ),
+            Error::CoincidentSlicePoints { slice, first, second } => {
+                write!(f, "slice {slice}: points {first} and {second} coincide (zero chord length)")
+            }
+            Error::CoincidentSlices { first, second } => {
+                write!(f, "slices {first} and {second} coincide (zero chord length between them)")
+            }
+            Error::Harmonic(e) => write!(f, "{e}"),
+            Error::Mesh(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Harmonic(e) => Some(e),
+            Error::Mesh(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<hi_curve::Error> for Error {
+    fn from(e: hi_curve::Error) -> Self {
+        Error::Harmonic(e)
+    }
+}
+
+impl From<hi_mesh::Error> for Error {
+    fn from(e: hi_mesh::Error) -> Self {
+        Error::Mesh(e)
+    }
+}
+
+/// "1 point", "2 points".
+fn plural(count: usize, noun: &str) -> String {
+    if count == 1 { format!("1 {noun}") } else { format!("{count} {noun}s") }
+}

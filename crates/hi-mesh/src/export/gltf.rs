@@ -1,0 +1,581 @@
+// SPDX-License-Identifier: MIT
+//! glTF 2.0, as JSON with a binary buffer beside it or as one `.glb`, built with `gltf-json`
+//! (the surface as polygons for other software, Hardy 2005, §5.5) and read back with
+//! `gltf::import`.
+
+use std::borrow::Cow;
+use std::collections::BTreeMap;
+use std::io::Write;
+use std::path::Path;
+
+use ::gltf::json;
+use glam::{DMat3, DMat4, DVec2, DVec3, Vec3};
+use json::validation::Checked::Valid;
+use json::validation::USize64;
+
+use super::{GENERATOR, format_error, io_error};
+use crate::{Error, TriangleMesh};
+
+/// Largest vertex count written with `u16` indices: 65 535 itself is the primitive-restart
+/// value, which glTF forbids in indices.
+const MAX_U16_VERTICES: usize = u16::MAX as usize;
+
+/// The JSON document and its one binary buffer.
+struct Encoded {
+    root: json::Root,
+    bin: Vec<u8>,
+}
+
+fn push_f32s(bin: &mut Vec<u8>, values: impl IntoIterator<Item = f32>) {
+    for x in values {
+        bin.extend_from_slice(&x.to_le_bytes());
+    }
+}
+
+/// Appends a buffer view of `bin[start..]` (padding `bin` to 4 bytes after it).
+fn push_view(
+    root: &mut json::Root,
+    buffer: json::Index<json::Buffer>,
+    bin: &mut Vec<u8>,
+    start: usize,
+    target: json::buffer::Target,
+) -> json::Index<json::buffer::View> {
+    let view = root.push(json::buffer::View {
+        buffer,
+        byte_length: USize64::from(bin.len() - start),
+        byte_offset: Some(USize64::from(start)),
+        byte_stride: None,
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        target: Some(Valid(target)),
+    });
+    bin.resize(bin.len().next_multiple_of(4), 0);
+    view
+}
+
+fn accessor(
+    view: json::Index<json::buffer::View>,
+    count: usize,
+    component: json::accessor::ComponentType,
+    type_: json::accessor::Type,
+    bounds: Option<([f32; 3], [f32; 3])>,
+) -> json::Accessor {
+    json::Accessor {
+        buffer_view: Some(view),
+        byte_offset: Some(USize64(0)),
+        count: USize64::from(count),
+        component_type: Valid(json::accessor::GenericComponentType(component)),
+        extensions: None,
+        extras: Default::default(),
+        type_: Valid(type_),
+        min: bounds.map(|(lo, _)| json::Value::from(lo.to_vec())),
+        max: bounds.map(|(_, hi)| json::Value::from(hi.to_vec())),
+        name: None,
+        normalized: false,
+        sparse: None,
+    }
+}
+
+/// The glTF document and buffer of `mesh`, with a second primitive of lines along `edges`
+/// when there are any (checked in range by the caller); `uri` is the buffer's URI (`None` for
+/// `.glb`).
+fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encoded {
+    use json::accessor::{ComponentType, Type};
+    use json::buffer::Target;
+
+    let n = mesh.n_vertices();
+    let mut root = json::Root::default();
+    root.asset.generator = Some(GENERATOR.to_string());
+    let buffer = root.push(json::Buffer {
+        byte_length: USize64(0), // set below, once the buffer is complete
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        uri,
+    });
+    let mut bin = Vec::with_capacity(n * 44 + mesh.n_triangles() * 12);
+    let mut attributes = BTreeMap::new();
+
+    // POSITION, with min and max of the f32 values actually written.
+    let positions: Vec<Vec3> = mesh.positions().iter().map(|p| p.as_vec3()).collect();
+    let (lo, hi) = positions
+        .iter()
+        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let start = bin.len();
+    push_f32s(&mut bin, positions.iter().flat_map(|p| p.to_array()));
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    let acc = root.push(accessor(
+        view,
+        n,
+        ComponentType::F32,
+        Type::Vec3,
+        Some((lo.to_array(), hi.to_array())),
+    ));
+    attributes.insert(Valid(json::mesh::Semantic::Positions), acc);
+    let positions_accessor = acc;
+
+    let start = bin.len();
+    push_f32s(&mut bin, mesh.normals().iter().flat_map(|v| v.as_vec3().to_array()));
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
+    attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
+
+    let start = bin.len();
+    push_f32s(&mut bin, mesh.uvs().iter().flat_map(|t| t.as_vec2().to_array()));
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
+    attributes.insert(Valid(json::mesh::Semantic::TexCoords(0)), acc);
+
+    if let Some(colors) = mesh.colors() {
+        let start = bin.len();
+        push_f32s(&mut bin, colors.iter().flatten().copied());
+        let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+        let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
+        attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
+    }
+
+    let start = bin.len();
+    let component = if n <= MAX_U16_VERTICES {
+        for &k in mesh.triangles().iter().flatten() {
+            // k < n ≤ 65 535.
+            bin.extend_from_slice(&(k as u16).to_le_bytes());
+        }
+        ComponentType::U16
+    } else {
+        for &k in mesh.triangles().iter().flatten() {
+            bin.extend_from_slice(&k.to_le_bytes());
+        }
+        ComponentType::U32
+    };
+    let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
+    let indices = root.push(accessor(view, 3 * mesh.n_triangles(), component, Type::Scalar, None));
+    let edge_indices = (!edges.is_empty()).then(|| {
+        let start = bin.len();
+        for &k in edges.iter().flatten() {
+            if component == ComponentType::U16 {
+                // k < n ≤ 65 535.
+                bin.extend_from_slice(&(k as u16).to_le_bytes());
+            } else {
+                bin.extend_from_slice(&k.to_le_bytes());
+            }
+        }
+        let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
+        root.push(accessor(view, 2 * edges.len(), component, Type::Scalar, None))
+    });
+    root.buffers[buffer.value()].byte_length = USize64::from(bin.len());
+
+    let material = root.push(json::Material {
+        name: Some("harmonic surface".to_string()),
+        // A window of a closed surface is open, and seen from both sides.
+        double_sided: true,
+        pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+            metallic_factor: json::material::StrengthFactor(0.0),
+            roughness_factor: json::material::StrengthFactor(0.6),
+            ..Default::default()
+        },
+        ..Default::default()
+    });
+    let mut primitives = vec![json::mesh::Primitive {
+        attributes,
+        extensions: None,
+        extras: Default::default(),
+        indices: Some(indices),
+        material: Some(material),
+        mode: Valid(json::mesh::Mode::Triangles),
+        targets: None,
+    }];
+    if let Some(edge_indices) = edge_indices {
+        let dark = root.push(json::Material {
+            name: Some("edges".to_string()),
+            pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+                base_color_factor: json::material::PbrBaseColorFactor([0.02, 0.02, 0.02, 1.0]),
+                metallic_factor: json::material::StrengthFactor(0.0),
+                ..Default::default()
+            },
+            ..Default::default()
+        });
+        primitives.push(json::mesh::Primitive {
+            attributes: BTreeMap::from([(
+                Valid(json::mesh::Semantic::Positions),
+                positions_accessor,
+            )]),
+            extensions: None,
+            extras: Default::default(),
+            indices: Some(edge_indices),
+            material: Some(dark),
+            mode: Valid(json::mesh::Mode::Lines),
+            targets: None,
+        });
+    }
+    let mesh_index = root.push(json::Mesh {
+        extensions: None,
+        extras: Default::default(),
+        name: Some("harmonic surface".to_string()),
+        primitives,
+        weights: None,
+    });
+    let node = root.push(json::Node {
+        mesh: Some(mesh_index),
+        name: Some("harmonic surface".to_string()),
+        ..Default::default()
+    });
+    let scene = root.push(json::Scene {
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        nodes: vec![node],
+    });
+    root.scene = Some(scene);
+    Encoded { root, bin }
+}
+
+/// Writes `mesh` as glTF 2.0 JSON to `gltf` and its binary buffer to `bin`; `bin_uri` is the
+/// buffer's URI as it goes into the JSON, relative to the JSON file and already
+/// percent-encoded (e.g. `surface.bin`). [`super::save`] picks the name and encodes it.
+///
+/// # Errors
+///
+/// [`super::FileError::Io`] when writing fails.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{DVec2, DVec3};
+/// use hi_mesh::{TriangleMesh, export};
+///
+/// // One unit square of two triangles, facing +z.
+/// let p = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+/// let uv = p.iter().map(|q| q.truncate()).collect::<Vec<DVec2>>();
+/// let mesh = TriangleMesh::try_new(p, vec![DVec3::Z; 4], uv, vec![[0, 1, 2], [0, 2, 3]])?;
+/// let (mut json, mut bin) = (Vec::new(), Vec::new());
+/// export::write_gltf(&mesh, &mut json, &mut bin, "square.bin")?;
+/// let text = String::from_utf8(json).unwrap();
+/// assert!(text.contains("\"uri\": \"square.bin\"") && text.contains("\"generator\": \"harmonic"));
+/// // Positions, normals, UVs (12 + 12 + 8 bytes per vertex), six u16 indices.
+/// assert_eq!(bin.len(), 4 * 32 + 12);
+/// # Ok::<(), hi_mesh::Error>(())
+/// ```
+pub fn write_gltf<W: Write, B: Write>(
+    mesh: &TriangleMesh,
+    mut gltf: W,
+    mut bin: B,
+    bin_uri: &str,
+) -> Result<(), Error> {
+    let Encoded { root, bin: data } = encode(mesh, &[], Some(bin_uri.to_string()));
+    let text = json::serialize::to_vec_pretty(&root)
+        .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
+    gltf.write_all(&text).and_then(|()| gltf.flush()).map_err(|e| io_error(&e, None))?;
+    bin.write_all(&data).and_then(|()| bin.flush()).map_err(|e| io_error(&e, None))
+}
+
+/// Writes `mesh` as binary glTF 2.0 (`.glb`: a JSON chunk and a BIN chunk).
+///
+/// # Errors
+///
+/// [`Error::InvalidCount`] if the file would exceed the 4 GiB limit of the format;
+/// [`super::FileError::Io`] when writing fails.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{DVec2, DVec3};
+/// use hi_mesh::{TriangleMesh, export};
+///
+/// // One unit square of two triangles, facing +z.
+/// let p = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+/// let uv = p.iter().map(|q| q.truncate()).collect::<Vec<DVec2>>();
+/// let mesh = TriangleMesh::try_new(p, vec![DVec3::Z; 4], uv, vec![[0, 1, 2], [0, 2, 3]])?;
+/// let mut glb = Vec::new();
+/// export::write_glb(&mesh, &mut glb)?;
+/// assert_eq!(&glb[..4], b"glTF");
+/// assert_eq!(u32::from_le_bytes(glb[8..12].try_into().unwrap()) as usize, glb.len());
+/// # Ok::<(), hi_mesh::Error>(())
+/// ```
+pub fn write_glb<W: Write>(mesh: &TriangleMesh, writer: W) -> Result<(), Error> {
+    write_glb_with_edges(mesh, &[], writer)
+}
+
+/// Writes `mesh` as binary glTF 2.0 as [`write_glb`] does, with `edges` (pairs of vertex
+/// indices: a polygon mesh's edges, say, which its triangles do not show) as a second
+/// primitive of the mesh, of mode `LINES`, on the same positions, in a dark material; glTF
+/// viewers draw them over the surface. No edges: the file of [`write_glb`].
+///
+/// # Errors
+///
+/// [`Error::InvalidCount`] for an edge's vertex index out of range; as [`write_glb`].
+///
+/// # Examples
+///
+/// ```
+/// use glam::{DVec2, DVec3};
+/// use hi_mesh::{TriangleMesh, export};
+///
+/// // One unit square of two triangles, facing +z.
+/// let p = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+/// let uv = p.iter().map(|q| q.truncate()).collect::<Vec<DVec2>>();
+/// let mesh = TriangleMesh::try_new(p, vec![DVec3::Z; 4], uv, vec![[0, 1, 2], [0, 2, 3]])?;
+/// let mut glb = Vec::new();
+/// export::write_glb_with_edges(&mesh, &[[0, 1], [1, 2]], &mut glb)?;
+/// let (doc, _, _) = gltf::import_slice(&glb).unwrap();
+/// let modes: Vec<_> = doc.meshes().next().unwrap().primitives().map(|p| p.mode()).collect();
+/// assert_eq!(modes, [gltf::mesh::Mode::Triangles, gltf::mesh::Mode::Lines]);
+/// assert!(export::write_glb_with_edges(&mesh, &[[0, 999]], Vec::new()).is_err());
+/// # Ok::<(), hi_mesh::Error>(())
+/// ```
+pub fn write_glb_with_edges<W: Write>(
+    mesh: &TriangleMesh,
+    edges: &[[u32; 2]],
+    mut writer: W,
+) -> Result<(), Error> {
+    if let Some(&bad) = edges.iter().flatten().find(|&&k| k as usize >= mesh.n_vertices()) {
+        return Err(Error::InvalidCount {
+            what: "edge vertex index",
+            value: bad as usize,
+            expected: "less than the number of vertices",
+        });
+    }
+    let Encoded { root, bin } = encode(mesh, edges, None);
+    let text = json::serialize::to_vec(&root)
+        .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
+    // Header, JSON chunk and BIN chunk, each chunk padded to 4 bytes.
+    let length = 12 + 8 + text.len().next_multiple_of(4) + 8 + bin.len();
+    let length = u32::try_from(length).map_err(|_| Error::InvalidCount {
+        what: "size of the GLB file in bytes",
+        value: length,
+        expected: "less than 2^32",
+    })?;
+    let glb = ::gltf::binary::Glb {
+        header: ::gltf::binary::Header { magic: *b"glTF", version: 2, length },
+        json: Cow::Owned(text),
+        bin: Some(Cow::Borrowed(&bin)),
+    };
+    glb.to_writer(&mut writer).map_err(|e| gltf_error(e, None))?;
+    writer.flush().map_err(|e| io_error(&e, None))
+}
+
+fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
+    match e {
+        ::gltf::Error::Io(e) => io_error(&e, path),
+        other => format_error(format!("glTF: {other}"), path),
+    }
+}
+
+/// The meshes a glTF document draws, each with its node's world transform (glTF 2.0 §3.5.3:
+/// the product of the transforms from the root down), depth first in document order: the
+/// default scene's, or every scene's when none is the default, or every mesh untransformed
+/// when the document has no scene at all. Shared by the mesh loader and the scan reader of
+/// `hi-geomimage`.
+///
+/// # Errors
+///
+/// A message when the node hierarchy is deeper than 1024 (the glTF validator rejects cycles;
+/// the cap guards the stack all the same).
+///
+/// # Examples
+///
+/// ```
+/// let gltf = gltf::Gltf::from_slice(br#"{"asset":{"version":"2.0"},"scene":0,
+///     "scenes":[{"nodes":[0]}],"nodes":[{"translation":[1,2,3],"children":[1]},{"mesh":0}],
+///     "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+///     "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",
+///         "min":[0,0,0],"max":[0,0,0]}],
+///     "bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36}]}"#)
+///     .unwrap();
+/// let placed = hi_mesh::export::placed_meshes(&gltf.document).unwrap();
+/// assert_eq!(placed.len(), 1);
+/// assert_eq!(placed[0].1.w_axis.truncate(), glam::DVec3::new(1.0, 2.0, 3.0));
+/// ```
+pub fn placed_meshes(
+    document: &::gltf::Document,
+) -> Result<Vec<(::gltf::Mesh<'_>, DMat4)>, String> {
+    let mut instances = Vec::new();
+    let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
+        Some(s) => vec![s],
+        None => document.scenes().collect(),
+    };
+    if scenes.is_empty() {
+        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
+    }
+    for scene in scenes {
+        // Depth first in document order: the stack holds siblings last first.
+        let mut stack: Vec<(::gltf::Node<'_>, DMat4, usize)> =
+            scene.nodes().map(|n| (n, DMat4::IDENTITY, 0)).collect();
+        stack.reverse();
+        while let Some((node, parent, depth)) = stack.pop() {
+            if depth > 1024 {
+                return Err("the node hierarchy is more than 1024 deep".to_owned());
+            }
+            let local = node.transform().matrix().map(|c| c.map(f64::from));
+            let world = parent * DMat4::from_cols_array_2d(&local);
+            if let Some(mesh) = node.mesh() {
+                instances.push((mesh, world));
+            }
+            let first = stack.len();
+            stack.extend(node.children().map(|c| (c, world, depth + 1)));
+            stack[first..].reverse();
+        }
+    }
+    Ok(instances)
+}
+
+/// The triangles of a primitive drawn in `mode` from `indices` (glTF 2.0 §3.7.2.1):
+/// `TRIANGLES` by threes (a remainder is left out), `TRIANGLE_STRIP` with every other
+/// triangle's first two corners swapped so that all wind alike, `TRIANGLE_FAN` around the first
+/// index; `None` for points and lines.
+///
+/// # Examples
+///
+/// ```
+/// use gltf::mesh::Mode;
+/// use hi_mesh::export::primitive_triangles;
+///
+/// let strip = primitive_triangles(Mode::TriangleStrip, &[0, 1, 2, 3]).unwrap();
+/// assert_eq!(strip, [[0, 1, 2], [2, 1, 3]]);
+/// assert_eq!(primitive_triangles(Mode::TriangleFan, &[0, 1, 2, 3]).unwrap(), [[0, 1, 2], [0, 2, 3]]);
+/// assert_eq!(primitive_triangles(Mode::Lines, &[0, 1]), None);
+/// ```
+#[must_use]
+pub fn primitive_triangles(mode: ::gltf::mesh::Mode, indices: &[u32]) -> Option<Vec<[u32; 3]>> {
+    use ::gltf::mesh::Mode;
+    Some(match mode {
+        Mode::Triangles => indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
+        Mode::TriangleStrip => indices
+            .windows(3)
+            .enumerate()
+            .map(|(k, t)| if k % 2 == 0 { [t[0], t[1], t[2]] } else { [t[1], t[0], t[2]] })
+            .collect(),
+        Mode::TriangleFan => match indices.split_first() {
+            Some((&first, rest)) => rest.windows(2).map(|t| [first, t[0], t[1]]).collect(),
+            None => Vec::new(),
+        },
+        Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip => return None,
+    })
+}
+
+/// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives (`TRIANGLES`,
+/// `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh the scene places, concatenated in world space
+/// (points and lines, such as the edges of [`write_glb_with_edges`], are left out).
+///
+/// The scene is the default one, or every scene when there is none (a file with no scene at
+/// all has its meshes read as they are). Each node's world transform is applied to its mesh's
+/// positions, and its inverse transpose to the normals (renormalised); a transform that mirrors
+/// (negative determinant) reverses the triangles' winding, as the glTF 2.0 specification says
+/// (§3.7.4). A primitive without `NORMAL` gets flat normals, as the specification asks of a client
+/// (§3.7.2.1): each triangle its own normal, its corners not shared with its neighbours. A
+/// primitive without `TEXCOORD_0` gets UV (0, 0). Vertex colours are kept when every primitive
+/// has them.
+pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
+    let (document, buffers, _images) =
+        ::gltf::import(path).map_err(|e| gltf_error(e, Some(path)))?;
+    let (mut positions, mut normals, mut uvs, mut colors, mut triangles) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut all_colored = true;
+    let instances = placed_meshes(&document).map_err(|e| format_error(e, Some(path)))?;
+    for (mesh, world) in &instances {
+        let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
+        let mirrors = world.determinant() < 0.0;
+        for primitive in mesh.primitives() {
+            use ::gltf::mesh::Mode;
+            // Points and lines (an edge overlay, as `write_glb_with_edges` writes) bound no
+            // surface: the triangle mesh is the other primitives.
+            if !matches!(
+                primitive.mode(),
+                Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+            ) {
+                continue;
+            }
+            let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+            let p: Vec<DVec3> = reader
+                .read_positions()
+                .ok_or_else(|| format_error("a primitive has no POSITION", None))?
+                .map(|p| world.transform_point3(Vec3::from(p).as_dvec3()))
+                .collect();
+            let n = p.len();
+            let nrm: Option<Vec<DVec3>> = reader.read_normals().map(|it| {
+                it.map(|v| {
+                    let n = Vec3::from(v).as_dvec3();
+                    // Untransformed normals are kept bit for bit (a written file reads back
+                    // exactly); transformed ones are unit again.
+                    if *world == DMat4::IDENTITY {
+                        n
+                    } else {
+                        (normal_matrix * n).normalize_or(DVec3::Z)
+                    }
+                })
+                .collect()
+            });
+            let uv: Vec<DVec2> = match reader.read_tex_coords(0) {
+                Some(t) => t.into_f32().map(|t| glam::Vec2::from(t).as_dvec2()).collect(),
+                None => vec![DVec2::ZERO; n],
+            };
+            let col: Option<Vec<[f32; 3]>> =
+                reader.read_colors(0).map(|c| c.into_rgb_f32().collect());
+            if nrm.as_ref().is_some_and(|v| v.len() != n)
+                || uv.len() != n
+                || col.as_ref().is_some_and(|c| c.len() != n)
+            {
+                return Err(format_error("attribute counts differ within a primitive", None));
+            }
+            let idx: Vec<u32> = match reader.read_indices() {
+                Some(i) => i.into_u32().collect(),
+                None => (0..u32::try_from(n)
+                    .map_err(|_| format_error("too many vertices", None))?)
+                    .collect(),
+            };
+            if idx.iter().any(|&k| k as usize >= n) {
+                return Err(format_error("an index is beyond the primitive's vertices", None));
+            }
+            if primitive.mode() == Mode::Triangles && !idx.len().is_multiple_of(3) {
+                return Err(format_error("index count is not a multiple of 3", None));
+            }
+            let mut tris = primitive_triangles(primitive.mode(), &idx).unwrap_or_default();
+            if mirrors {
+                tris.iter_mut().for_each(|t| t.swap(1, 2));
+            }
+            let base = u32::try_from(positions.len())
+                .map_err(|_| format_error("too many vertices", None))?;
+            match (nrm, &col) {
+                (Some(nrm), _) => {
+                    positions.extend(p);
+                    normals.extend(nrm);
+                    uvs.extend(uv);
+                    match col {
+                        Some(c) => colors.extend(c),
+                        None => all_colored = false,
+                    }
+                    triangles.extend(tris.iter().map(|t| t.map(|k| k.saturating_add(base))));
+                }
+                (None, _) => {
+                    // Flat normals: every corner its own vertex with its triangle's normal.
+                    for (f, t) in tris.iter().enumerate() {
+                        let [a, b, c] = t.map(|k| p[k as usize]);
+                        let normal = (b - a).cross(c - a).normalize_or(DVec3::Z);
+                        for &k in t {
+                            positions.push(p[k as usize]);
+                            normals.push(normal);
+                            uvs.push(uv[k as usize]);
+                            if let Some(c) = &col {
+                                colors.push(c[k as usize]);
+                            }
+                        }
+                        let first = base.saturating_add(u32::try_from(3 * f).unwrap_or(u32::MAX));
+                        triangles.push([first, first.saturating_add(1), first.saturating_add(2)]);
+                    }
+                    if col.is_none() {
+                        all_colored = false;
+                    }
+                }
+            }
+        }
+    }
+    if triangles.is_empty() {
+        return Err(format_error("glTF file has no triangles", None));
+    }
+    let mesh = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
+    if all_colored && colors.len() == mesh.n_vertices() {
+        mesh.try_with_colors(colors)
+    } else {
+        Ok(mesh)
+    }
+}
