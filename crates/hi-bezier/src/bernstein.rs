@@ -75,6 +75,48 @@ impl Bernstein {
         all_values(self.n, t, out);
     }
 
+    /// All of Bⁿ₀(t), …, Bⁿₙ(t) and their first derivatives (eq. 2.3: n·(Bⁿ⁻¹ᵢ₋₁ − Bⁿ⁻¹ᵢ)) in
+    /// fixed arrays of size `N`, entries above n zero, without allocating: the kernel of a
+    /// patch evaluation inside a ray tracer. `None` when n ≥ `N`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_bezier::Bernstein;
+    ///
+    /// let (b, db) = Bernstein::new(3).values_with_derivatives::<8>(0.25).unwrap();
+    /// assert!((b[1] - 3.0 * 0.25 * 0.75 * 0.75).abs() < 1e-16);
+    /// assert!((db[3] - 3.0 * 0.25 * 0.25).abs() < 1e-16); // d/dt t³
+    /// assert_eq!(b[4..], [0.0; 4]);
+    /// assert!(Bernstein::new(8).values_with_derivatives::<8>(0.5).is_none());
+    /// ```
+    #[must_use]
+    pub fn values_with_derivatives<const N: usize>(&self, t: f64) -> Option<([f64; N], [f64; N])> {
+        let n = self.n;
+        if n >= N {
+            return None;
+        }
+        let (mut b, mut db) = ([0.0; N], [0.0; N]);
+        let s = 1.0 - t;
+        b[0] = 1.0;
+        for k in 1..=n {
+            if k == n {
+                // The derivative from the values of degree n − 1: n·(Bᵢ₋₁ − Bᵢ).
+                for i in 0..=n {
+                    let left = if i > 0 { b[i - 1] } else { 0.0 };
+                    let right = if i < n { b[i] } else { 0.0 };
+                    db[i] = n as f64 * (left - right);
+                }
+            }
+            b[k] = t * b[k - 1];
+            for i in (1..k).rev() {
+                b[i] = s * b[i] + t * b[i - 1];
+            }
+            b[0] *= s;
+        }
+        Some((b, db))
+    }
+
     /// The derivative of order `order` of Bⁿᵢ at t (order 0 is the value); 0 for i > n or
     /// order > n.
     #[must_use]

@@ -12,7 +12,7 @@ use crate::curve::{
 };
 use crate::error::check_points;
 use crate::flatten::check_tolerance;
-use crate::subdivide::{split_points, subsegment_points};
+use crate::subdivide::{split_points, subsegment_points, subsegment_small};
 use crate::{BezierCurve, ControlPoint, Error};
 
 /// A tensor-product Bézier patch of degree (m, n) with an (m + 1) × (n + 1) control grid xⱼₖ,
@@ -33,7 +33,7 @@ use crate::{BezierCurve, ControlPoint, Error};
 /// assert_eq!((patch.degree_u(), patch.degree_v()), (1, 1));
 /// let p = patch.eval(0.25, 0.5);
 /// assert!((p - DVec3::new(0.25, 0.5, 0.125)).length() < 1e-15); // z = u·v
-/// assert!((patch.eval_partial(0.25, 0.5, 1, 0) - DVec3::new(1.0, 0.0, 0.5)).length() < 1e-15);
+/// assert!((patch.eval_deriv(0.25, 0.5, 1, 0) - DVec3::new(1.0, 0.0, 0.5)).length() < 1e-15);
 /// assert!(patch.normal(0.25, 0.5).is_some());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -146,7 +146,7 @@ impl<P: ControlPoint> BezierPatch<P> {
 
     /// p(u, v) with its first partials (p, ∂p/∂u, ∂p/∂v) in one pass: the rows are reduced
     /// in v to their values and v-derivatives, then both columns in u. Cheaper than three calls
-    /// of [`BezierPatch::eval_partial`].
+    /// of [`BezierPatch::eval_deriv`].
     #[must_use]
     pub fn eval_with_partials(&self, u: f64, v: f64) -> (P, P, P) {
         if self.n_rows <= SMALL {
@@ -230,7 +230,7 @@ impl<P: ControlPoint> BezierPatch<P> {
     ///
     /// Differences the grid (∂p/∂u = m·Σ Bᵐ⁻¹ⱼ(u)Bⁿₖ(v)(xⱼ₊₁,ₖ − xⱼₖ), §4.3) and evaluates.
     #[must_use]
-    pub fn eval_partial(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> P {
+    pub fn eval_deriv(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> P {
         if order_u > self.degree_u() || order_v > self.degree_v() {
             return P::ZERO;
         }
@@ -329,6 +329,47 @@ impl<P: ControlPoint> BezierPatch<P> {
         let rows: Vec<P> =
             self.points.chunks(self.n_cols).flat_map(|r| subsegment_points(r, v0, v1)).collect();
         map_columns(&rows, self.n_rows, self.n_cols, |c| subsegment_points(c, u0, u1))
+    }
+
+    /// The box of the control points of [`BezierPatch::subpatch`] (which holds the piece over
+    /// [u₀, u₁] × [v₀, v₁]), computed with the same arithmetic but without allocating for
+    /// degrees below 16 in both directions.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_bezier::BezierPatch;
+    ///
+    /// let rows = (0..4)
+    ///     .map(|j| (0..3).map(|k| DVec3::new(j as f64, k as f64, (j * k) as f64)).collect())
+    ///     .collect();
+    /// let p = BezierPatch::new(rows);
+    /// let expected = p.subpatch(0.2, 0.7, 0.1, 0.4).control_bounding_box();
+    /// assert_eq!(p.subpatch_bounds(0.2, 0.7, 0.1, 0.4), expected);
+    /// ```
+    #[must_use]
+    pub fn subpatch_bounds(&self, u0: f64, u1: f64, v0: f64, v1: f64) -> Aabb<P> {
+        let (n_rows, n_cols) = (self.n_rows, self.n_cols);
+        if n_rows > SMALL || n_cols > SMALL {
+            return self.subpatch(u0, u1, v0, v1).control_bounding_box();
+        }
+        // Each row cut to [v0, v1], then each column of the result to [u0, u1].
+        let mut rows = [[P::ZERO; SMALL]; SMALL];
+        for (row, r) in rows.iter_mut().zip(self.points.chunks(n_cols)) {
+            subsegment_small(r, v0, v1, &mut row[..n_cols]);
+        }
+        let mut bounds = Aabb::from_point(self.points[0]);
+        let (mut column, mut cut) = ([P::ZERO; SMALL], [P::ZERO; SMALL]);
+        for k in 0..n_cols {
+            for (slot, row) in column.iter_mut().zip(&rows[..n_rows]) {
+                *slot = row[k];
+            }
+            subsegment_small(&column[..n_rows], u0, u1, &mut cut[..n_rows]);
+            let first = if k == 0 { Aabb::from_point(cut[0]) } else { bounds };
+            bounds = cut[..n_rows].iter().fold(first, |b, &p| b.including(p));
+        }
+        bounds
     }
 
     /// The same surface with degree m + `times` in u.
@@ -486,7 +527,7 @@ mod tests {
         assert_eq!(t.control_point(3, 2), Some(23.0));
         assert!((t.eval(0.3, 0.8) - p.eval(0.8, 0.3)).abs() < 1e-13);
         assert_eq!(p.rows()[1], vec![10.0, 11.0, 12.0, 13.0]);
-        assert_eq!(p.eval_partial(0.5, 0.5, 3, 0), 0.0);
+        assert_eq!(p.eval_deriv(0.5, 0.5, 3, 0), 0.0);
     }
 
     #[test]

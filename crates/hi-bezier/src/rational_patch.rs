@@ -134,11 +134,10 @@ impl<P: ControlPoint> RationalBezierPatch<P> {
     /// quotient rule on p = A/W:
     /// p⁽ᵃ'ᵇ⁾ = (A⁽ᵃ'ᵇ⁾ − Σ₍ᵢ,ⱼ₎≠₍₀,₀₎ C(a, i)C(b, j)·W⁽ⁱ'ʲ⁾·p⁽ᵃ⁻ⁱ'ᵇ⁻ʲ⁾) / W.
     #[must_use]
-    pub fn eval_partial(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> P {
+    pub fn eval_deriv(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> P {
         let (a, w) = self.homogeneous();
         let (na, nb) = (order_u + 1, order_v + 1);
-        let wd: Vec<f64> =
-            (0..na * nb).map(|idx| w.eval_partial(u, v, idx / nb, idx % nb)).collect();
+        let wd: Vec<f64> = (0..na * nb).map(|idx| w.eval_deriv(u, v, idx / nb, idx % nb)).collect();
         let mut table = vec![P::ZERO; na * nb];
         for i in 0..na {
             for j in 0..nb {
@@ -146,7 +145,7 @@ impl<P: ControlPoint> RationalBezierPatch<P> {
                     table[0] = self.eval(u, v);
                     continue;
                 }
-                let mut num = a.eval_partial(u, v, i, j);
+                let mut num = a.eval_deriv(u, v, i, j);
                 for p in 0..=i {
                     for q in 0..=j {
                         if p == 0 && q == 0 {
@@ -215,7 +214,7 @@ impl RationalBezierPatch<DVec3> {
     /// [`BezierPatch::normal`]).
     #[must_use]
     pub fn normal(&self, u: f64, v: f64) -> Option<DVec3> {
-        unit_normal(self.eval_partial(u, v, 1, 0), self.eval_partial(u, v, 0, 1))
+        unit_normal(self.eval_deriv(u, v, 1, 0), self.eval_deriv(u, v, 0, 1))
     }
 
     /// The surface (r(u)·x(v), r(u)·y(v), z(u)) swept by the profile u ↦ (r(u), z(u)) (radius
@@ -287,7 +286,7 @@ mod tests {
         for (u, v) in [(0.1, 0.2), (0.5, 0.9), (1.0, 0.0)] {
             assert!((rat.eval(u, v) - poly.eval(u, v)).length() < 1e-14);
             for (a, b) in [(1, 0), (0, 1), (1, 1), (2, 1)] {
-                let d = rat.eval_partial(u, v, a, b) - poly.eval_partial(u, v, a, b);
+                let d = rat.eval_deriv(u, v, a, b) - poly.eval_deriv(u, v, a, b);
                 assert!(d.length() < 1e-11, "({a}, {b}) at ({u}, {v}): {d}");
             }
         }

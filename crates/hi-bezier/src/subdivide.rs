@@ -3,7 +3,7 @@
 //! curve split at t₀ are Bézier curves of the same degree whose control points are the edges of
 //! de Casteljau's triangle; subsegments [t₀, t₁] come from the blossom.
 
-use crate::curve::lerp;
+use crate::curve::{SMALL, lerp};
 use crate::{BezierCurve, ControlPoint};
 
 impl<P: ControlPoint> BezierCurve<P> {
@@ -84,6 +84,30 @@ pub(crate) fn subsegment_points<P: ControlPoint>(control: &[P], t0: f64, t1: f64
         }
     }
     res
+}
+
+/// The control points of [`subsegment_points`] written into `out` (of the length of
+/// `control`, at most [`SMALL`]) with the same arithmetic, on the stack: no allocation.
+pub(crate) fn subsegment_small<P: ControlPoint>(control: &[P], t0: f64, t1: f64, out: &mut [P]) {
+    let n = control.len() - 1;
+    let mut after_t1 = [P::ZERO; SMALL];
+    after_t1[..=n].copy_from_slice(control);
+    let mut work = [P::ZERO; SMALL];
+    for (i, slot) in out.iter_mut().enumerate().take(n + 1) {
+        let len = n + 1 - i;
+        work[..len].copy_from_slice(&after_t1[..len]);
+        for level in 1..len {
+            for j in 0..len - level {
+                work[j] = lerp(work[j], work[j + 1], t0);
+            }
+        }
+        *slot = work[0];
+        if i < n {
+            for j in 0..len - 1 {
+                after_t1[j] = lerp(after_t1[j], after_t1[j + 1], t1);
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -153,7 +153,7 @@ impl<P: ControlPoint> TriangularPatch<P> {
     /// The partial derivative ∂ᵃ⁺ᵇp/∂uᵃ∂vᵇ (v, respectively u, held fixed; w = 1 − u − v
     /// varies).
     #[must_use]
-    pub fn eval_partial(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> P {
+    pub fn eval_deriv(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> P {
         let mut dirs = vec![(1.0, 0.0); order_u];
         dirs.extend(std::iter::repeat_n((0.0, 1.0), order_v));
         self.eval_mixed(u, v, &dirs)
@@ -240,7 +240,7 @@ impl TriangularPatch<DVec3> {
     /// [`crate::BezierPatch::normal`]).
     #[must_use]
     pub fn normal(&self, u: f64, v: f64) -> Option<DVec3> {
-        unit_normal(self.eval_partial(u, v, 1, 0), self.eval_partial(u, v, 0, 1))
+        unit_normal(self.eval_deriv(u, v, 1, 0), self.eval_deriv(u, v, 0, 1))
     }
 }
 

@@ -73,16 +73,16 @@ fn partials_match_finite_differences() {
         let puv =
             (f(u + h, v + h) - f(u + h, v - h) - f(u - h, v + h) + f(u - h, v - h)) / (4.0 * h * h);
         let puu = (f(u + h, v) - 2.0 * f(u, v) + f(u - h, v)) / (h * h);
-        assert!((p.eval_partial(u, v, 1, 0) - pu).length() < 1e-8);
-        assert!((p.eval_partial(u, v, 0, 1) - pv).length() < 1e-8);
-        assert!((p.eval_partial(u, v, 1, 1) - puv).length() < 1e-4);
-        assert!((p.eval_partial(u, v, 2, 0) - puu).length() < 1e-3);
+        assert!((p.eval_deriv(u, v, 1, 0) - pu).length() < 1e-8);
+        assert!((p.eval_deriv(u, v, 0, 1) - pv).length() < 1e-8);
+        assert!((p.eval_deriv(u, v, 1, 1) - puv).length() < 1e-4);
+        assert!((p.eval_deriv(u, v, 2, 0) - puu).length() < 1e-3);
         // Third order in u from second-order partials.
-        let p3 = (p.eval_partial(u + h, v, 2, 1) - p.eval_partial(u - h, v, 2, 1)) / (2.0 * h);
-        assert!((p.eval_partial(u, v, 3, 1) - p3).length() < 1e-6);
+        let p3 = (p.eval_deriv(u + h, v, 2, 1) - p.eval_deriv(u - h, v, 2, 1)) / (2.0 * h);
+        assert!((p.eval_deriv(u, v, 3, 1) - p3).length() < 1e-6);
     }
-    assert_eq!(p.eval_partial(0.5, 0.5, 4, 0), DVec3::ZERO);
-    assert_eq!(p.eval_partial(0.5, 0.5, 0, 5), DVec3::ZERO);
+    assert_eq!(p.eval_deriv(0.5, 0.5, 4, 0), DVec3::ZERO);
+    assert_eq!(p.eval_deriv(0.5, 0.5, 0, 5), DVec3::ZERO);
 }
 
 #[test]
@@ -98,7 +98,7 @@ fn first_partials_are_the_thesis_difference_formulas() {
             pu += d * (m as f64 * bernstein(m - 1, j, u) * bernstein(n, k, v));
         }
     }
-    assert!((p.eval_partial(u, v, 1, 0) - pu).length() < 1e-13);
+    assert!((p.eval_deriv(u, v, 1, 0) - pu).length() < 1e-13);
     assert_eq!(p.deriv_patch(1, 0).degree_u(), 2);
 }
 
@@ -110,8 +110,8 @@ fn one_pass_partials_agree() {
         for (u, v) in params() {
             let (q, pu, pv) = p.eval_with_partials(u, v);
             assert!((q - p.eval(u, v)).length() < 1e-14);
-            assert!((pu - p.eval_partial(u, v, 1, 0)).length() < 1e-12);
-            assert!((pv - p.eval_partial(u, v, 0, 1)).length() < 1e-12);
+            assert!((pu - p.eval_deriv(u, v, 1, 0)).length() < 1e-12);
+            assert!((pv - p.eval_deriv(u, v, 0, 1)).length() < 1e-12);
         }
     }
 }
@@ -180,8 +180,8 @@ fn normals() {
     for &(u, v) in &[(0.2, 0.2), (0.5, 0.9)] {
         let nrm = p.normal(u, v).unwrap();
         assert!((nrm.length() - 1.0).abs() < 1e-15);
-        assert!(nrm.dot(p.eval_partial(u, v, 1, 0)).abs() < 1e-13);
-        assert!(nrm.dot(p.eval_partial(u, v, 0, 1)).abs() < 1e-13);
+        assert!(nrm.dot(p.eval_deriv(u, v, 1, 0)).abs() < 1e-13);
+        assert!(nrm.dot(p.eval_deriv(u, v, 0, 1)).abs() < 1e-13);
     }
 }
 
@@ -212,11 +212,10 @@ fn sphere_octant_is_exact() {
     let (u, v) = (0.4, 0.7);
     let pu = (octant.eval(u + h, v) - octant.eval(u - h, v)) / (2.0 * h);
     let pv = (octant.eval(u, v + h) - octant.eval(u, v - h)) / (2.0 * h);
-    assert!((octant.eval_partial(u, v, 1, 0) - pu).length() < 1e-8);
-    assert!((octant.eval_partial(u, v, 0, 1) - pv).length() < 1e-8);
-    let pv2 =
-        (octant.eval_partial(u, v + h, 1, 1) - octant.eval_partial(u, v - h, 1, 1)) / (2.0 * h);
-    assert!((octant.eval_partial(u, v, 1, 2) - pv2).length() < 1e-6);
+    assert!((octant.eval_deriv(u, v, 1, 0) - pu).length() < 1e-8);
+    assert!((octant.eval_deriv(u, v, 0, 1) - pv).length() < 1e-8);
+    let pv2 = (octant.eval_deriv(u, v + h, 1, 1) - octant.eval_deriv(u, v - h, 1, 1)) / (2.0 * h);
+    assert!((octant.eval_deriv(u, v, 1, 2) - pv2).length() < 1e-6);
 }
 
 #[test]

@@ -58,10 +58,10 @@ fn degree_one_is_the_flat_triangle() {
         let e = u * a + v * b + (1.0 - u - v) * c;
         assert!((tri.eval(u, v) - e).length() < 1e-15);
         assert!((tri.normal(u, v).unwrap() - normal).length() < 1e-15);
-        assert!((tri.eval_partial(u, v, 1, 0) - (a - c)).length() < 1e-15);
-        assert!((tri.eval_partial(u, v, 0, 1) - (b - c)).length() < 1e-15);
+        assert!((tri.eval_deriv(u, v, 1, 0) - (a - c)).length() < 1e-15);
+        assert!((tri.eval_deriv(u, v, 0, 1) - (b - c)).length() < 1e-15);
     }
-    assert_eq!(tri.eval_partial(0.2, 0.2, 1, 1), DVec3::ZERO);
+    assert_eq!(tri.eval_deriv(0.2, 0.2, 1, 1), DVec3::ZERO);
 }
 
 #[test]
@@ -139,8 +139,8 @@ fn blossomed_quadratics_are_reproduced() {
             let g: Vec<[f64; 2]> = fs.iter().map(|f| f.gradient(x)).collect();
             let pu = DVec3::new(g[0][0], g[1][0], g[2][0]);
             let pv = DVec3::new(g[0][1], g[1][1], g[2][1]);
-            assert!((tri.eval_partial(u, v, 1, 0) - pu).length() < 1e-13, "∂u n={n}");
-            assert!((tri.eval_partial(u, v, 0, 1) - pv).length() < 1e-13, "∂v n={n}");
+            assert!((tri.eval_deriv(u, v, 1, 0) - pu).length() < 1e-13, "∂u n={n}");
+            assert!((tri.eval_deriv(u, v, 0, 1) - pv).length() < 1e-13, "∂v n={n}");
             // Along a direction d: ∇f·d; second derivative along d: 2dᵀCd.
             let d = (0.6, -1.1);
             let dd = tri.eval_directional(u, v, d, 1);
@@ -157,7 +157,7 @@ fn blossomed_quadratics_are_reproduced() {
                 fs[1].c[0][1] + fs[1].c[1][0],
                 fs[2].c[0][1] + fs[2].c[1][0],
             );
-            assert!((tri.eval_partial(u, v, 1, 1) - puv).length() < 1e-12);
+            assert!((tri.eval_deriv(u, v, 1, 1) - puv).length() < 1e-12);
         }
     }
 }
@@ -192,7 +192,7 @@ fn directional_derivatives_by_finite_differences() {
             assert!((t.eval_directional(u, v, d, 2) - fd2).length() < 1e-7, "{d:?}");
         }
         let nrm = t.normal(u, v).unwrap();
-        assert!(nrm.dot(t.eval_partial(u, v, 1, 0)).abs() < 1e-14);
+        assert!(nrm.dot(t.eval_deriv(u, v, 1, 0)).abs() < 1e-14);
     }
     assert_eq!(t.eval_directional(0.2, 0.2, (1.0, 0.0), 4), DVec3::ZERO);
 }

@@ -11,7 +11,7 @@ use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Smoothing, fit};
-use hi_raytrace::{BezierObject, BezierSettings, Camera, HarmonicObject, HarmonicSettings, Ray};
+use hi_raytrace::{BezierObject, BezierOptions, Camera, HarmonicObject, HarmonicOptions, Ray};
 
 /// Points on r = 1 + 0.15 sin 5θ cos 3φ (a Fibonacci lattice).
 fn bumpy_scan(n: usize) -> Scan {
@@ -39,13 +39,16 @@ fn bezier_and_interval_agree_on_a_fitted_scan() {
     };
     let surface = fit(&bumpy_scan(30_000), &options, &mut |_| {}).expect("fits").surface;
     let patches = surface
-        .to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4))
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-4),
+        )
         .expect("converts");
     let bound = patches.report.bound;
     assert!(bound <= 1e-4, "the conversion's bound {bound}");
-    let bezier = BezierObject::from_surface(&patches, &BezierSettings::default()).expect("patches");
+    let bezier = BezierObject::from_surface(&patches, &BezierOptions::default()).expect("patches");
     let interval =
-        HarmonicObject::try_new(surface, &HarmonicSettings::default()).expect("the surface");
+        HarmonicObject::try_new(surface, &HarmonicOptions::default()).expect("the surface");
     let camera =
         Camera::try_new(DVec3::new(1.5, -4.0, 2.5), DVec3::ZERO, DVec3::Z, 0.7).expect("camera");
     let n = 32;

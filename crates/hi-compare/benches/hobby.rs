@@ -6,7 +6,7 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec2;
-use hi_compare::hobby::{HobbyConfig, HobbyCurve, Tension};
+use hi_compare::hobby::{HobbyCurve, HobbyOptions, Tension};
 use hi_curve::ParamCurve;
 
 fn points(n: usize) -> Vec<DVec2> {
@@ -20,9 +20,9 @@ fn points(n: usize) -> Vec<DVec2> {
 
 fn hobby(c: &mut Criterion) {
     let configs = [
-        ("closed", HobbyConfig::closed()),
-        ("open", HobbyConfig::open()),
-        ("closed_atleast", HobbyConfig::closed().with_tension(Tension::at_least(1.2))),
+        ("closed", HobbyOptions::closed()),
+        ("open", HobbyOptions::open()),
+        ("closed_atleast", HobbyOptions::closed().with_tension(Tension::at_least(1.2))),
     ];
     let mut group = c.benchmark_group("hobby_setup");
     for n in [8usize, 64, 512, 4096] {
@@ -40,7 +40,7 @@ fn hobby(c: &mut Criterion) {
     let n_evals = 1024;
     group.throughput(Throughput::Elements(n_evals as u64));
     for n in [8usize, 512] {
-        let curve = HobbyCurve::new(points(n), &HobbyConfig::closed());
+        let curve = HobbyCurve::new(points(n), &HobbyOptions::closed());
         let ts: Vec<f64> = (0..n_evals).map(|i| i as f64 / n_evals as f64).collect();
         group.bench_with_input(BenchmarkId::new("eval", n), &n, |b, _| {
             b.iter(|| ts.iter().map(|&t| curve.eval(black_box(t))).fold(DVec2::ZERO, |a, p| a + p))

@@ -243,10 +243,10 @@ pub fn fairness<C: PlaneCurve + ?Sized>(
 /// ```
 /// use glam::DVec2;
 /// use hi_compare::fairness::bending_energy;
-/// use hi_compare::hobby::{HobbyConfig, HobbyCurve};
+/// use hi_compare::hobby::{HobbyOptions, HobbyCurve};
 ///
 /// // Three collinear points: a straight segment of length 2, no bending.
-/// let line = HobbyCurve::new(vec![DVec2::ZERO, DVec2::X, 2.0 * DVec2::X], &HobbyConfig::open());
+/// let line = HobbyCurve::new(vec![DVec2::ZERO, DVec2::X, 2.0 * DVec2::X], &HobbyOptions::open());
 /// let (energy, length) = bending_energy(&line, 16).unwrap();
 /// assert!(energy.abs() < 1e-20 && (length - 2.0).abs() < 1e-12);
 /// ```

@@ -148,15 +148,15 @@ impl Join {
 /// # Examples
 ///
 /// ```
-/// use hi_compare::hobby::{HobbyConfig, Tension};
+/// use hi_compare::hobby::{HobbyOptions, Tension};
 ///
 /// // z₀{curl 2}..tension atleast 1..z₁..…..{curl 0}zₙ₋₁
-/// let config = HobbyConfig::open().with_curls(2.0, 0.0).with_tension(Tension::at_least(1.0));
+/// let config = HobbyOptions::open().with_curls(2.0, 0.0).with_tension(Tension::at_least(1.0));
 /// assert!(!config.closed);
-/// assert_eq!(HobbyConfig::default(), HobbyConfig::open());
+/// assert_eq!(HobbyOptions::default(), HobbyOptions::open());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
-pub struct HobbyConfig {
+pub struct HobbyOptions {
     /// True for a closed path (`..cycle`); false for an open one.
     pub closed: bool,
     /// The curl γ₀ at the first knot of an open path (eq. 2.15): 1 (the default) makes the end
@@ -172,7 +172,7 @@ pub struct HobbyConfig {
     pub joins: Vec<Join>,
 }
 
-impl HobbyConfig {
+impl HobbyOptions {
     /// An open path `z₀..…..zₙ₋₁` with curl 1 at both ends and tension 1.
     #[must_use]
     pub fn open() -> Self {
@@ -210,7 +210,7 @@ impl HobbyConfig {
     }
 }
 
-impl Default for HobbyConfig {
+impl Default for HobbyOptions {
     fn default() -> Self {
         Self::open()
     }
@@ -247,7 +247,7 @@ pub struct HobbyKnot {
 /// ```
 /// use glam::DVec2;
 /// use hi_curve::ParamCurve;
-/// use hi_compare::hobby::{HobbyConfig, HobbyCurve};
+/// use hi_compare::hobby::{HobbyOptions, HobbyCurve};
 ///
 /// // The irregular pentagon of docs/peers.md §1, closed; METAPOST reports postcontrol 0 as
 /// // (1.0192962739791576, -0.52255030401962921).
@@ -258,13 +258,13 @@ pub struct HobbyKnot {
 ///     DVec2::new(1.0, 5.0),
 ///     DVec2::new(-1.0, 2.0),
 /// ];
-/// let curve = HobbyCurve::try_new(points.clone(), &HobbyConfig::closed()).unwrap();
+/// let curve = HobbyCurve::try_new(points.clone(), &HobbyOptions::closed()).unwrap();
 /// let post = curve.knots()[0].postcontrol;
 /// assert!((post - DVec2::new(1.0192962739791576, -0.52255030401962921)).length() < 1e-14);
 /// for (k, p) in points.iter().enumerate() {
 ///     assert!((curve.eval(k as f64 / 5.0) - *p).length() < 1e-14);
 /// }
-/// assert!(HobbyCurve::try_new(points[..1].to_vec(), &HobbyConfig::open()).is_err());
+/// assert!(HobbyCurve::try_new(points[..1].to_vec(), &HobbyOptions::open()).is_err());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct HobbyCurve {
@@ -286,7 +286,7 @@ impl HobbyCurve {
     /// - [`Error::ParameterOutOfBounds`] for a tension below 3/4 or not finite, or a curl that
     ///   is negative or not finite;
     /// - [`Error::InvalidCount`] if `config.joins` is neither empty nor one per segment.
-    pub fn try_new(points: Vec<DVec2>, config: &HobbyConfig) -> Result<Self, Error> {
+    pub fn try_new(points: Vec<DVec2>, config: &HobbyOptions) -> Result<Self, Error> {
         check_points(&points)?;
         let n = points.len();
         if n < 2 {
@@ -351,7 +351,7 @@ impl HobbyCurve {
     ///
     /// Panics on invalid input; see [`HobbyCurve::try_new`].
     #[must_use]
-    pub fn new(points: Vec<DVec2>, config: &HobbyConfig) -> Self {
+    pub fn new(points: Vec<DVec2>, config: &HobbyOptions) -> Self {
         Self::try_new(points, config).unwrap_or_else(|e| panic!("{e}"))
     }
 
@@ -893,7 +893,7 @@ mod tests {
     fn regular_heptagon_arm_is_rho_times_chord() {
         let points: Vec<DVec2> =
             (0..7).map(|k| DVec2::from_angle(2.0 * PI * k as f64 / 7.0)).collect();
-        let curve = HobbyCurve::new(points, &HobbyConfig::closed());
+        let curve = HobbyCurve::new(points, &HobbyOptions::closed());
         let theta = PI / 7.0;
         let arm = rho(theta, theta) / 3.0 * 2.0 * theta.sin();
         assert!((arm - 0.304_324_632_520_2).abs() < 1e-16, "{arm}");
@@ -916,19 +916,19 @@ mod tests {
     #[test]
     fn rejects_bad_input() {
         let pts = vec![DVec2::ZERO, DVec2::X, DVec2::Y];
-        let bad_tension = HobbyConfig::closed().with_tension(Tension::new(0.5));
+        let bad_tension = HobbyOptions::closed().with_tension(Tension::new(0.5));
         assert!(matches!(
             HobbyCurve::try_new(pts.clone(), &bad_tension),
             Err(Error::ParameterOutOfBounds { name: "tension", .. })
         ));
-        let nan_tension = HobbyConfig::closed().with_tension(Tension::at_least(f64::NAN));
+        let nan_tension = HobbyOptions::closed().with_tension(Tension::at_least(f64::NAN));
         assert!(HobbyCurve::try_new(pts.clone(), &nan_tension).is_err());
-        let bad_curl = HobbyConfig::open().with_curls(-1.0, 1.0);
+        let bad_curl = HobbyOptions::open().with_curls(-1.0, 1.0);
         assert!(matches!(
             HobbyCurve::try_new(pts.clone(), &bad_curl),
             Err(Error::ParameterOutOfBounds { name: "curl", .. })
         ));
-        let joins = HobbyConfig::open().with_joins(vec![Join::default(); 3]);
+        let joins = HobbyOptions::open().with_joins(vec![Join::default(); 3]);
         assert!(matches!(
             HobbyCurve::try_new(pts.clone(), &joins),
             Err(Error::InvalidCount { .. })
@@ -936,25 +936,25 @@ mod tests {
         assert!(
             HobbyCurve::try_new(
                 pts.clone(),
-                &HobbyConfig::closed().with_joins(vec![Join::default(); 3])
+                &HobbyOptions::closed().with_joins(vec![Join::default(); 3])
             )
             .is_ok()
         );
-        assert_eq!(HobbyCurve::try_new(vec![], &HobbyConfig::open()), Err(Error::Empty));
+        assert_eq!(HobbyCurve::try_new(vec![], &HobbyOptions::open()), Err(Error::Empty));
         assert_eq!(
-            HobbyCurve::try_new(vec![DVec2::ZERO, DVec2::NAN], &HobbyConfig::open()),
+            HobbyCurve::try_new(vec![DVec2::ZERO, DVec2::NAN], &HobbyOptions::open()),
             Err(Error::NonFinitePoint { index: 1 })
         );
         // A closed curve's curls are ignored, whatever they are.
         assert!(
-            HobbyCurve::try_new(pts, &HobbyConfig::closed().with_curls(-1.0, f64::NAN)).is_ok()
+            HobbyCurve::try_new(pts, &HobbyOptions::closed().with_curls(-1.0, f64::NAN)).is_ok()
         );
     }
 
     #[test]
     fn coincident_points_give_degenerate_segments() {
         let a = DVec2::new(1.0, 2.0);
-        for config in [HobbyConfig::open(), HobbyConfig::closed()] {
+        for config in [HobbyOptions::open(), HobbyOptions::closed()] {
             let curve = HobbyCurve::new(vec![a, a, a], &config);
             for knot in curve.knots() {
                 assert_eq!((knot.precontrol, knot.postcontrol), (a, a));
@@ -968,7 +968,7 @@ mod tests {
     fn derivatives_match_finite_differences() {
         let pts =
             vec![DVec2::ZERO, DVec2::new(3.0, 1.0), DVec2::new(4.0, 4.0), DVec2::new(1.0, 5.0)];
-        for config in [HobbyConfig::open(), HobbyConfig::closed()] {
+        for config in [HobbyOptions::open(), HobbyOptions::closed()] {
             let curve = HobbyCurve::new(pts.clone(), &config);
             let h = 1e-6;
             for t in [0.05, 0.3, 0.61, 0.9] {

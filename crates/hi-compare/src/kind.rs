@@ -59,7 +59,7 @@ use hi_bezier::{BezierCurve, PiecewiseBezier};
 use super::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
 use super::cardinal::{Closure, HermiteSpline, Tcb};
 use super::corner_cutting::{ChaikinCurve, FourPointCurve};
-use super::hobby::{HobbyConfig, HobbyCurve};
+use super::hobby::{HobbyCurve, HobbyOptions};
 use super::lagrange::LagrangeCurve;
 use crate::check::check_count;
 use crate::check::check_points;
@@ -233,9 +233,9 @@ impl CurveKind {
                 }
                 let plane = points.iter().map(|p| DVec2::new(p.coord(0), p.coord(1))).collect();
                 let config = if self == CurveKind::HobbyClosed {
-                    HobbyConfig::closed()
+                    HobbyOptions::closed()
                 } else {
-                    HobbyConfig::open()
+                    HobbyOptions::open()
                 };
                 Inner::Hobby(HobbyCurve::try_new(plane, &config)?)
             }

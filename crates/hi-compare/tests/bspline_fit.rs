@@ -135,17 +135,15 @@ fn partial_derivatives_match_difference_quotients() {
     let h = 1e-5;
     for (u, v) in [(0.13, 0.4), (0.52, 0.77), (0.9, 0.05)] {
         for (a, b) in [(1, 0), (0, 1), (1, 1), (2, 0), (0, 2), (2, 1)] {
-            let exact = s.eval_partial(u, v, a, b);
+            let exact = s.eval_deriv(u, v, a, b);
             let fd = if a > 0 {
-                (s.eval_partial(u + h, v, a - 1, b) - s.eval_partial(u - h, v, a - 1, b))
-                    / (2.0 * h)
+                (s.eval_deriv(u + h, v, a - 1, b) - s.eval_deriv(u - h, v, a - 1, b)) / (2.0 * h)
             } else {
-                (s.eval_partial(u, v + h, a, b - 1) - s.eval_partial(u, v - h, a, b - 1))
-                    / (2.0 * h)
+                (s.eval_deriv(u, v + h, a, b - 1) - s.eval_deriv(u, v - h, a, b - 1)) / (2.0 * h)
             };
             assert!(exact.distance(fd) < 1e-4 * (1.0 + exact.length()), "({a}, {b}) at ({u}, {v})");
         }
-        assert_eq!(s.eval_partial(u, v, 4, 0), DVec3::ZERO);
+        assert_eq!(s.eval_deriv(u, v, 4, 0), DVec3::ZERO);
     }
 }
 
@@ -160,8 +158,8 @@ fn closed_directions_are_periodic_and_c2_across_the_seam() {
     // Across the seam u = 0: both sides of every derivative up to the second agree.
     let eps = 1e-9;
     for (a, b) in [(0, 0), (1, 0), (2, 0), (1, 1)] {
-        let left = s.eval_partial(1.0 - eps, 0.3, a, b);
-        let right = s.eval_partial(eps, 0.3, a, b);
+        let left = s.eval_deriv(1.0 - eps, 0.3, a, b);
+        let right = s.eval_deriv(eps, 0.3, a, b);
         assert!(left.distance(right) < 1e-6 * (1.0 + left.length()), "order ({a}, {b})");
     }
 }
@@ -310,7 +308,7 @@ fn adini_is_exact_for_translational_and_bilinear_surfaces() {
     let fit = BSplineFit::try_new(slices, &opts).unwrap();
     for (u, v) in [(0.1, 0.9), (0.33, 0.5), (0.77, 0.21)] {
         assert!(fit.surface().eval(u, v).distance(bilinear(u, v)) < 1e-13, "bilinear");
-        assert!(fit.surface().eval_partial(u, v, 1, 1).distance(d) < 1e-12, "twist");
+        assert!(fit.surface().eval_deriv(u, v, 1, 1).distance(d) < 1e-12, "twist");
     }
     for row in fit.surface().adini_twists() {
         for t in row {

@@ -11,7 +11,7 @@ use hi_compare::corner_cutting::ChaikinCurve;
 use hi_compare::fairness::{
     bending_energy, curvature_plot, fairness, monotone_pieces, space_curvature_plot,
 };
-use hi_compare::hobby::{HobbyConfig, HobbyCurve};
+use hi_compare::hobby::{HobbyCurve, HobbyOptions};
 use hi_curve::{HarmonicCurve, ParamCurve};
 
 /// The ellipse (a cos(2πt + φ), b sin(2πt + φ)); a circle when a = b.
@@ -174,7 +174,7 @@ fn piecewise_cubic_energy_matches_segmentwise_quadrature() {
         DVec2::new(1.0, 5.0),
         DVec2::new(-1.0, 2.0),
     ];
-    for config in [HobbyConfig::closed(), HobbyConfig::open()] {
+    for config in [HobbyOptions::closed(), HobbyOptions::open()] {
         let curve = HobbyCurve::new(pentagon.clone(), &config);
         let (energy, length) = segmentwise(&curve);
         // Sample counts that do and do not put samples on the knots.
@@ -200,7 +200,7 @@ fn hobby_heptagon_curvature_has_four_extrema_per_segment() {
     // (1.00087) near a fifth of the way in from each end: 28 monotone pieces. The energy is
     // close to the circle's 2π.
     let points: Vec<DVec2> = (0..7).map(|k| DVec2::from_angle(TAU * k as f64 / 7.0)).collect();
-    let curve = HobbyCurve::new(points.clone(), &HobbyConfig::closed());
+    let curve = HobbyCurve::new(points.clone(), &HobbyOptions::closed());
     let f = fairness(&curve, &points, 7 * 64).unwrap();
     assert_eq!(f.monotone_pieces, 28, "{f:?}");
     assert!((f.bending_energy - TAU).abs() < 1e-3 * TAU, "{f:?}");

@@ -12,7 +12,7 @@ use std::io::Write;
 use std::process::{Command, Stdio};
 
 use glam::DVec2;
-use hi_compare::hobby::{HobbyConfig, HobbyCurve, Join, Tension, rho};
+use hi_compare::hobby::{HobbyCurve, HobbyOptions, Join, Tension, rho};
 use hi_curve::ParamCurve;
 use serde_json::{Value, json};
 
@@ -71,7 +71,7 @@ impl Case {
     }
 
     fn curve(&self) -> HobbyCurve {
-        let config = if self.closed { HobbyConfig::closed() } else { HobbyConfig::open() }
+        let config = if self.closed { HobbyOptions::closed() } else { HobbyOptions::open() }
             .with_curls(self.curls.0, self.curls.1)
             .with_joins(
                 self.joins.iter().map(|&(a, b)| Join::new(tension(a), tension(b))).collect(),
@@ -233,7 +233,7 @@ fn live_metapost_matches() {
 fn regular_heptagon_arms_are_rho_times_chord() {
     // docs/peers.md §1: every control arm of METAPOST's regular heptagon is ρ(π/7, π/7)·chord/3.
     let points: Vec<DVec2> = (0..7).map(|k| DVec2::from_angle(2.0 * PI * k as f64 / 7.0)).collect();
-    let closed = HobbyCurve::new(points.clone(), &HobbyConfig::closed());
+    let closed = HobbyCurve::new(points.clone(), &HobbyOptions::closed());
     let arm = 0.304_324_632_520_2;
     let theta = PI / 7.0;
     assert!((rho(theta, theta) / 3.0 * 2.0 * theta.sin() - arm).abs() < 1e-16);
@@ -244,7 +244,7 @@ fn regular_heptagon_arms_are_rho_times_chord() {
         assert!((knot.postcontrol - knot.point).dot(knot.point).abs() < 1e-15);
     }
     // Open, curl 1 reproduces the arcs: the interior knots are the same as in the closed path.
-    let open = HobbyCurve::new(points, &HobbyConfig::open());
+    let open = HobbyCurve::new(points, &HobbyOptions::open());
     for k in 1..6 {
         let (a, b) = (open.knots()[k], closed.knots()[k]);
         assert!((a.precontrol - b.precontrol).length() < 1e-14, "knot {k}");
@@ -257,7 +257,7 @@ fn square_gives_a_symmetric_near_circle() {
     // Four points on the unit circle: a curve with the square's symmetries, within 0.03% of
     // the circle (the usual cubic approximation of a quarter circle has arm 4(√2 − 1)/3).
     let square = vec![DVec2::X, DVec2::Y, -DVec2::X, -DVec2::Y];
-    let curve = HobbyCurve::new(square, &HobbyConfig::closed());
+    let curve = HobbyCurve::new(square, &HobbyOptions::closed());
     let arm = rho(PI / 4.0, PI / 4.0) / 3.0 * 2f64.sqrt();
     assert!((arm - 4.0 * (2f64.sqrt() - 1.0) / 3.0).abs() < 1e-15, "{arm}");
     for (k, knot) in curve.knots().iter().enumerate() {
@@ -280,7 +280,7 @@ fn collinear_knots_give_a_straight_path() {
     let points: Vec<DVec2> =
         [0.0, 1.0, 3.0, 3.5, 7.0].iter().map(|&s| DVec2::new(1.0, 2.0) * s).collect();
     for tension in [Tension::new(1.0), Tension::new(2.5), Tension::at_least(1.0)] {
-        let config = HobbyConfig::open().with_tension(tension);
+        let config = HobbyOptions::open().with_tension(tension);
         let curve = HobbyCurve::new(points.clone(), &config);
         for knot in curve.knots() {
             for c in [knot.precontrol, knot.postcontrol] {
@@ -306,7 +306,7 @@ fn interpolates_and_converts_to_bezier() {
         DVec2::new(6.0, 6.0),
         DVec2::new(1.0, 4.0),
     ];
-    for config in [HobbyConfig::open(), HobbyConfig::closed()] {
+    for config in [HobbyOptions::open(), HobbyOptions::closed()] {
         let curve = HobbyCurve::new(points.clone(), &config);
         let s = curve.n_segments();
         assert_eq!(s, if config.closed { 5 } else { 4 });

@@ -35,12 +35,58 @@
 //! pieces times Σₖ ‖xₖ‖, as the approximated basis does not sum to one.)
 
 use hi_bezier::{Aabb, BezierCurve, ControlPoint, PiecewiseBezier};
-use hi_interval::{Interval, RootConfig};
+use hi_interval::{Interval, RootOptions};
 
 use crate::{Error, Fourier, HarmonicCurve, Sigma};
 
 /// Samples per piece for the measured deviation (the ends included: `SAMPLES_PER_PIECE + 1`).
 pub const SAMPLES_PER_PIECE: usize = 32;
+
+/// How close a Bézier conversion ([`HarmonicCurve::to_bezier`], and the surfaces' of
+/// `hi-surface`) must stay to the harmonic curve or surface: the bound the Hermite schemes
+/// refine to (the thesis's schemes have a fixed error and only report it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Tolerance {
+    /// A distance, in the units of the points.
+    Absolute(f64),
+    /// A fraction of the diagonal of the points' bounding box.
+    Relative(f64),
+}
+
+/// The tolerance of a conversion unless another is asked for: 10⁻⁴ of the diagonal of the
+/// points' bounding box.
+pub const DEFAULT_TOLERANCE: Tolerance = Tolerance::Relative(1e-4);
+
+impl Tolerance {
+    /// The tolerance as a distance, for points whose bounding box has this diagonal; `None`
+    /// when its value is not a finite positive number.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_curve::bezier::{DEFAULT_TOLERANCE, Tolerance};
+    ///
+    /// assert_eq!(DEFAULT_TOLERANCE.distance(2.0), Some(2e-4));
+    /// assert_eq!(Tolerance::Absolute(1e-6).distance(2.0), Some(1e-6));
+    /// assert_eq!(Tolerance::Absolute(-1.0).distance(2.0), None);
+    /// ```
+    #[must_use]
+    pub fn distance(self, diagonal: f64) -> Option<f64> {
+        let (value, scale) = match self {
+            Tolerance::Absolute(value) => (value, 1.0),
+            Tolerance::Relative(value) => (value, diagonal.max(f64::MIN_POSITIVE)),
+        };
+        (value.is_finite() && value > 0.0).then_some(value * scale)
+    }
+
+    /// The number given, absolute or relative.
+    #[must_use]
+    pub fn value(self) -> f64 {
+        match self {
+            Tolerance::Absolute(value) | Tolerance::Relative(value) => value,
+        }
+    }
+}
 
 /// The most pieces the adaptive Hermite scheme makes before it gives up.
 pub const MAX_PIECES: usize = 1 << 20;
@@ -212,7 +258,7 @@ impl BasisPieces {
     /// The zeros of σ′ in [0, 1), from interval Newton, reduced modulo 1 and sorted; 0 is one.
     fn sigma_prime_zeros(n: usize) -> Result<Vec<f64>, Error> {
         let sigma = Sigma::try_new(n)?;
-        let roots = sigma.deriv_roots(Interval::new(-0.01, 1.01), &RootConfig::default());
+        let roots = sigma.deriv_roots(Interval::new(-0.01, 1.01), &RootOptions::default());
         if !roots.complete {
             return Err(Error::Singular { what: "the zeros of σ′ (the root search hit a cap)" });
         }
@@ -584,8 +630,9 @@ fn piece_bound<P: ControlPoint>(f: &Fourier<P>, scheme: BezierScheme, t0: f64, t
 impl<P: ControlPoint> HarmonicCurve<P> {
     /// The curve as Bézier pieces by `scheme` (§5.7), with the deviation measured on a dense
     /// sample and bounded by interval arithmetic. `tolerance` is the largest deviation the
-    /// Hermite scheme may leave (default: 1e-4 of the diagonal of the points' bounding box); the
-    /// thesis schemes have a fixed number of pieces and only report theirs.
+    /// Hermite scheme may leave, absolute or relative to the diagonal of the points' bounding
+    /// box ([`DEFAULT_TOLERANCE`]: 10⁻⁴ of it); the thesis schemes have a fixed number of
+    /// pieces and only report theirs.
     ///
     /// # Errors
     ///
@@ -599,15 +646,16 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     /// ```
     /// use glam::DVec2;
     /// use hi_curve::HarmonicCurve;
-    /// use hi_curve::bezier::{BezierScheme, HermiteDegree};
+    /// use hi_curve::bezier::{BezierScheme, DEFAULT_TOLERANCE, HermiteDegree, Tolerance};
     ///
     /// let square = vec![DVec2::new(1.0, 0.0), DVec2::Y, DVec2::new(-1.0, 0.0), -DVec2::Y];
     /// let curve = HarmonicCurve::new(square);
-    /// let c1 = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-6))?;
+    /// let cubic = BezierScheme::Hermite(HermiteDegree::Cubic);
+    /// let c1 = curve.to_bezier(cubic, Tolerance::Absolute(1e-6))?;
     /// assert!(c1.report.bound <= 1e-6 && c1.report.max_deviation <= c1.report.bound);
     /// assert!(c1.report.max_tangent_jump < 1e-9);
     /// // The thesis's cubic scheme: n pieces, C0, through the points.
-    /// let thesis = curve.to_bezier(BezierScheme::ThesisCubic, None)?;
+    /// let thesis = curve.to_bezier(BezierScheme::ThesisCubic, DEFAULT_TOLERANCE)?;
     /// assert_eq!(thesis.report.pieces, 4);
     /// assert!((thesis.spline.eval(0.25) - DVec2::Y).length() < 1e-15);
     /// # Ok::<(), hi_curve::Error>(())
@@ -615,21 +663,18 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     pub fn to_bezier(
         &self,
         scheme: BezierScheme,
-        tolerance: Option<f64>,
+        tolerance: Tolerance,
     ) -> Result<CurveBezier<P>, Error> {
-        let tolerance = match tolerance {
-            None => 1e-4 * bounding_diagonal(self.points()).max(f64::MIN_POSITIVE),
-            Some(t) if !t.is_finite() => {
-                return Err(Error::NonFiniteParameter { name: "tolerance", value: t });
-            }
-            Some(t) if t <= 0.0 => {
-                return Err(Error::ParameterOutOfBounds {
-                    name: "tolerance",
-                    value: t,
-                    expected: "a positive number",
-                });
-            }
-            Some(t) => t,
+        let value = tolerance.value();
+        if !value.is_finite() {
+            return Err(Error::NonFiniteParameter { name: "tolerance", value });
+        }
+        let Some(tolerance) = tolerance.distance(bounding_diagonal(self.points())) else {
+            return Err(Error::ParameterOutOfBounds {
+                name: "tolerance",
+                value,
+                expected: "a positive number",
+            });
         };
         let n = self.n();
         let fourier = self.fourier();

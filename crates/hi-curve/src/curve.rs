@@ -104,12 +104,6 @@ impl<P: ControlPoint> HarmonicCurve<P> {
         res
     }
 
-    /// X(t) by the spectral sum a₀ + Σⱼ (aⱼ cos 2πjt + bⱼ sin 2πjt), O(n/2).
-    #[must_use]
-    pub fn eval_spectral(&self, t: f64) -> P {
-        self.fourier.eval(t)
-    }
-
     /// The derivative X⁽ᵖ⁾(t) of any order, from the spectrum, O(n/2).
     #[must_use]
     pub fn eval_deriv(&self, t: f64, order: usize) -> P {
@@ -142,17 +136,6 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     pub fn sample_uniform_deriv(&self, n_samples: usize, order: usize) -> Result<Vec<P>, Error> {
         check_count("number of samples", n_samples)?;
         Ok(self.fourier.sample_uniform_deriv(n_samples, order))
-    }
-
-    /// X(l/N) for l = 0, …, N−1 by the thesis's direct sum: O(n·N). For comparison with
-    /// [`HarmonicCurve::sample_uniform`]; the results agree to about 1e-15 relative.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidCount`] unless 1 ≤ N ≤ 2²⁸.
-    pub fn sample_uniform_direct(&self, n_samples: usize) -> Result<Vec<P>, Error> {
-        check_count("number of samples", n_samples)?;
-        Ok((0..n_samples).map(|l| self.eval(l as f64 / n_samples as f64)).collect())
     }
 
     /// Length of the closed curve over one period, to an absolute `accuracy`

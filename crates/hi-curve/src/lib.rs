@@ -61,6 +61,7 @@ mod fourier;
 mod nonuniform;
 mod point;
 mod resample;
+pub mod testing;
 mod trig;
 mod trigonometric;
 

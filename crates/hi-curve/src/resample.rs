@@ -137,19 +137,6 @@ impl<P: ControlPoint> HarmonicCurve<P> {
         (0..=levels).map(|l| Ok(self.resample(self.n() << l)?.0.points().to_vec())).collect()
     }
 
-    /// One step of §5.2 by the thesis's direct formula, O(n²): the 2n points with
-    /// x_{2i} = xᵢ and x_{2i+1} = Σⱼ σⱼ((2i+1)/(2n))·xⱼ.
-    #[must_use]
-    pub fn subdivide_step_direct(&self) -> Vec<P> {
-        let n = self.n();
-        let mut out = Vec::with_capacity(2 * n);
-        for (i, p) in self.points().iter().enumerate() {
-            out.push(*p);
-            out.push(self.eval((2 * i + 1) as f64 / (2 * n) as f64));
-        }
-        out
-    }
-
     fn subdivided_len(&self, levels: u32) -> Result<usize, Error> {
         let too_many = Error::InvalidCount {
             what: "subdivision levels",

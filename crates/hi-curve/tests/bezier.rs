@@ -179,8 +179,9 @@ fn the_thesis_quintic_is_far_closer_than_the_cubic() {
 fn the_thesis_quintic_is_smooth_and_its_pieces_are_not_slivers() {
     for n in [3usize, 4, 5, 6, 9, 16] {
         let points = random_points(40 + n as u64, n);
-        let b =
-            HarmonicCurve::new(points).to_bezier(BezierScheme::ThesisQuintic, None).expect("n ≥ 3");
+        let b = HarmonicCurve::new(points)
+            .to_bezier(BezierScheme::ThesisQuintic, hi_curve::bezier::DEFAULT_TOLERANCE)
+            .expect("n ≥ 3");
         // Hermite data of the true σₖ on both sides of every break: C2, so the tangent turns
         // continuously.
         assert!(b.report.max_tangent_jump < 1e-9, "n = {n}: {:?}", b.report);
@@ -227,7 +228,9 @@ fn every_scheme_passes_through_the_data_points() {
             BezierScheme::Hermite(HermiteDegree::Cubic),
             BezierScheme::Hermite(HermiteDegree::Quintic),
         ] {
-            let b = curve.to_bezier(scheme, Some(1e-5)).expect("converts");
+            let b = curve
+                .to_bezier(scheme, hi_curve::bezier::Tolerance::Absolute(1e-5))
+                .expect("converts");
             // The quintic interpolates each σₖ at its own breaks only: within its bound.
             let tol = if scheme == BezierScheme::ThesisQuintic { b.report.bound } else { 1e-13 };
             for (k, &x) in points.iter().enumerate() {
@@ -249,9 +252,15 @@ fn measured_deviation_never_exceeds_the_bound() {
             BezierScheme::Hermite(HermiteDegree::Cubic),
             BezierScheme::Hermite(HermiteDegree::Quintic),
         ] {
-            let r = curve.to_bezier(scheme, Some(1e-4)).expect("converts").report;
+            let r = curve
+                .to_bezier(scheme, hi_curve::bezier::Tolerance::Absolute(1e-4))
+                .expect("converts")
+                .report;
             // A denser check than the report's own sample.
-            let b = curve.to_bezier(scheme, Some(1e-4)).expect("converts").spline;
+            let b = curve
+                .to_bezier(scheme, hi_curve::bezier::Tolerance::Absolute(1e-4))
+                .expect("converts")
+                .spline;
             let dense = (0..20_000)
                 .map(|i| {
                     let t = (i as f64 + 0.37) / 20_000.0;
@@ -275,7 +284,12 @@ fn the_hermite_scheme_is_c1_and_meets_the_tolerance() {
     let curve = HarmonicCurve::new(random_points(7, 9));
     for tol in [1e-2, 1e-4, 1e-7] {
         for degree in [HermiteDegree::Cubic, HermiteDegree::Quintic] {
-            let b = curve.to_bezier(BezierScheme::Hermite(degree), Some(tol)).expect("converts");
+            let b = curve
+                .to_bezier(
+                    BezierScheme::Hermite(degree),
+                    hi_curve::bezier::Tolerance::Absolute(tol),
+                )
+                .expect("converts");
             assert!(b.report.bound <= tol, "{degree:?} tol {tol}: bound {:e}", b.report.bound);
             assert!(b.report.max_tangent_jump < 1e-9, "{degree:?}: C1");
             // The derivative on both sides of every join is the curve's own.
@@ -286,10 +300,24 @@ fn the_hermite_scheme_is_c1_and_meets_the_tolerance() {
             }
         }
     }
-    let coarse = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-2)).unwrap();
-    let fine = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-7)).unwrap();
-    let quintic =
-        curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Quintic), Some(1e-7)).unwrap();
+    let coarse = curve
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-2),
+        )
+        .unwrap();
+    let fine = curve
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-7),
+        )
+        .unwrap();
+    let quintic = curve
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Quintic),
+            hi_curve::bezier::Tolerance::Absolute(1e-7),
+        )
+        .unwrap();
     assert!(fine.report.pieces > coarse.report.pieces, "a finer tolerance needs more pieces");
     assert!(quintic.report.pieces < fine.report.pieces, "quintic pieces are longer");
 }
@@ -305,7 +333,10 @@ fn the_thesis_cubic_on_a_curve_has_a_c0_plateau_and_a_tangent_jump() {
         })
         .collect();
     let curve = HarmonicCurve::new(points);
-    let r = curve.to_bezier(BezierScheme::ThesisCubic, None).expect("converts").report;
+    let r = curve
+        .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)
+        .expect("converts")
+        .report;
     assert_eq!((r.pieces, r.degree), (7, 3), "n cubic pieces");
     assert!(r.max_tangent_jump > 1e-4, "C0 only: {r:?}");
     // The basis error of docs/math.md §4 (below 7.5e-3 per σₖ) bounds the curve's, as the
@@ -318,9 +349,12 @@ fn the_thesis_cubic_on_a_curve_has_a_c0_plateau_and_a_tangent_jump() {
 fn bad_tolerances_and_counts_are_errors() {
     let curve = HarmonicCurve::new(random_points(1, 5));
     let scheme = BezierScheme::Hermite(HermiteDegree::Cubic);
-    assert!(matches!(curve.to_bezier(scheme, Some(0.0)), Err(Error::ParameterOutOfBounds { .. })));
     assert!(matches!(
-        curve.to_bezier(scheme, Some(f64::NAN)),
+        curve.to_bezier(scheme, hi_curve::bezier::Tolerance::Absolute(0.0)),
+        Err(Error::ParameterOutOfBounds { .. })
+    ));
+    assert!(matches!(
+        curve.to_bezier(scheme, hi_curve::bezier::Tolerance::Absolute(f64::NAN)),
         Err(Error::NonFiniteParameter { .. })
     ));
     assert!(matches!(
@@ -359,7 +393,7 @@ proptest! {
     fn hermite_bounds_hold_on_random_curves(seed in 0u64..1_000_000, n in 2usize..24, exp in 2i32..8) {
         let curve = HarmonicCurve::new(random_points(seed, n));
         let tol = 10f64.powi(-exp);
-        let b = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(tol)).unwrap();
+        let b = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), hi_curve::bezier::Tolerance::Absolute(tol)).unwrap();
         prop_assert!(b.report.bound <= tol);
         prop_assert!(b.report.max_deviation <= b.report.bound);
     }

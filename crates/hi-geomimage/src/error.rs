@@ -75,6 +75,8 @@ pub enum Error {
     },
     /// An error from the surface layer.
     Surface(hi_surface::Error),
+    /// An error from the curve layer (`hi-curve`): a section's harmonic curve.
+    Curve(hi_curve::Error),
     /// An error from the mesh layer (`hi-mesh`): a mesh, a colour map, a mesh file.
     Mesh(hi_mesh::Error),
 }
@@ -105,6 +107,7 @@ impl fmt::Display for Error {
                 100.0 * fraction
             ),
             Self::Surface(e) => write!(f, "{e}"),
+            Self::Curve(e) => write!(f, "{e}"),
             Self::Mesh(e) => write!(f, "{e}"),
         }
     }
@@ -115,6 +118,7 @@ impl std::error::Error for Error {
         match self {
             Self::Scan(e) => Some(e),
             Self::Surface(e) => Some(e),
+            Self::Curve(e) => Some(e),
             Self::Mesh(e) => Some(e),
             _ => None,
         }
@@ -136,5 +140,11 @@ impl From<hi_surface::Error> for Error {
 impl From<hi_mesh::Error> for Error {
     fn from(e: hi_mesh::Error) -> Self {
         Self::Mesh(e)
+    }
+}
+
+impl From<hi_curve::Error> for Error {
+    fn from(e: hi_curve::Error) -> Self {
+        Self::Curve(e)
     }
 }

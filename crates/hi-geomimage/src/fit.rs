@@ -346,8 +346,6 @@ pub struct FitReport {
     pub dropped_points: usize,
     /// The image size (rows, columns).
     pub image_size: (usize, usize),
-    /// The stages, in order, with their times.
-    pub stages: Vec<Stage>,
     /// The fraction of rays that met several shells: the scan is not star-shaped about the
     /// centre there, and the fit follows the outermost shell (ray methods only).
     pub non_star_fraction: f64,
@@ -373,8 +371,8 @@ pub struct FitReport {
     pub hausdorff: Option<Hausdorff>,
 }
 
-/// A fitted surface with its geometry images and report.
-#[derive(Clone, Debug, PartialEq)]
+/// A fitted surface with its geometry images, report and stage times.
+#[derive(Clone, Debug)]
 pub struct Fit {
     /// The harmonic surface; [`Layout::covering_window`] says which u cover the object once.
     pub surface: HarmonicSurface<DVec3>,
@@ -388,8 +386,11 @@ pub struct Fit {
     /// The closed mesh of the surface the error was measured on (and that `hi fit` writes),
     /// when the error was measured by [`ErrorMeasure::Fast`] or [`ErrorMeasure::Exact`].
     pub mesh: Option<LayoutMesh>,
-    /// Stage times, diagnostics and errors.
+    /// Diagnostics and errors: the same for the same input and options.
     pub report: FitReport,
+    /// The stages, in order, with their wall-clock times (which differ from run to run, and
+    /// so are kept out of the report).
+    pub stages: Vec<Stage>,
 }
 
 /// The number of mesh samples per texel along each axis for the mesh of a fitted surface
@@ -711,7 +712,6 @@ pub fn fit(
         image_points,
         dropped_points: scan.dropped_points,
         image_size: (rows, cols),
-        stages,
         non_star_fraction: source.non_star_fraction(),
         hole_fraction: source.hole_fraction(),
         row_points: match &source {
@@ -731,7 +731,7 @@ pub fn fit(
         both_ways,
         hausdorff: both_mesh,
     };
-    Ok(Fit { surface, source, image, layout: options.layout, mesh: fit_mesh, report })
+    Ok(Fit { surface, source, image, layout: options.layout, mesh: fit_mesh, report, stages })
 }
 
 /// What came of trying to parameterise the scan's mesh.

@@ -25,11 +25,11 @@
 //! # Examples
 //!
 //! ```
-//! use hi_interval::{Interval, RootConfig, Verdict, find_roots_1d};
+//! use hi_interval::{Interval, RootOptions, Verdict, find_roots_1d};
 //! // The zeros of sin(3x) on [0.5, 3]: π/3 and 2π/3, each proven unique.
 //! let f = |x: Interval| (x * 3.0).sin();
 //! let df = |x: Interval| (x * 3.0).cos() * 3.0;
-//! let res = find_roots_1d(f, df, Interval::new(0.5, 3.0), &RootConfig::default());
+//! let res = find_roots_1d(f, df, Interval::new(0.5, 3.0), &RootOptions::default());
 //! assert_eq!(res.roots.len(), 2);
 //! for (root, k) in res.roots.iter().zip([1.0, 2.0]) {
 //!     assert_eq!(root.verdict, Verdict::Unique);
@@ -55,7 +55,7 @@ pub use crate::linalg::{
     real_inverse,
 };
 pub use crate::roots::{
-    NewtonOutcome, Root, Root1, RootConfig, Roots, Roots1, Verdict, bisect, bisect_1d, find_roots,
+    NewtonOutcome, Root, Root1, RootOptions, Roots, Roots1, Verdict, bisect, bisect_1d, find_roots,
     find_roots_1d, interval_newton, krawczyk,
 };
 pub use crate::scalar::Scalar;

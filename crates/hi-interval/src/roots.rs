@@ -11,7 +11,7 @@
 //! to which we add one condition: a kept Yₙ₋₁ must also give rₙ ≤ 1/2, or the iteration only
 //! converges linearly at the rate rₙ (see `KEEP_BELOW`).
 //!
-//! Every search is bounded by [`RootConfig::max_iterations`] and [`RootConfig::max_boxes`], so it
+//! Every search is bounded by [`RootOptions::max_iterations`] and [`RootOptions::max_boxes`], so it
 //! always stops; a search cut short says so with `complete = false`, and nothing it found is
 //! lost: boxes not yet examined are returned with [`Verdict::Unknown`].
 //!
@@ -24,7 +24,7 @@ use crate::linalg::{IntervalMatrix, hull, intersection, max_width, midpoint, rea
 
 /// Tolerances and caps of the root finders.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RootConfig {
+pub struct RootOptions {
     /// Target width of the enclosures: bisection stops splitting a box whose widest side is at
     /// most this (§5.6: ε), and interval Newton iterates until its box is this narrow.
     pub tolerance: f64,
@@ -38,7 +38,7 @@ pub struct RootConfig {
     pub max_boxes: usize,
 }
 
-impl Default for RootConfig {
+impl Default for RootOptions {
     /// `tolerance = 1e-10`, `newton_width = 1e-6`, `max_iterations = 60`, `max_boxes = 200_000`.
     fn default() -> Self {
         Self { tolerance: 1e-10, newton_width: 1e-6, max_iterations: 60, max_boxes: 200_000 }
@@ -166,7 +166,7 @@ fn contraction(jacobian: &IntervalMatrix, precond: &[Vec<f64>]) -> f64 {
 /// # Examples
 ///
 /// ```
-/// use hi_interval::{Interval, IntervalMatrix, RootConfig, Verdict, interval_newton};
+/// use hi_interval::{Interval, IntervalMatrix, RootOptions, Verdict, interval_newton};
 /// // The unit circle meets the line x = y at (√½, √½).
 /// let f = |v: &[Interval]| vec![v[0].sqr() + v[1].sqr() - 1.0, v[0] - v[1]];
 /// let jac = |v: &[Interval]| {
@@ -176,7 +176,7 @@ fn contraction(jacobian: &IntervalMatrix, precond: &[Vec<f64>]) -> f64 {
 ///     ])
 /// };
 /// let x = [Interval::new(0.6, 0.8), Interval::new(0.6, 0.8)];
-/// let out = interval_newton(f, jac, &x, &RootConfig::default());
+/// let out = interval_newton(f, jac, &x, &RootOptions::default());
 /// assert_eq!(out.verdict, Verdict::Unique);
 /// let b = out.enclosure.unwrap();
 /// assert!(b[0].contains(0.5f64.sqrt()) && b[0].width() < 1e-10);
@@ -185,7 +185,7 @@ pub fn interval_newton<F, J>(
     f: F,
     jacobian: J,
     x: &[Interval],
-    config: &RootConfig,
+    config: &RootOptions,
 ) -> NewtonOutcome
 where
     F: Fn(&[Interval]) -> Vec<Interval>,
@@ -268,7 +268,7 @@ fn bisect_boxes(
     f: BoxFn<'_>,
     domain: &[Interval],
     leaf_width: f64,
-    config: &RootConfig,
+    config: &RootOptions,
 ) -> (Vec<Vec<Interval>>, bool) {
     let mut stack = vec![domain.to_vec()];
     let mut leaves = Vec::new();
@@ -357,7 +357,7 @@ fn decide(
     jac: JacFn<'_>,
     domain: &[Interval],
     h: Vec<Interval>,
-    config: &RootConfig,
+    config: &RootOptions,
     depth: u32,
 ) -> Vec<Root> {
     if f(&h).iter().any(|v| !v.contains(0.0)) {
@@ -437,7 +437,12 @@ fn merge_overlapping(mut roots: Vec<Root>) -> Vec<Root> {
     res
 }
 
-fn search(f: BoxFn<'_>, jac: Option<JacFn<'_>>, domain: &[Interval], config: &RootConfig) -> Roots {
+fn search(
+    f: BoxFn<'_>,
+    jac: Option<JacFn<'_>>,
+    domain: &[Interval],
+    config: &RootOptions,
+) -> Roots {
     if domain.is_empty() || domain.iter().any(|v| v.is_empty()) {
         return Roots { roots: Vec::new(), complete: true };
     }
@@ -467,7 +472,7 @@ fn search(f: BoxFn<'_>, jac: Option<JacFn<'_>>, domain: &[Interval], config: &Ro
 /// # Examples
 ///
 /// ```
-/// use hi_interval::{Interval, IntervalMatrix, RootConfig, Verdict, find_roots};
+/// use hi_interval::{Interval, IntervalMatrix, RootOptions, Verdict, find_roots};
 /// // x² + y² = 1 and y = x² : two zeros, (±0.786, 0.618).
 /// let f = |v: &[Interval]| vec![v[0].sqr() + v[1].sqr() - 1.0, v[1] - v[0].sqr()];
 /// let jac = |v: &[Interval]| {
@@ -477,13 +482,13 @@ fn search(f: BoxFn<'_>, jac: Option<JacFn<'_>>, domain: &[Interval], config: &Ro
 ///     ])
 /// };
 /// let domain = [Interval::new(-2.0, 2.0), Interval::new(-2.0, 2.0)];
-/// let res = find_roots(f, jac, &domain, &RootConfig::default());
+/// let res = find_roots(f, jac, &domain, &RootOptions::default());
 /// assert_eq!(res.roots.len(), 2);
 /// assert!(res.roots.iter().all(|r| r.verdict == Verdict::Unique));
 /// let y = (5f64.sqrt() - 1.0) / 2.0;
 /// assert!(res.roots[1].enclosure[1].contains(y) || res.roots[1].enclosure[1].width() < 1e-9);
 /// ```
-pub fn find_roots<F, J>(f: F, jacobian: J, domain: &[Interval], config: &RootConfig) -> Roots
+pub fn find_roots<F, J>(f: F, jacobian: J, domain: &[Interval], config: &RootOptions) -> Roots
 where
     F: Fn(&[Interval]) -> Vec<Interval>,
     J: Fn(&[Interval]) -> IntervalMatrix,
@@ -497,13 +502,13 @@ where
 /// # Examples
 ///
 /// ```
-/// use hi_interval::{Interval, RootConfig, bisect};
+/// use hi_interval::{Interval, RootOptions, bisect};
 /// let f = |v: &[Interval]| vec![v[0].sqr() - 2.0];
-/// let res = bisect(f, &[Interval::new(0.0, 4.0)], &RootConfig::default());
+/// let res = bisect(f, &[Interval::new(0.0, 4.0)], &RootOptions::default());
 /// assert_eq!(res.roots.len(), 1);
 /// assert!(res.roots[0].enclosure[0].contains(2f64.sqrt()));
 /// ```
-pub fn bisect<F>(f: F, domain: &[Interval], config: &RootConfig) -> Roots
+pub fn bisect<F>(f: F, domain: &[Interval], config: &RootOptions) -> Roots
 where
     F: Fn(&[Interval]) -> Vec<Interval>,
 {
@@ -521,17 +526,17 @@ where
 /// # Examples
 ///
 /// ```
-/// use hi_interval::{Interval, RootConfig, Verdict, find_roots_1d};
+/// use hi_interval::{Interval, RootOptions, Verdict, find_roots_1d};
 /// // (x − 1)(x − 2)²: a simple zero at 1 and a double zero at 2.
 /// let f = |x: Interval| (x - 1.0) * (x - 2.0).sqr();
 /// let df = |x: Interval| (x - 2.0).sqr() + (x - 1.0) * (x - 2.0) * 2.0;
-/// let res = find_roots_1d(f, df, Interval::new(0.0, 3.0), &RootConfig::default());
+/// let res = find_roots_1d(f, df, Interval::new(0.0, 3.0), &RootOptions::default());
 /// assert_eq!(res.roots.len(), 2);
 /// assert_eq!(res.roots[0].verdict, Verdict::Unique);
 /// assert!(res.roots[0].enclosure.contains(1.0));
 /// assert!(res.roots[1].enclosure.contains(2.0)); // the double zero: enclosed, not unique
 /// ```
-pub fn find_roots_1d<F, D>(f: F, df: D, domain: Interval, config: &RootConfig) -> Roots1
+pub fn find_roots_1d<F, D>(f: F, df: D, domain: Interval, config: &RootOptions) -> Roots1
 where
     F: Fn(Interval) -> Interval,
     D: Fn(Interval) -> Interval,
@@ -548,12 +553,12 @@ where
 /// # Examples
 ///
 /// ```
-/// use hi_interval::{Interval, RootConfig, Verdict, bisect_1d};
-/// let res = bisect_1d(|x: Interval| x.cos(), Interval::new(0.0, 10.0), &RootConfig::default());
+/// use hi_interval::{Interval, RootOptions, Verdict, bisect_1d};
+/// let res = bisect_1d(|x: Interval| x.cos(), Interval::new(0.0, 10.0), &RootOptions::default());
 /// assert_eq!(res.roots.len(), 3); // π/2, 3π/2, 5π/2
 /// assert!(res.roots.iter().all(|r| r.verdict == Verdict::Exists));
 /// ```
-pub fn bisect_1d<F>(f: F, domain: Interval, config: &RootConfig) -> Roots1
+pub fn bisect_1d<F>(f: F, domain: Interval, config: &RootOptions) -> Roots1
 where
     F: Fn(Interval) -> Interval,
 {
@@ -608,7 +613,7 @@ mod tests {
             ])
         };
         let x = [Interval::new(-5.0, 5.0), Interval::new(-5.0, 5.0)];
-        let out = interval_newton(f, jac, &x, &RootConfig::default());
+        let out = interval_newton(f, jac, &x, &RootOptions::default());
         assert_eq!(out.verdict, Verdict::Unique);
         let b = out.enclosure.expect("a root");
         // 3x + y = 1, x = 2y: y = 1/7, x = 2/7.
@@ -620,7 +625,7 @@ mod tests {
     fn no_root_is_proven_empty() {
         let f = |v: &[Interval]| vec![v[0].sqr() + 1.0];
         let jac = |v: &[Interval]| IntervalMatrix::from_rows(vec![vec![v[0] * 2.0]]);
-        let out = interval_newton(f, jac, &[Interval::new(2.0, 3.0)], &RootConfig::default());
+        let out = interval_newton(f, jac, &[Interval::new(2.0, 3.0)], &RootOptions::default());
         assert!(out.enclosure.is_none(), "x² + 1 has no real zero");
     }
 
@@ -628,7 +633,7 @@ mod tests {
     fn caps_stop_the_search() {
         // f ≡ 0: every box holds zeros; the box cap must stop the bisection.
         let config =
-            RootConfig { tolerance: 0.0, newton_width: 0.0, max_iterations: 5, max_boxes: 1000 };
+            RootOptions { tolerance: 0.0, newton_width: 0.0, max_iterations: 5, max_boxes: 1000 };
         let res = bisect_1d(|x: Interval| x * 0.0, Interval::new(0.0, 1.0), &config);
         assert!(bisect(|v: &[Interval]| v.to_vec(), &[], &config).roots.is_empty(), "no dims");
         assert!(!res.complete, "capped");

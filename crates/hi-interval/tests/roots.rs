@@ -5,7 +5,7 @@
 //! code under test.
 
 use hi_interval::{
-    Interval, IntervalMatrix, RootConfig, Scalar, Verdict, bisect_1d, find_roots, find_roots_1d,
+    Interval, IntervalMatrix, RootOptions, Scalar, Verdict, bisect_1d, find_roots, find_roots_1d,
 };
 
 /// Coefficients (constant first) of Π (x − rᵢ); exact for small dyadic roots.
@@ -40,7 +40,7 @@ fn simple_polynomial_roots_are_unique_and_enclosed() {
         |x| horner(&c, x),
         |x| horner(&dc, x),
         Interval::new(-3.0, 3.0),
-        &RootConfig::default(),
+        &RootOptions::default(),
     );
     assert!(res.complete, "finished");
     assert_eq!(res.roots.len(), roots.len(), "{res:?}");
@@ -60,7 +60,7 @@ fn double_and_triple_roots_are_enclosed_not_claimed_unique() {
         |x| horner(&c, x),
         |x| horner(&dc, x),
         Interval::new(-4.0, 4.0),
-        &RootConfig::default(),
+        &RootOptions::default(),
     );
     let at = |r: f64| res.roots.iter().filter(|f| f.enclosure.contains(r)).count();
     assert_eq!((at(1.0), at(-2.0)), (1, 1), "{res:?}");
@@ -77,7 +77,7 @@ fn double_and_triple_roots_are_enclosed_not_claimed_unique() {
     // |x − 0.5| < 1e-2, about 2·10⁴ boxes.
     let c = poly_from_roots(&[0.5, 0.5, 0.5]);
     let dc = derivative(&c);
-    let config = RootConfig { tolerance: 1e-6, ..RootConfig::default() };
+    let config = RootOptions { tolerance: 1e-6, ..RootOptions::default() };
     let res =
         find_roots_1d(|x| horner(&c, x), |x| horner(&dc, x), Interval::new(-1.0, 1.0), &config);
     assert!(res.complete, "within the box cap");
@@ -93,7 +93,7 @@ fn roots_at_the_domain_ends() {
     // x(x − 1) on [0, 1]: both zeros are the domain ends, exactly.
     let f = |x: Interval| x * (x - 1.0);
     let df = |x: Interval| x * 2.0 - 1.0;
-    let res = find_roots_1d(f, df, Interval::new(0.0, 1.0), &RootConfig::default());
+    let res = find_roots_1d(f, df, Interval::new(0.0, 1.0), &RootOptions::default());
     assert_eq!(res.roots.len(), 2, "{res:?}");
     assert!(res.roots[0].enclosure.contains(0.0) && res.roots[1].enclosure.contains(1.0));
     assert!(res.roots.iter().all(|r| r.verdict == Verdict::Unique), "{res:?}");
@@ -103,11 +103,11 @@ fn roots_at_the_domain_ends() {
     let sin = |x: Interval| x.sin();
     let cos = |x: Interval| x.cos();
     let pi = std::f64::consts::PI;
-    let res = find_roots_1d(sin, cos, Interval::new(0.0, pi), &RootConfig::default());
+    let res = find_roots_1d(sin, cos, Interval::new(0.0, pi), &RootOptions::default());
     assert_eq!(res.roots.len(), 1, "only 0: {res:?}");
     assert!(res.roots[0].enclosure.contains(0.0) && res.roots[0].verdict == Verdict::Unique);
     // On [1, next_up(PI)] it is inside, and enclosed.
-    let res = find_roots_1d(sin, cos, Interval::new(1.0, pi.next_up()), &RootConfig::default());
+    let res = find_roots_1d(sin, cos, Interval::new(1.0, pi.next_up()), &RootOptions::default());
     assert_eq!(res.roots.len(), 1, "{res:?}");
     assert!(res.roots[0].enclosure.overlaps(Interval::PI), "{res:?}");
     assert!(
@@ -135,7 +135,7 @@ fn trigonometric_sum_zeros() {
         trig_sum::<Interval>,
         trig_sum_deriv::<Interval>,
         Interval::new(0.1, 1.9),
-        &RootConfig::default(),
+        &RootOptions::default(),
     );
     // In (0.1, 1.9): 1/3, 1/2, 2/3, 1, 4/3, 3/2, 5/3.
     let expected: Vec<Interval> =
@@ -150,7 +150,7 @@ fn trigonometric_sum_zeros() {
         assert!(found.enclosure.width() < 1e-9, "{want}: {found:?}");
     }
     // Bisection alone finds the same zeros, each as a sign change.
-    let res = bisect_1d(trig_sum::<Interval>, Interval::new(0.1, 1.9), &RootConfig::default());
+    let res = bisect_1d(trig_sum::<Interval>, Interval::new(0.1, 1.9), &RootOptions::default());
     assert_eq!(res.roots.len(), expected.len(), "{res:?}");
     for (found, want) in res.roots.iter().zip(&expected) {
         assert!(found.enclosure.overlaps(*want), "{want}: {found:?}");
@@ -169,7 +169,7 @@ fn two_dimensional_system_with_exact_roots() {
         ])
     };
     let domain = [Interval::new(-0.5, 1.5), Interval::new(-0.6, 1.7)];
-    let res = find_roots(f, jac, &domain, &RootConfig::default());
+    let res = find_roots(f, jac, &domain, &RootOptions::default());
     assert!(res.complete);
     assert_eq!(res.roots.len(), 2, "{res:?}");
     for (found, want) in res.roots.iter().zip([0.0, 1.0]) {
@@ -178,14 +178,14 @@ fn two_dimensional_system_with_exact_roots() {
     }
     // Shift the domain so that no zero is inside: nothing is returned.
     let domain = [Interval::new(2.0, 3.0), Interval::new(2.0, 3.0)];
-    assert!(find_roots(f, jac, &domain, &RootConfig::default()).roots.is_empty(), "no zeros");
+    assert!(find_roots(f, jac, &domain, &RootOptions::default()).roots.is_empty(), "no zeros");
 }
 
 #[test]
 fn nan_and_empty_inputs_never_panic() {
-    let res = find_roots_1d(|x| x, |_| Interval::ONE, Interval::EMPTY, &RootConfig::default());
+    let res = find_roots_1d(|x| x, |_| Interval::ONE, Interval::EMPTY, &RootOptions::default());
     assert!(res.roots.is_empty() && res.complete);
-    let config = RootConfig {
+    let config = RootOptions {
         tolerance: f64::NAN,
         newton_width: f64::NAN,
         max_iterations: 3,

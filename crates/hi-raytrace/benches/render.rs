@@ -7,18 +7,14 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use hi_raytrace::{RenderSettings, TorusMethod, render, torus_scene};
+use hi_raytrace::testing::{TorusMethod, torus_scene};
+use hi_raytrace::{RenderOptions, render};
 
 fn render_benches(c: &mut Criterion) {
     let mut group = c.benchmark_group("torus 64x64");
     group.sample_size(10);
-    let settings = RenderSettings {
-        width: 64,
-        height: 64,
-        samples_per_pixel: 1,
-        tile_size: 16,
-        first_pass: 0,
-    };
+    let settings =
+        RenderOptions { width: 64, height: 64, samples_per_pixel: 1, tile_size: 16, first_pass: 0 };
     group.throughput(Throughput::Elements(64 * 64));
     for method in TorusMethod::ALL {
         let (scene, camera) = torus_scene(method).expect("the fixed torus scene is valid");

@@ -2,7 +2,7 @@
 //! Times the torus of Hardy 2005, figure 5.26 (§5.6), by each method and writes the PNGs:
 //! `cargo run --release -p hi-raytrace --example torus_timing -- [SIZE] [DIR]`.
 
-use hi_raytrace::{TorusMethod, render_torus};
+use hi_raytrace::testing::{TorusMethod, render_torus};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);

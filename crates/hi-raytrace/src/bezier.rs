@@ -4,7 +4,7 @@
 //! subdivision and the convex hull property").
 //!
 //! At build time each patch is subdivided (de Casteljau) until its pieces are flat: every control
-//! point lies within a fraction [`BezierSettings::flatness`] of the piece's size from the bilinear
+//! point lies within a fraction [`BezierOptions::flatness`] of the piece's size from the bilinear
 //! patch of its corners. The control boxes of the pieces (which hold them, by the convex hull
 //! property) go into a BVH. A ray then runs Newton's method in (u, v, t) on the exact patch,
 //! S(u, v) − (o + t·d) = 0, from the centre of each piece whose box it meets; a root that lands
@@ -12,7 +12,7 @@
 //! levels deep, with Newton from each sub-piece the ray meets.
 
 use glam::DVec3;
-use hi_bezier::BezierPatch;
+use hi_bezier::{Bernstein, BezierPatch};
 use hi_surface::bezier::{SurfaceBezier, patch_color};
 
 use crate::bvh::{Bvh, slab};
@@ -24,7 +24,7 @@ const MAX_FAST_DEGREE: usize = 15;
 
 /// How Bézier patches are prepared and intersected.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BezierSettings {
+pub struct BezierOptions {
     /// A piece is flat when its control points lie within this fraction of its diagonal from the
     /// bilinear patch of its corners.
     pub flatness: f64,
@@ -36,10 +36,10 @@ pub struct BezierSettings {
     pub tolerance: f64,
 }
 
-impl Default for BezierSettings {
+impl Default for BezierOptions {
     /// `flatness = 0.05`, `max_depth = 6`, `max_ray_depth = 4`, `tolerance = 1e-11`.
     fn default() -> Self {
-        BezierSettings { flatness: 0.05, max_depth: 6, max_ray_depth: 4, tolerance: 1e-11 }
+        BezierOptions { flatness: 0.05, max_depth: 6, max_ray_depth: 4, tolerance: 1e-11 }
     }
 }
 
@@ -64,7 +64,7 @@ pub struct BezierObject {
     /// Normal cones of the pieces (`None` where a normal is undefined or the cone is too wide).
     cones: Vec<Option<Cone>>,
     bvh: Bvh,
-    settings: BezierSettings,
+    settings: BezierOptions,
     /// The absolute Newton tolerance.
     tolerance: f64,
     /// Bound on the coordinates, for the evaluation error.
@@ -80,7 +80,7 @@ impl BezierObject {
     /// bad settings.
     pub fn try_new(
         patches: Vec<BezierPatch<DVec3>>,
-        settings: &BezierSettings,
+        settings: &BezierOptions,
     ) -> Result<Self, Error> {
         let windows = vec![([0.0, 1.0], [0.0, 1.0]); patches.len()];
         Self::build(patches, windows, settings)
@@ -94,7 +94,7 @@ impl BezierObject {
     /// As [`BezierObject::try_new`].
     pub fn from_surface(
         surface: &SurfaceBezier<DVec3>,
-        settings: &BezierSettings,
+        settings: &BezierOptions,
     ) -> Result<Self, Error> {
         let windows = (0..surface.patches.len()).map(|i| surface.window(i)).collect();
         Self::build(surface.patches.clone(), windows, settings)
@@ -103,7 +103,7 @@ impl BezierObject {
     fn build(
         patches: Vec<BezierPatch<DVec3>>,
         windows: Vec<([f64; 2], [f64; 2])>,
-        settings: &BezierSettings,
+        settings: &BezierOptions,
     ) -> Result<Self, Error> {
         if patches.is_empty() {
             return Err(Error::EmptyScene);
@@ -205,9 +205,7 @@ impl BezierObject {
     ) -> Option<BezierHit> {
         let patch = &self.patches[piece.patch];
         let (lo, hi) = bounds.unwrap_or_else(|| {
-            let bb = patch
-                .subpatch(piece.u[0], piece.u[1], piece.v[0], piece.v[1])
-                .control_bounding_box();
+            let bb = patch.subpatch_bounds(piece.u[0], piece.u[1], piece.v[0], piece.v[1]);
             (bb.min, bb.max)
         });
         let pad = self.tolerance * 4.0;
@@ -390,7 +388,7 @@ fn split_flat(
     u: [f64; 2],
     v: [f64; 2],
     depth: u32,
-    settings: &BezierSettings,
+    settings: &BezierOptions,
     pieces: &mut Vec<Piece>,
     boxes: &mut Vec<(DVec3, DVec3)>,
 ) {
@@ -436,42 +434,16 @@ fn is_flat(p: &BezierPatch<DVec3>, flatness: f64) -> bool {
     true
 }
 
-/// Bernstein values and derivatives of degree `n` at `t`, into `b` and `db` (n + 1 entries).
-fn bernstein(n: usize, t: f64, b: &mut [f64], db: &mut [f64]) {
-    let s = 1.0 - t;
-    b[0] = 1.0;
-    for k in 1..=n {
-        if k == n {
-            // Derivative from degree n − 1: n·(B_{i−1} − B_i).
-            for i in 0..=n {
-                let left = if i > 0 { b[i - 1] } else { 0.0 };
-                let right = if i < n { b[i] } else { 0.0 };
-                db[i] = n as f64 * (left - right);
-            }
-        }
-        b[k] = t * b[k - 1];
-        for i in (1..k).rev() {
-            b[i] = s * b[i] + t * b[i - 1];
-        }
-        b[0] *= s;
-    }
-    if n == 0 {
-        db[0] = 0.0;
-    }
-}
-
-/// S(u, v), Sᵤ, Sᵥ of a patch.
+/// S(u, v), Sᵤ, Sᵥ of a patch: the Bernstein values and derivatives of `hi_bezier` in fixed
+/// arrays up to degree [`MAX_FAST_DEGREE`] (no allocation), de Casteljau beyond.
 pub(crate) fn eval(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
     let (m, n) = (p.degree_u(), p.degree_v());
-    if m > MAX_FAST_DEGREE || n > MAX_FAST_DEGREE {
+    let (Some((bu, dbu)), Some((bv, dbv))) = (
+        Bernstein::new(m).values_with_derivatives::<{ MAX_FAST_DEGREE + 1 }>(u),
+        Bernstein::new(n).values_with_derivatives::<{ MAX_FAST_DEGREE + 1 }>(v),
+    ) else {
         return p.eval_with_partials(u, v);
-    }
-    let mut bu = [0.0; MAX_FAST_DEGREE + 1];
-    let mut dbu = [0.0; MAX_FAST_DEGREE + 1];
-    let mut bv = [0.0; MAX_FAST_DEGREE + 1];
-    let mut dbv = [0.0; MAX_FAST_DEGREE + 1];
-    bernstein(m, u, &mut bu, &mut dbu);
-    bernstein(n, v, &mut bv, &mut dbv);
+    };
     let pts = p.control_points();
     let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
     for j in 0..=m {

@@ -62,7 +62,7 @@ pub enum IntervalMethod {
 
 /// How a harmonic surface is intersected.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HarmonicSettings {
+pub struct HarmonicOptions {
     /// The root finder.
     pub method: IntervalMethod,
     /// Number of parameter cells along u and v whose enclosures go into the BVH.
@@ -76,11 +76,11 @@ pub struct HarmonicSettings {
     pub max_boxes: usize,
 }
 
-impl Default for HarmonicSettings {
+impl Default for HarmonicOptions {
     /// Krawczyk, 32 × 32 cells, distance tolerance 1e-7, parameter tolerance 1e-10, at most
     /// 4096 boxes per ray and cell.
     fn default() -> Self {
-        HarmonicSettings {
+        HarmonicOptions {
             method: IntervalMethod::Krawczyk,
             cells: (32, 32),
             distance_tolerance: 1e-7,
@@ -133,7 +133,7 @@ pub struct HarmonicObject {
     eval_err: [f64; 3],
     cells: Vec<Cell>,
     bvh: Bvh,
-    settings: HarmonicSettings,
+    settings: HarmonicOptions,
     /// Size of the surface (box diagonal plus largest coordinate).
     scale: f64,
     color: [f32; 3],
@@ -154,17 +154,6 @@ pub struct HarmonicHit {
     /// Whether the root was proven unique in its final box (Krawczyk's test); bisection hits
     /// and undecided boxes report `false`.
     pub proven: bool,
-}
-
-/// cos and sin of 2πau for a = 0, …, `deg` into `out`, by angle addition from u reduced mod 1.
-fn harmonics(u: f64, deg: usize, out: &mut [(f64, f64)]) {
-    let r = u - u.round();
-    let (s1, c1) = (TAU * r).sin_cos();
-    out[0] = (1.0, 0.0);
-    for a in 1..=deg {
-        let (c, s) = out[a - 1];
-        out[a] = (c * c1 - s * s1, s * c1 + c * s1);
-    }
 }
 
 /// The derivative of order `order` of the enclosures (cos 2πaX, sin 2πaX), given ω = 2πa.
@@ -193,7 +182,7 @@ impl HarmonicObject {
     /// positive, cells between 1 and 1024 per direction, `max_boxes` at least 1).
     pub fn try_new(
         surface: HarmonicSurface<DVec3>,
-        settings: &HarmonicSettings,
+        settings: &HarmonicOptions,
     ) -> Result<Self, Error> {
         check_positive("distance tolerance", settings.distance_tolerance)?;
         check_positive("parameter tolerance", settings.parameter_tolerance)?;
@@ -300,7 +289,7 @@ impl HarmonicObject {
 
     /// The settings.
     #[must_use]
-    pub fn settings(&self) -> &HarmonicSettings {
+    pub fn settings(&self) -> &HarmonicOptions {
         &self.settings
     }
 
@@ -316,40 +305,11 @@ impl HarmonicObject {
         self.curvature.as_ref().map(|(_, l)| l)
     }
 
-    /// p, pᵤ, pᵥ at (u, v) in f64, from the spectrum.
+    /// p, pᵤ, pᵥ at (u, v) in f64, from the spectrum
+    /// ([`HarmonicSurface::eval_with_partials`], which allocates nothing).
     #[must_use]
     pub fn eval_with_partials(&self, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
-        const MAX: usize = 64;
-        let (du, dv) = (self.deg_u, self.deg_v);
-        if du >= MAX || dv >= MAX {
-            return (
-                self.surface.eval_deriv(u, v, 0, 0),
-                self.surface.eval_deriv(u, v, 1, 0),
-                self.surface.eval_deriv(u, v, 0, 1),
-            );
-        }
-        let mut hu = [(0.0, 0.0); MAX];
-        let mut hv = [(0.0, 0.0); MAX];
-        harmonics(u, du, &mut hu);
-        harmonics(v, dv, &mut hv);
-        let (mut p, mut pu, mut pv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
-        for (a, &(cu, su)) in hu[..=du].iter().enumerate() {
-            let row = &self.coeffs[a * (dv + 1)..(a + 1) * (dv + 1)];
-            let (mut wc, mut ws, mut wcv, mut wsv) =
-                (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
-            for (b, (c, &(cv, sv))) in row.iter().zip(&hv[..=dv]).enumerate() {
-                let w = TAU * b as f64;
-                wc += c[0] * cv + c[1] * sv;
-                ws += c[2] * cv + c[3] * sv;
-                wcv += (c[1] * cv - c[0] * sv) * w;
-                wsv += (c[3] * cv - c[2] * sv) * w;
-            }
-            let w = TAU * a as f64;
-            p += wc * cu + ws * su;
-            pu += (ws * cu - wc * su) * w;
-            pv += wcv * cu + wsv * su;
-        }
-        (p, pu, pv)
+        self.surface.eval_with_partials(u, v)
     }
 
     /// An enclosure of ∂ᵖ⁺ᑫp/∂uᵖ∂vᑫ over U × V in interval arithmetic, per coordinate.
@@ -439,10 +399,26 @@ impl HarmonicObject {
 
     /// The nearest hit in one cell below `t_max`.
     fn intersect_cell(&self, ray: &Ray, cell: &Cell, t_max: f64) -> Option<HarmonicHit> {
-        let mut best: Option<HarmonicHit> = None;
-        let mut stack: Vec<Node> = Vec::with_capacity(64);
         let root = self.node(ray, cell, cell.u, cell.v, t_max)?;
+        // The search stack of this thread, kept between rays: no allocation per ray once it
+        // has grown to the deepest search (taken, so that a nested search gets its own).
+        let mut stack = SEARCH_STACK.take();
+        stack.clear();
         stack.push(root);
+        let best = self.search(ray, cell, t_max, &mut stack);
+        SEARCH_STACK.set(stack);
+        best
+    }
+
+    /// The depth-first search of [`HarmonicObject::intersect_cell`] from the boxes on `stack`.
+    fn search(
+        &self,
+        ray: &Ray,
+        cell: &Cell,
+        t_max: f64,
+        stack: &mut Vec<Node>,
+    ) -> Option<HarmonicHit> {
+        let mut best: Option<HarmonicHit> = None;
         let mut n_boxes = 0;
         let dist_tol = self.settings.distance_tolerance * self.scale;
         let par_tol = self.settings.parameter_tolerance;
@@ -677,6 +653,11 @@ impl HarmonicObject {
     }
 }
 
+std::thread_local! {
+    /// Each thread's stack of open boxes for [`HarmonicObject::intersect_cell`].
+    static SEARCH_STACK: std::cell::Cell<Vec<Node>> = const { std::cell::Cell::new(Vec::new()) };
+}
+
 /// A box of the search: (u, v) window, t range, enclosure.
 #[derive(Clone, Copy, Debug)]
 struct Node {
@@ -740,21 +721,9 @@ mod tests {
     use super::*;
 
     #[test]
-    fn spectral_evaluation_matches_the_surface() {
-        let s = hi_surface::torus(2.0, 0.5);
-        let obj = HarmonicObject::try_new(s.clone(), &HarmonicSettings::default()).unwrap();
-        for (u, v) in [(0.1, 0.2), (0.77, 0.31), (0.5, 0.0)] {
-            let (p, pu, pv) = obj.eval_with_partials(u, v);
-            assert!((p - s.eval(u, v)).length() < 1e-12, "p");
-            assert!((pu - s.eval_deriv(u, v, 1, 0)).length() < 1e-11, "pu");
-            assert!((pv - s.eval_deriv(u, v, 0, 1)).length() < 1e-11, "pv");
-        }
-    }
-
-    #[test]
     fn cell_enclosures_hold_the_surface() {
         let s = hi_surface::torus(2.0, 0.5);
-        let obj = HarmonicObject::try_new(s.clone(), &HarmonicSettings::default()).unwrap();
+        let obj = HarmonicObject::try_new(s.clone(), &HarmonicOptions::default()).unwrap();
         let cell = obj.cells[37];
         for i in 0..=10 {
             for j in 0..=10 {

@@ -19,10 +19,10 @@
 //!
 //! ```
 //! use glam::DVec3;
-//! use hi_raytrace::{HarmonicObject, HarmonicSettings, Ray};
+//! use hi_raytrace::{HarmonicObject, HarmonicOptions, Ray};
 //!
 //! // The exact harmonic sphere of radius 1 (a 4×4 grid), hit from z = 3.
-//! let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicSettings::default())?;
+//! let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicOptions::default())?;
 //! let hit = sphere.intersect(&Ray::new(DVec3::new(0.6, 0.0, 3.0), -DVec3::Z)).unwrap();
 //! assert!((hit.t - (3.0 - 0.8)).abs() < 1e-9); // z = √(1 − 0.6²) = 0.8
 //! assert!(hit.proven); // Krawczyk's test proved the root unique in its box
@@ -42,19 +42,18 @@ mod mesh;
 mod ray;
 mod render;
 mod scene;
-mod timing;
+pub mod testing;
 
-pub use bezier::{BezierHit, BezierObject, BezierSettings};
+pub use bezier::{BezierHit, BezierObject, BezierOptions};
 pub use camera::Camera;
 pub use error::Error;
-pub use harmonic::{HarmonicHit, HarmonicObject, HarmonicSettings, IntervalMethod, SurfaceColor};
+pub use harmonic::{HarmonicHit, HarmonicObject, HarmonicOptions, IntervalMethod, SurfaceColor};
 pub use mesh::{EdgeStyle, MeshObject, TriangleHit, intersect_triangle};
 pub use ray::{Hit, Ray, offset_ray_origin};
 pub use render::{
-    ADAPTIVE_SPREAD, MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderSettings, Rendering, render,
+    ADAPTIVE_SPREAD, MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderOptions, Rendering, render,
 };
 pub use scene::{Geometry, Light, Material, Scene, SceneObject};
-pub use timing::{TorusMethod, render_torus, torus_scene};
 
 /// The example of this crate's README, run as a doctest so that it stays true.
 #[doc = include_str!("../README.md")]

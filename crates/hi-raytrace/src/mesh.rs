@@ -184,21 +184,6 @@ impl MeshObject {
         })
     }
 
-    /// The nearest hit by testing every triangle (no BVH): the reference for the BVH.
-    #[must_use]
-    pub fn intersect_brute_force(&self, ray: &Ray) -> Option<(usize, TriangleHit)> {
-        let p = self.mesh.positions();
-        let mut best: Option<(usize, TriangleHit)> = None;
-        for (i, tri) in self.mesh.triangles().iter().enumerate() {
-            let t_max = best.map_or(ray.t_max, |(_, h)| h.t);
-            let [a, b, c] = tri.map(|k| p[k as usize]);
-            if let Some(h) = intersect_triangle(ray, a, b, c, t_max) {
-                best = Some((i, h));
-            }
-        }
-        best
-    }
-
     /// Shading data of a hit on triangle `tri`: point, error bound, geometric normal (facing
     /// the interpolated normal), interpolated unit normal and colour (if the mesh has colours).
     pub(crate) fn surface_at(

@@ -27,7 +27,7 @@ pub const MAX_SAMPLES: u32 = 1024;
 
 /// Image size and sampling.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct RenderSettings {
+pub struct RenderOptions {
     /// Width in pixels.
     pub width: u32,
     /// Height in pixels.
@@ -47,13 +47,13 @@ pub struct RenderSettings {
 }
 
 /// The spread of linear colour between a pixel's first samples above which
-/// [`RenderSettings::first_pass`] renders it with every sample.
+/// [`RenderOptions::first_pass`] renders it with every sample.
 pub const ADAPTIVE_SPREAD: f32 = 0.02;
 
-impl Default for RenderSettings {
+impl Default for RenderOptions {
     /// 512 × 512, 4 samples per pixel, 16-pixel tiles, no first pass.
     fn default() -> Self {
-        RenderSettings {
+        RenderOptions {
             width: 512,
             height: 512,
             samples_per_pixel: 4,
@@ -114,7 +114,7 @@ impl Rendering {
 pub type Progress<'a> = &'a (dyn Fn(usize, usize) + Sync);
 
 /// Checks the settings against the limits.
-fn check_settings(settings: &RenderSettings) -> Result<(), Error> {
+fn check_settings(settings: &RenderOptions) -> Result<(), Error> {
     let (w, h) = (settings.width, settings.height);
     if w == 0 || h == 0 {
         return Err(Error::ZeroSizeImage { width: w, height: h });
@@ -181,12 +181,12 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
 /// use glam::DVec3;
 /// use hi_raytrace::*;
 ///
-/// let torus = HarmonicObject::try_new(hi_surface::torus(2.0, 0.5), &HarmonicSettings::default())?;
+/// let torus = HarmonicObject::try_new(hi_surface::torus(2.0, 0.5), &HarmonicOptions::default())?;
 /// let light = Light::Directional { direction: DVec3::new(1.0, 1.0, 2.0), intensity: [1.0; 3] };
 /// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(torus))], vec![light], [0.1; 3])?;
 /// let camera = Camera::try_new(DVec3::new(0.0, -6.0, 4.0), DVec3::ZERO, DVec3::Z, 0.7)?;
 /// let settings =
-///     RenderSettings { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8, first_pass: 0 };
+///     RenderOptions { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8, first_pass: 0 };
 /// let out = render(&scene, &camera, &settings, None)?;
 /// assert_eq!(out.image.dimensions(), (24, 16));
 /// assert_eq!(out.counts.camera, 24 * 16);
@@ -196,7 +196,7 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
 pub fn render(
     scene: &Scene,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &RenderOptions,
     progress: Option<Progress<'_>>,
 ) -> Result<Rendering, Error> {
     check_settings(settings)?;

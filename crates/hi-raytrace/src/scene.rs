@@ -98,9 +98,9 @@ pub enum Light {
 ///
 /// ```
 /// use glam::DVec3;
-/// use hi_raytrace::{Geometry, HarmonicObject, HarmonicSettings, Light, Ray, Scene, SceneObject};
+/// use hi_raytrace::{Geometry, HarmonicObject, HarmonicOptions, Light, Ray, Scene, SceneObject};
 ///
-/// let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicSettings::default())?;
+/// let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicOptions::default())?;
 /// let light = Light::Directional { direction: DVec3::Z, intensity: [1.0; 3] };
 /// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(sphere))], vec![light], [0.0; 3])?;
 /// let hit = scene.intersect(&Ray::new(DVec3::new(0.6, 0.0, 3.0), -DVec3::Z)).unwrap();

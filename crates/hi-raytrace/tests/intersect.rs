@@ -9,7 +9,7 @@ use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_mesh::TriangleMesh;
 use hi_raytrace::{
-    BezierObject, BezierSettings, Camera, HarmonicObject, HarmonicSettings, IntervalMethod,
+    BezierObject, BezierOptions, Camera, HarmonicObject, HarmonicOptions, IntervalMethod,
     MeshObject, Ray,
 };
 use hi_surface::{HarmonicSurface, MeshOptions, sphere, torus};
@@ -30,8 +30,8 @@ fn config(cases: u32) -> ProptestConfig {
     config
 }
 
-fn settings(method: IntervalMethod) -> HarmonicSettings {
-    HarmonicSettings { method, ..HarmonicSettings::default() }
+fn settings(method: IntervalMethod) -> HarmonicOptions {
+    HarmonicOptions { method, ..HarmonicOptions::default() }
 }
 
 /// The nearest t > 0 where the ray meets the sphere |x| = r (the quadratic, stably).
@@ -220,12 +220,16 @@ fn harmonic_torus_hits_match_the_quartic() {
 /// conversion's bound (projected on the normal), and no pixel hit by one and missed by the other
 /// away from silhouettes.
 fn bezier_agrees_with_interval(surface: HarmonicSurface<DVec3>, camera: &Camera, n: usize) {
-    let patches =
-        surface.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4)).unwrap();
+    let patches = surface
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-4),
+        )
+        .unwrap();
     let bound = patches.report.bound;
     assert!(bound <= 1e-4, "the conversion's bound");
-    let bez = BezierObject::from_surface(&patches, &BezierSettings::default()).unwrap();
-    let interval = HarmonicObject::try_new(surface, &HarmonicSettings::default()).unwrap();
+    let bez = BezierObject::from_surface(&patches, &BezierOptions::default()).unwrap();
+    let interval = HarmonicObject::try_new(surface, &HarmonicOptions::default()).unwrap();
     let all = rays(camera, n);
     let hb: Vec<_> = all.iter().map(|r| bez.intersect(r)).collect();
     let hi: Vec<_> = all.iter().map(|r| interval.intersect(r)).collect();
@@ -329,7 +333,7 @@ fn mesh_hits_match_brute_force() {
     let mut n_hits = 0;
     for ray in rays(&camera, 48) {
         let bvh = object.intersect(&ray);
-        let brute = object.intersect_brute_force(&ray);
+        let brute = hi_raytrace::testing::intersect_brute_force(&object, &ray);
         assert_eq!(bvh.map(|h| h.1.t), brute.map(|h| h.1.t), "BVH = brute force");
         let mt = mesh
             .triangles()
@@ -360,12 +364,16 @@ fn mesh_hits_match_brute_force() {
 #[test]
 fn any_hit_occlusion_matches_the_nearest_hit() {
     let surface = bumpy(5, 6, 0.3);
-    let patches =
-        surface.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4)).unwrap();
+    let patches = surface
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-4),
+        )
+        .unwrap();
     let mesh =
         surface.to_mesh(&MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() }).unwrap();
     let mesh = MeshObject::new(mesh);
-    let bezier = BezierObject::from_surface(&patches, &BezierSettings::default()).unwrap();
+    let bezier = BezierObject::from_surface(&patches, &BezierOptions::default()).unwrap();
     let krawczyk =
         HarmonicObject::try_new(surface.clone(), &settings(IntervalMethod::Krawczyk)).unwrap();
     let bisection = HarmonicObject::try_new(surface, &settings(IntervalMethod::Bisection)).unwrap();
@@ -406,7 +414,7 @@ proptest! {
         let origin = DVec3::new(ox, oy, oz) * r;
         let aim = DVec3::new(ax, ay, az) * r;
         let ray = Ray::new(origin, (aim - origin).normalize());
-        let object = HarmonicObject::try_new(sphere(r), &HarmonicSettings::default()).unwrap();
+        let object = HarmonicObject::try_new(sphere(r), &HarmonicOptions::default()).unwrap();
         let exact = sphere_t(&ray, r).expect("aimed inside the sphere");
         let cos = ray.point_at(exact).normalize().dot(ray.dir).abs();
         prop_assume!(cos > 0.05);
@@ -432,7 +440,7 @@ proptest! {
             let a = f64::from(k) * 0.4;
             let ray = Ray::new(DVec3::new(ox, oy, 3.0), DVec3::new(0.2 * a.cos(), 0.2 * a.sin(), -1.0).normalize());
             let bvh = object.intersect(&ray).map(|h| h.1.t);
-            let brute = object.intersect_brute_force(&ray).map(|h| h.1.t);
+            let brute = hi_raytrace::testing::intersect_brute_force(&object, &ray).map(|h| h.1.t);
             prop_assert_eq!(bvh, brute);
         }
     }

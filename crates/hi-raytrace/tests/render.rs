@@ -6,13 +6,13 @@ use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_mesh::ColorMap;
 use hi_raytrace::{
-    BezierObject, BezierSettings, Camera, Error, Geometry, HarmonicObject, HarmonicSettings,
-    IntervalMethod, Light, MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, render,
+    BezierObject, BezierOptions, Camera, Error, Geometry, HarmonicObject, HarmonicOptions,
+    IntervalMethod, Light, MeshObject, RenderOptions, Scene, SceneObject, SurfaceColor, render,
 };
 use hi_surface::{CurvatureQuantity, MeshOptions, sphere, torus};
 
-fn small(width: u32, height: u32, spp: u32) -> RenderSettings {
-    RenderSettings { width, height, samples_per_pixel: spp, tile_size: 8, first_pass: 0 }
+fn small(width: u32, height: u32, spp: u32) -> RenderOptions {
+    RenderOptions { width, height, samples_per_pixel: spp, tile_size: 8, first_pass: 0 }
 }
 
 fn sun(direction: DVec3) -> Light {
@@ -20,7 +20,7 @@ fn sun(direction: DVec3) -> Light {
 }
 
 fn harmonic(surface: hi_surface::HarmonicSurface<DVec3>, method: IntervalMethod) -> Geometry {
-    let settings = HarmonicSettings { method, ..HarmonicSettings::default() };
+    let settings = HarmonicOptions { method, ..HarmonicOptions::default() };
     Geometry::Harmonic(HarmonicObject::try_new(surface, &settings).unwrap())
 }
 
@@ -98,9 +98,13 @@ fn a_lit_sphere_does_not_shadow_itself() {
     let eye = DVec3::new(1.0, -3.5, 2.0);
     no_self_shadow(harmonic(sphere(1.0), IntervalMethod::Krawczyk), light, eye);
     no_self_shadow(harmonic(sphere(1.0), IntervalMethod::Bisection), light, eye);
-    let patches =
-        sphere(1.0).to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4)).unwrap();
-    let bez = BezierObject::from_surface(&patches, &BezierSettings::default()).unwrap();
+    let patches = sphere(1.0)
+        .to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-4),
+        )
+        .unwrap();
+    let bez = BezierObject::from_surface(&patches, &BezierOptions::default()).unwrap();
     no_self_shadow(Geometry::Bezier(bez), light, eye);
 }
 
@@ -137,7 +141,7 @@ fn shadows_fall_where_they_should() {
 
 #[test]
 fn curvature_colours_differ_across_the_torus() {
-    let object = HarmonicObject::try_new(torus(2.0, 1.0), &HarmonicSettings::default())
+    let object = HarmonicObject::try_new(torus(2.0, 1.0), &HarmonicOptions::default())
         .unwrap()
         .with_color(SurfaceColor::Curvature {
             quantity: CurvatureQuantity::Gaussian,
@@ -226,13 +230,13 @@ fn bad_input_is_an_error() {
     // An empty scene.
     assert_eq!(Scene::try_new(vec![], vec![], [0.0; 3]).unwrap_err(), Error::EmptyScene);
     assert!(matches!(
-        BezierObject::try_new(vec![], &BezierSettings::default()),
+        BezierObject::try_new(vec![], &BezierOptions::default()),
         Err(Error::EmptyScene)
     ));
     // Bad settings.
-    let bad = HarmonicSettings { distance_tolerance: f64::NAN, ..HarmonicSettings::default() };
+    let bad = HarmonicOptions { distance_tolerance: f64::NAN, ..HarmonicOptions::default() };
     assert!(HarmonicObject::try_new(sphere(1.0), &bad).is_err(), "NaN tolerance");
-    let bad = HarmonicSettings { cells: (0, 4), ..HarmonicSettings::default() };
+    let bad = HarmonicOptions { cells: (0, 4), ..HarmonicOptions::default() };
     assert!(HarmonicObject::try_new(sphere(1.0), &bad).is_err(), "no cells");
     // Messages are one line.
     for e in [Error::EmptyScene, Error::ZeroSizeImage { width: 0, height: 3 }] {
@@ -312,7 +316,7 @@ fn a_first_pass_renders_edges_in_full_and_the_rest_from_its_samples() {
     let camera = Camera::try_new(DVec3::new(0.0, -6.0, 4.0), DVec3::ZERO, DVec3::Z, 0.8).unwrap();
     let full = render(&scene, &camera, &small(48, 32, 16), None).unwrap();
     let adaptive =
-        render(&scene, &camera, &RenderSettings { first_pass: 4, ..small(48, 32, 16) }, None)
+        render(&scene, &camera, &RenderOptions { first_pass: 4, ..small(48, 32, 16) }, None)
             .unwrap();
     // Fewer rays: 4 for every pixel of each 8 × 8 tile and of the one-pixel border around it
     // (inside the image), and 16 more for each pixel on an edge.

@@ -9,6 +9,7 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_surface::HarmonicSurface;
+use hi_surface::bezier::Tolerance;
 
 /// A bumpy closed m×m surface (a torus with a ripple), like a fitted geometry image.
 fn bumpy(m: usize) -> HarmonicSurface<DVec3> {
@@ -37,9 +38,9 @@ fn bezier_benches(c: &mut Criterion) {
     for m in [16usize, 64] {
         let surface = bumpy(m);
         for (scheme, tolerance) in [
-            (BezierScheme::ThesisCubic, None),
-            (BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-3)),
-            (BezierScheme::Hermite(HermiteDegree::Quintic), Some(1e-3)),
+            (BezierScheme::ThesisCubic, hi_surface::bezier::DEFAULT_TOLERANCE),
+            (BezierScheme::Hermite(HermiteDegree::Cubic), Tolerance::Absolute(1e-3)),
+            (BezierScheme::Hermite(HermiteDegree::Quintic), Tolerance::Absolute(1e-3)),
         ] {
             let patches = surface.to_bezier(scheme, tolerance).expect("converts").report.patches;
             group.throughput(Throughput::Elements(patches as u64));

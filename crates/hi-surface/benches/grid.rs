@@ -41,7 +41,10 @@ fn grids(c: &mut Criterion) {
         // The direct sum is O(res²·64²): about 4·10⁹ multiply–adds at 1024².
         if res <= 512 {
             group.bench_with_input(BenchmarkId::new("direct", res), &res, |b, _| {
-                b.iter(|| s.sample_params_direct(black_box(&params), &params).unwrap())
+                b.iter(|| {
+                    hi_surface::testing::sample_params_direct(&s, black_box(&params), &params)
+                        .unwrap()
+                })
             });
         }
     }

@@ -30,6 +30,7 @@ use std::io::Write;
 use glam::{DVec2, DVec3};
 use hi_bezier::{Aabb, BezierPatch, ControlPoint};
 use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree, locate};
+pub use hi_curve::bezier::{DEFAULT_TOLERANCE, Tolerance};
 
 use hi_mesh::{TriangleMesh, srgb_to_linear};
 
@@ -317,8 +318,9 @@ fn hermite_weights(degree: HermiteDegree, h: f64) -> Vec<Vec<f64>> {
 
 impl<P: ControlPoint> HarmonicSurface<P> {
     /// The surface as Bézier patches by `scheme` (§5.7), with the deviation measured and
-    /// bounded. `tolerance` is the deviation the Hermite scheme may leave (default 1e-4 of the
-    /// diagonal of the grid's bounding box); the thesis schemes only report theirs.
+    /// bounded. `tolerance` is the deviation the Hermite scheme may leave, absolute or relative
+    /// to the diagonal of the grid's bounding box ([`DEFAULT_TOLERANCE`]: 10⁻⁴ of it); the
+    /// thesis schemes only report theirs.
     ///
     /// # Errors
     ///
@@ -329,37 +331,35 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     /// # Examples
     ///
     /// ```
-    /// use hi_curve::bezier::{BezierScheme, HermiteDegree};
+    /// use hi_curve::bezier::{BezierScheme, DEFAULT_TOLERANCE, HermiteDegree, Tolerance};
     ///
     /// let torus = hi_surface::torus(2.0, 1.0);
     /// // The thesis: 16 bicubic patches for the 4×4 torus, through the 16 points.
-    /// let thesis = torus.to_bezier(BezierScheme::ThesisCubic, None)?;
+    /// let thesis = torus.to_bezier(BezierScheme::ThesisCubic, DEFAULT_TOLERANCE)?;
     /// assert_eq!(thesis.report.patches, 16);
     /// assert!((thesis.eval(0.25, 0.5) - torus.point(1, 2)).length() < 1e-14);
     /// // C1 Hermite patches within 1e-3.
-    /// let c1 = torus.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-3))?;
+    /// let cubic = BezierScheme::Hermite(HermiteDegree::Cubic);
+    /// let c1 = torus.to_bezier(cubic, Tolerance::Absolute(1e-3))?;
     /// assert!(c1.report.bound <= 1e-3 && c1.report.max_normal_jump < 1e-6);
     /// # Ok::<(), hi_surface::Error>(())
     /// ```
     pub fn to_bezier(
         &self,
         scheme: BezierScheme,
-        tolerance: Option<f64>,
+        tolerance: Tolerance,
     ) -> Result<SurfaceBezier<P>, Error> {
-        let tolerance = match tolerance {
-            None => 1e-4 * bounding_diagonal(self.points()).max(f64::MIN_POSITIVE),
-            Some(t) if !t.is_finite() => {
-                return Err(Error::NonFiniteParameter { name: "tolerance", value: t });
-            }
-            Some(t) if t <= 0.0 => {
-                return Err(Error::InvalidValue {
-                    what: "tolerance",
-                    index: None,
-                    value: t,
-                    expected: "a positive number",
-                });
-            }
-            Some(t) => t,
+        let value = tolerance.value();
+        if !value.is_finite() {
+            return Err(Error::NonFiniteParameter { name: "tolerance", value });
+        }
+        let Some(tolerance) = tolerance.distance(bounding_diagonal(self.points())) else {
+            return Err(Error::InvalidValue {
+                what: "tolerance",
+                index: None,
+                value,
+                expected: "a positive number",
+            });
         };
         let (u_breaks, v_breaks, patches, bound) = match scheme {
             BezierScheme::Hermite(degree) => self.hermite(degree, tolerance)?,
@@ -413,7 +413,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             let basis = |k: usize| -> Result<f64, Error> {
                 let delta: Vec<f64> = (0..k).map(|i| f64::from(u8::from(i == 0))).collect();
                 let c = hi_curve::HarmonicCurve::try_new(delta)?;
-                Ok(c.to_bezier(BezierScheme::ThesisQuintic, None)?.report.bound)
+                Ok(c.to_bezier(BezierScheme::ThesisQuintic, DEFAULT_TOLERANCE)?.report.bound)
             };
             let (eu, ev) = (basis(self.m())?, basis(self.n())?);
             let size: f64 = self.points().iter().map(|x| x.norm()).sum();
@@ -873,7 +873,7 @@ mod tests {
                 BezierScheme::ThesisQuintic,
                 BezierScheme::Hermite(HermiteDegree::Cubic),
             ] {
-                let b = surface.to_bezier(scheme, Some(1e-2)).expect("converts");
+                let b = surface.to_bezier(scheme, Tolerance::Absolute(1e-2)).expect("converts");
                 let (fast, slow) = (b.report.max_normal_jump, jump_by_evaluation(&b));
                 assert!(slow > 0.0 || scheme != BezierScheme::ThesisCubic, "C0 patches jump");
                 assert!(
@@ -909,7 +909,7 @@ mod tests {
         // The report's deviation (FFT samples for uniform breaks) against p(u, v) and the
         // patches evaluated one point at a time.
         let surface = bumpy(5, 6);
-        let b = surface.to_bezier(BezierScheme::ThesisCubic, None).expect("converts");
+        let b = surface.to_bezier(BezierScheme::ThesisCubic, DEFAULT_TOLERANCE).expect("converts");
         let k = SAMPLES_PER_SIDE;
         let nv = b.v_breaks.len() - 1;
         let mut max: f64 = 0.0;

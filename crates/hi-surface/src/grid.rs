@@ -52,7 +52,7 @@ impl<P: Copy> GridSamples<P> {
     }
 }
 
-fn check_sizes(n_u: usize, n_v: usize) -> Result<(), Error> {
+pub(crate) fn check_sizes(n_u: usize, n_v: usize) -> Result<(), Error> {
     for (what, value) in [("number of u samples", n_u), ("number of v samples", n_v)] {
         if !(1..=MAX_PER_AXIS).contains(&value) {
             return Err(Error::InvalidCount { what, value, expected: "between 1 and 2^24" });
@@ -68,7 +68,7 @@ fn check_sizes(n_u: usize, n_v: usize) -> Result<(), Error> {
     Ok(())
 }
 
-fn check_params(name: &'static str, params: &[f64]) -> Result<(), Error> {
+pub(crate) fn check_params(name: &'static str, params: &[f64]) -> Result<(), Error> {
     match params.iter().find(|t| !t.is_finite()) {
         Some(&value) => Err(Error::NonFiniteParameter { name, value }),
         None => Ok(()),
@@ -170,20 +170,5 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             }
         });
         Ok(GridSamples { n_u, n_v, values })
-    }
-
-    /// p at every (uᵢ, vₗ) by the direct sum of [`HarmonicSurface::eval`], O(U·V·m·n): the
-    /// reference the fast paths are tested and benchmarked against.
-    ///
-    /// # Errors
-    ///
-    /// As [`HarmonicSurface::sample_params`].
-    pub fn sample_params_direct(&self, us: &[f64], vs: &[f64]) -> Result<GridSamples<P>, Error> {
-        check_sizes(us.len(), vs.len())?;
-        check_params("u", us)?;
-        check_params("v", vs)?;
-        let values =
-            us.par_iter().flat_map_iter(|&u| vs.iter().map(move |&v| self.eval(u, v))).collect();
-        Ok(GridSamples { n_u: us.len(), n_v: vs.len(), values })
     }
 }

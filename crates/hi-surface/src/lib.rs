@@ -53,6 +53,7 @@ mod parametric;
 mod resample;
 mod spectrum;
 mod surface;
+pub mod testing;
 
 pub use error::Error;
 pub use examples::{sphere, torus};

@@ -7,8 +7,14 @@
 //! coefficient sequence), with the even-size Nyquist terms halved as for curves (docs/math.md §7).
 //! Any partial derivative is the same sum with each factor differentiated.
 
+use std::f64::consts::TAU;
+
 use hi_curve::{ControlPoint, Fourier};
 use hi_interval::Interval;
+
+/// Degrees below this keep one direction's harmonics in a stack array; above it they are
+/// recomputed per row (the same values, no allocation either way).
+const STACK: usize = 64;
 
 /// The real 2-D spectrum of a harmonic surface (see the module documentation).
 #[derive(Clone, Debug, PartialEq)]
@@ -46,25 +52,70 @@ impl<P: ControlPoint> Spectrum2<P> {
         Self { deg_u, deg_v, coeffs }
     }
 
-    /// ∂^{p+q}/∂uᵖ∂v^q of the surface at (u, v), O(mn/4).
+    /// ∂^{p+q}/∂uᵖ∂v^q of the surface at (u, v), O(mn/4), without allocating.
     pub(crate) fn eval_deriv(&self, u: f64, v: f64, p: usize, q: usize) -> P {
-        let row_u = Fourier::<P>::trig_basis(self.deg_u, u, p);
-        let row_v = Fourier::<P>::trig_basis(self.deg_v, v, q);
+        let dv = self.deg_v;
+        let mut row_v = [(0.0, 0.0); STACK];
+        if dv < STACK {
+            Fourier::<P>::for_each_trig(dv, v, q, |b, c, s| row_v[b] = (c, s));
+        }
         let mut res = P::ZERO;
-        for (a, &(cu, su)) in row_u.iter().enumerate() {
+        Fourier::<P>::for_each_trig(self.deg_u, u, p, |a, cu, su| {
             if cu == 0.0 && su == 0.0 {
-                continue;
+                return;
             }
-            let coeffs = &self.coeffs[a * (self.deg_v + 1)..(a + 1) * (self.deg_v + 1)];
+            let coeffs = &self.coeffs[a * (dv + 1)..(a + 1) * (dv + 1)];
             let mut with_cos = P::ZERO;
             let mut with_sin = P::ZERO;
-            for (c, &(cv, sv)) in coeffs.iter().zip(&row_v) {
+            let mut term = |b: usize, cv: f64, sv: f64| {
+                let c = &coeffs[b];
                 with_cos += c[0] * cv + c[1] * sv;
                 with_sin += c[2] * cv + c[3] * sv;
+            };
+            if dv < STACK {
+                for (b, &(cv, sv)) in row_v[..=dv].iter().enumerate() {
+                    term(b, cv, sv);
+                }
+            } else {
+                Fourier::<P>::for_each_trig(dv, v, q, term);
             }
             res += with_cos * cu + with_sin * su;
-        }
+        });
         res
+    }
+
+    /// (p, pᵤ, pᵥ) at (u, v) in one pass over the spectrum, O(mn/4), without allocating.
+    pub(crate) fn eval_with_partials(&self, u: f64, v: f64) -> (P, P, P) {
+        let dv = self.deg_v;
+        let mut row_v = [(0.0, 0.0); STACK];
+        if dv < STACK {
+            Fourier::<P>::for_each_trig(dv, v, 0, |b, c, s| row_v[b] = (c, s));
+        }
+        let (mut p, mut pu, mut pv) = (P::ZERO, P::ZERO, P::ZERO);
+        Fourier::<P>::for_each_trig(self.deg_u, u, 0, |a, cu, su| {
+            let coeffs = &self.coeffs[a * (dv + 1)..(a + 1) * (dv + 1)];
+            let (mut wc, mut ws, mut wcv, mut wsv) = (P::ZERO, P::ZERO, P::ZERO, P::ZERO);
+            let mut term = |b: usize, cv: f64, sv: f64| {
+                let c = &coeffs[b];
+                let w = TAU * b as f64;
+                wc += c[0] * cv + c[1] * sv;
+                ws += c[2] * cv + c[3] * sv;
+                wcv += (c[1] * cv - c[0] * sv) * w;
+                wsv += (c[3] * cv - c[2] * sv) * w;
+            };
+            if dv < STACK {
+                for (b, &(cv, sv)) in row_v[..=dv].iter().enumerate() {
+                    term(b, cv, sv);
+                }
+            } else {
+                Fourier::<P>::for_each_trig(dv, v, 0, term);
+            }
+            let w = TAU * a as f64;
+            p += wc * cu + ws * su;
+            pu += (ws * cu - wc * su) * w;
+            pv += wcv * cu + wsv * su;
+        });
+        (p, pu, pv)
     }
 
     /// The coefficients (A, B, C, D) at index `a·(deg_v + 1) + b`.

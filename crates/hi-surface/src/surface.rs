@@ -133,16 +133,26 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     /// grid points up to rounding.
     #[must_use]
     pub fn eval(&self, u: f64, v: f64) -> P {
-        let su = Sigma::new(self.m).values(u);
-        let sv = Sigma::new(self.n).values(v);
-        let mut res = P::ZERO;
-        for (row, wu) in self.grid.chunks(self.n).zip(&su) {
-            let mut along_v = P::ZERO;
-            for (x, wv) in row.iter().zip(&sv) {
-                along_v += *x * *wv;
-            }
-            res += along_v * *wu;
+        // σⁿ(v) on the stack for up to STACK columns, else recomputed per row: no allocation.
+        const STACK: usize = 128;
+        let sigma_v = Sigma::new(self.n);
+        let mut sv = [0.0; STACK];
+        if self.n <= STACK {
+            sigma_v.for_each_value(v, |k, s| sv[k] = s);
         }
+        let mut res = P::ZERO;
+        Sigma::new(self.m).for_each_value(u, |j, wu| {
+            let row = &self.grid[j * self.n..(j + 1) * self.n];
+            let mut along_v = P::ZERO;
+            if self.n <= STACK {
+                for (x, wv) in row.iter().zip(&sv) {
+                    along_v += *x * *wv;
+                }
+            } else {
+                sigma_v.for_each_value(v, |k, wv| along_v += row[k] * wv);
+            }
+            res += along_v * wu;
+        });
         res
     }
 
@@ -151,6 +161,24 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     #[must_use]
     pub fn eval_deriv(&self, u: f64, v: f64, p: usize, q: usize) -> P {
         self.spectrum.eval_deriv(u, v, p, q)
+    }
+
+    /// (p, pᵤ, pᵥ) at (u, v) from the 2-D spectrum in one pass, without allocating: the
+    /// kernel of a ray tracer's Newton steps. The same values as [`HarmonicSurface::eval_deriv`]
+    /// with (0, 0), (1, 0) and (0, 1), to rounding.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let t = hi_surface::torus(2.0, 0.5);
+    /// let (p, pu, pv) = t.eval_with_partials(0.1, 0.3);
+    /// assert!((p - t.eval_deriv(0.1, 0.3, 0, 0)).length() < 1e-13);
+    /// assert!((pu - t.eval_deriv(0.1, 0.3, 1, 0)).length() < 1e-12);
+    /// assert!((pv - t.eval_deriv(0.1, 0.3, 0, 1)).length() < 1e-12);
+    /// ```
+    #[must_use]
+    pub fn eval_with_partials(&self, u: f64, v: f64) -> (P, P, P) {
+        self.spectrum.eval_with_partials(u, v)
     }
 
     /// An upper bound of ‖∂^{p+q}p/∂uᵖ∂v^q‖ over the whole surface, from its 2-D spectrum in

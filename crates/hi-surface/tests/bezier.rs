@@ -46,7 +46,9 @@ fn bumpy(m: usize, n: usize, seed: f64) -> HarmonicSurface<DVec3> {
 #[test]
 fn thesis_cubic_patches_interpolate_the_surface_at_sixteen_nodes_each() {
     let s = bumpy(5, 6, 0.3);
-    let b = s.to_bezier(BezierScheme::ThesisCubic, None).expect("converts");
+    let b = s
+        .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)
+        .expect("converts");
     assert_eq!(b.report.patches, 30, "m×n patches");
     assert_eq!(b.report.degree, (3, 3), "bicubic");
     for a in 0..5 {
@@ -81,8 +83,11 @@ fn thesis_cubic_patches_are_affine_invariant() {
         s.rows().into_iter().map(|r| r.into_iter().map(|p| 2.0 * p + shift).collect()).collect(),
     );
     let (b0, b1) = (
-        s.to_bezier(BezierScheme::ThesisCubic, None).expect("converts"),
-        moved.to_bezier(BezierScheme::ThesisCubic, None).expect("converts"),
+        s.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)
+            .expect("converts"),
+        moved
+            .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)
+            .expect("converts"),
     );
     for (p, q) in b0.patches.iter().zip(&b1.patches) {
         for (x, y) in p.control_points().iter().zip(q.control_points()) {
@@ -95,7 +100,9 @@ fn thesis_cubic_patches_are_affine_invariant() {
 fn hermite_patches_are_c1_and_within_the_tolerance() {
     let s = bumpy(6, 8, 0.7);
     for (degree, tol) in [(HermiteDegree::Cubic, 1e-3), (HermiteDegree::Quintic, 1e-5)] {
-        let b = s.to_bezier(BezierScheme::Hermite(degree), Some(tol)).expect("converts");
+        let b = s
+            .to_bezier(BezierScheme::Hermite(degree), hi_curve::bezier::Tolerance::Absolute(tol))
+            .expect("converts");
         let r = b.report;
         assert!(r.bound <= tol, "{degree:?}: {r:?}");
         assert!(r.max_deviation <= r.bound, "{degree:?}: {r:?}");
@@ -130,17 +137,23 @@ fn hermite_patches_are_c1_and_within_the_tolerance() {
 #[test]
 fn the_thesis_quintic_patches_stay_within_their_bound() {
     let s = torus(2.0, 1.0);
-    let b = s.to_bezier(BezierScheme::ThesisQuintic, None).expect("converts");
+    let b = s
+        .to_bezier(BezierScheme::ThesisQuintic, hi_curve::bezier::DEFAULT_TOLERANCE)
+        .expect("converts");
     assert_eq!(b.report.degree, (5, 5), "biquintic");
     assert!(b.report.max_deviation <= b.report.bound, "{:?}", b.report);
-    let cubic = s.to_bezier(BezierScheme::ThesisCubic, None).expect("converts");
+    let cubic = s
+        .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)
+        .expect("converts");
     assert!(b.report.max_deviation < cubic.report.max_deviation, "closer than the cubic");
 }
 
 #[test]
 fn patches_tessellate_with_one_colour_each_and_write_obj_free_form() {
     let s = torus(2.0, 1.0);
-    let b = s.to_bezier(BezierScheme::ThesisCubic, None).expect("converts");
+    let b = s
+        .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)
+        .expect("converts");
     let mesh = b.to_triangle_mesh(6).expect("mesh");
     assert_eq!(mesh.n_vertices(), 16 * 49, "(k + 1)² vertices per patch");
     assert_eq!(mesh.n_triangles(), 16 * 72, "2k² triangles per patch");
@@ -189,14 +202,23 @@ fn patches_tessellate_with_one_colour_each_and_write_obj_free_form() {
 fn bad_tolerances_and_small_grids_are_errors() {
     let s = torus(2.0, 1.0);
     let hermite = BezierScheme::Hermite(HermiteDegree::Cubic);
-    assert!(matches!(s.to_bezier(hermite, Some(-1.0)), Err(Error::InvalidValue { .. })));
     assert!(matches!(
-        s.to_bezier(hermite, Some(f64::INFINITY)),
+        s.to_bezier(hermite, hi_curve::bezier::Tolerance::Absolute(-1.0)),
+        Err(Error::InvalidValue { .. })
+    ));
+    assert!(matches!(
+        s.to_bezier(hermite, hi_curve::bezier::Tolerance::Absolute(f64::INFINITY)),
         Err(Error::NonFiniteParameter { .. })
     ));
     let small = bumpy(2, 5, 0.0);
-    assert!(matches!(small.to_bezier(BezierScheme::ThesisQuintic, None), Err(Error::Curve(_))));
-    assert!(matches!(s.to_bezier(hermite, Some(1e-300)), Err(Error::InvalidCount { .. })));
+    assert!(matches!(
+        small.to_bezier(BezierScheme::ThesisQuintic, hi_curve::bezier::DEFAULT_TOLERANCE),
+        Err(Error::Curve(_))
+    ));
+    assert!(matches!(
+        s.to_bezier(hermite, hi_curve::bezier::Tolerance::Absolute(1e-300)),
+        Err(Error::InvalidCount { .. })
+    ));
 }
 
 proptest! {
@@ -211,7 +233,7 @@ proptest! {
     ) {
         let s = bumpy(m, n, seed);
         let tol = 10f64.powi(-exp);
-        let b = s.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(tol)).unwrap();
+        let b = s.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), hi_curve::bezier::Tolerance::Absolute(tol)).unwrap();
         prop_assert!(b.report.bound <= tol);
         prop_assert!(b.report.max_deviation <= b.report.bound);
     }

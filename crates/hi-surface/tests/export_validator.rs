@@ -103,7 +103,8 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
         cases.into_iter().map(|(name, s, opts)| (name, s.to_mesh(&opts).unwrap())).collect();
     // Bézier patches of §5.7, one colour per patch (the sphere's patches meet at the poles).
     for (name, s) in [("torus_patches", torus(2.0, 0.5)), ("sphere_patches", sphere(1.0))] {
-        let patches = s.to_bezier(BezierScheme::ThesisCubic, None).unwrap();
+        let patches =
+            s.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE).unwrap();
         all.push((name, patches.to_triangle_mesh(8).unwrap()));
     }
     all

@@ -192,7 +192,7 @@ fn fast_grids_equal_direct_evaluation() {
     let (n_u, n_v) = (23, 40);
     let us: Vec<f64> = (0..n_u).map(|i| i as f64 / n_u as f64).collect();
     let vs: Vec<f64> = (0..n_v).map(|l| l as f64 / n_v as f64).collect();
-    let direct = s.sample_params_direct(&us, &vs).unwrap();
+    let direct = hi_surface::testing::sample_params_direct(&s, &us, &vs).unwrap();
     let separable = s.sample_params(&us, &vs, 0, 0).unwrap();
     let fft = s.sample_uniform(n_u, n_v, 0, 0).unwrap();
     let scale = s.points().iter().map(|p| p.length()).fold(1.0, f64::max);
@@ -292,6 +292,35 @@ fn uniform_fft_grid_equals_separable_sums_for_every_size() {
                     );
                 }
             }
+        }
+    }
+}
+
+/// The one-pass (p, pᵤ, pᵥ) of the spectrum, on a grid small enough for its stack row and on
+/// one too large for it (degree ≥ 64 in v), against the general derivative and the direct sum.
+#[test]
+fn eval_with_partials_matches_the_derivatives() {
+    for (m, n) in [(6usize, 9usize), (11, 140)] {
+        let grid: Vec<Vec<DVec3>> = (0..m)
+            .map(|j| {
+                (0..n)
+                    .map(|k| {
+                        let (a, b) = (j as f64, k as f64);
+                        DVec3::new(
+                            (0.7 * a + 0.3 * b).sin(),
+                            (1.1 * a).cos() + 0.01 * b,
+                            (a * b).sin(),
+                        )
+                    })
+                    .collect()
+            })
+            .collect();
+        let s = HarmonicSurface::try_new(grid).expect("finite grid");
+        for (u, v) in [(0.1, 0.2), (0.77, 0.31), (0.5, 0.0), (-3.25, 7.9)] {
+            let (p, pu, pv) = s.eval_with_partials(u, v);
+            assert!((p - s.eval(u, v)).length() < 1e-11, "p at {m}×{n}");
+            assert!((pu - s.eval_deriv(u, v, 1, 0)).length() < 1e-9, "pu at {m}×{n}");
+            assert!((pv - s.eval_deriv(u, v, 0, 1)).length() < 1e-9, "pv at {m}×{n}");
         }
     }
 }

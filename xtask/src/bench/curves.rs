@@ -90,12 +90,16 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         let direct = if n <= DIRECT_MAX {
             let t = if n >= DIRECT_ONCE {
                 let start = Instant::now();
-                std::hint::black_box(one.install(|| curve.sample_uniform_direct(samples))?);
+                std::hint::black_box(
+                    one.install(|| hi_curve::testing::sample_uniform_direct(&curve, samples))?,
+                );
                 start.elapsed()
             } else {
                 one.install(|| {
                     median_time(RUNS, || {
-                        std::hint::black_box(curve.sample_uniform_direct(samples)?);
+                        std::hint::black_box(hi_curve::testing::sample_uniform_direct(
+                            &curve, samples,
+                        )?);
                         Ok(())
                     })
                 })?
@@ -108,7 +112,10 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         // The two paths compute the same samples: the largest difference, relative to the
         // largest coordinate.
         let agreement = if n <= DIRECT_ONCE {
-            let (a, b) = (curve.sample_uniform(samples)?, curve.sample_uniform_direct(samples)?);
+            let (a, b) = (
+                curve.sample_uniform(samples)?,
+                hi_curve::testing::sample_uniform_direct(&curve, samples)?,
+            );
             let scale = a.iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
             let diff = a.iter().zip(&b).map(|(p, q)| (*p - *q).abs().max_element());
             format!("{:.1e}", diff.fold(0.0, f64::max) / scale)
@@ -163,7 +170,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
          Machine: {}.\n\n\
          A planar harmonic curve through n points xₖ = (3 sin 0.37k, cos 1.3k + 0.01k), sampled \
          at N = {FACTOR}n uniform parameters on one thread: by the thesis's direct sum of the \
-         Dirichlet-kernel basis (`HarmonicCurve::sample_uniform_direct`, O(nN); timed once, \
+         Dirichlet-kernel basis (`hi_curve::testing::sample_uniform_direct`, O(nN); timed once, \
          without a warm-up, from n = {DIRECT_ONCE}, and not run past n = {DIRECT_MAX}), by our \
          FFT path (`HarmonicCurve::sample_uniform`, O(N log N)), and by `scipy.signal.resample` \
          on the same points, which computes the same samples. Medians of {RUNS} runs after a \

@@ -72,10 +72,11 @@ fn combined(scan: &Scan) -> Result<Combined> {
     let start = std::time::Instant::now();
     let fitted = fit(scan, &options, &mut |_| {})?;
     let converting = std::time::Instant::now();
-    let patches = fitted.surface.to_bezier(BezierScheme::ThesisCubic, None)?;
+    let patches =
+        fitted.surface.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     let end = std::time::Instant::now();
     let mut stages: Vec<(String, f64)> =
-        fitted.report.stages.iter().map(|s| (s.name.to_owned(), s.seconds)).collect();
+        fitted.stages.iter().map(|s| (s.name.to_owned(), s.seconds)).collect();
     stages.push(("Bézier patches".to_owned(), (end - converting).as_secs_f64()));
     Ok(Combined { stages, total: end - start, patches: patches.report.patches })
 }
@@ -248,16 +249,16 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         let fitted = fit(scan, &options, &mut |_| {})?;
         let r = &fitted.report;
         let stage = |want: &str| {
-            r.stages.iter().filter(|s| s.name.contains(want)).map(|s| s.seconds).sum::<f64>()
+            fitted.stages.iter().filter(|s| s.name.contains(want)).map(|s| s.seconds).sum::<f64>()
         };
-        let total: f64 = r.stages.iter().map(|s| s.seconds).sum();
+        let total: f64 = fitted.stages.iter().map(|s| s.seconds).sum();
         // The fit a user waits for: every stage but the measurement of its error.
         let without_error = total - stage("fit error");
         slowest_interpolation =
             slowest_interpolation.max(Duration::from_secs_f64(stage("rasterisation")));
         let ours = r.errors.as_ref().map(|d| d.relative());
         let stages: Vec<String> =
-            r.stages.iter().map(|s| format!("{} {:.3}", s.name, s.seconds)).collect();
+            fitted.stages.iter().map(|s| format!("{} {:.3}", s.name, s.seconds)).collect();
         pipeline.push(vec![
             name.clone(),
             r.points.to_string(),

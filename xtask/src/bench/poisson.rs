@@ -32,9 +32,7 @@ use anyhow::{Context, Result, bail};
 use glam::{DVec2, DVec3};
 use hi_geomimage::scan::read_scan;
 use hi_mesh::TriangleMesh;
-use hi_raytrace::{
-    Camera, Geometry, Light, MeshObject, RenderSettings, Scene, SceneObject, render,
-};
+use hi_raytrace::{Camera, Geometry, Light, MeshObject, RenderOptions, Scene, SceneObject, render};
 use indicatif::ProgressBar;
 
 use super::{Headline, median, table};
@@ -422,7 +420,7 @@ fn render_row(
         Light::Directional { direction: eye + up * 1.2 + side * 0.6, intensity: [0.85; 3] },
         Light::Directional { direction: eye - side, intensity: [0.3; 3] },
     ];
-    let settings = RenderSettings {
+    let settings = RenderOptions {
         width: PANEL.0,
         height: PANEL.1,
         samples_per_pixel: 4,

@@ -11,7 +11,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Result;
-use hi_raytrace::{TorusMethod, render_torus, torus_scene};
+use hi_raytrace::testing::{TorusMethod, render_torus, torus_scene};
 
 use super::{
     Growth, Headline, Section, growth_plot, machine, median, median_time, ms, progress_bar, table,
@@ -110,7 +110,7 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
         "## Rendering (§5.5, §5.6)\n\n\
          Machine: {}.\n\n\
          The harmonic torus through the 4×4 torus grid (R = 2, r = 1) at 512×512, one sample per pixel, \
-         a directional and a point light with shadow rays (`hi_raytrace::render_torus`, all cores), by each \
+         a directional and a point light with shadow rays (`hi_raytrace::testing::render_torus`, all cores), by each \
          method of `hi-raytrace`: interval Newton (Krawczyk) and interval bisection on the surface itself, C1 \
          Bézier patches within 1e-4 of it, and a mesh of 128×256 quads. Preparation is building the scene \
          (spectra, cell enclosures and BVH; patches; tessellation); render is the image. Times are medians \

@@ -55,7 +55,7 @@ fn harmonic_torus() -> Result<Vec<u8>> {
 fn torus_patches(scheme: BezierScheme) -> Result<SurfaceBezier<DVec3>> {
     let s = the_torus();
     let tolerance = 1e-3 * 6.0; // the 4×4 torus grid spans 6 × 6 × 2: diagonal ≈ 8.7
-    let b = s.to_bezier(scheme, Some(tolerance))?;
+    let b = s.to_bezier(scheme, hi_curve::bezier::Tolerance::Absolute(tolerance))?;
     ensure!(
         b.report.max_deviation <= b.report.bound,
         "{}: deviation above its bound",
@@ -98,7 +98,8 @@ fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
     let fitted = fit(&scan, &options, &mut |_| {})?;
     ensure!(fitted.report.non_star_fraction < 0.05, "the head is not star-shaped about its centre");
     ensure!(fitted.report.surface_size == (HEAD_IMAGE, HEAD_IMAGE), "reduced to a quarter");
-    let b = fitted.surface.to_bezier(BezierScheme::ThesisCubic, None)?;
+    let b =
+        fitted.surface.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     ensure!(b.report.max_deviation <= b.report.bound, "deviation above its bound");
     let (u0, u1) = Layout::FlatOctahedron.covering_window();
     let once = b.patches_in([u0, u1]);
@@ -238,9 +239,14 @@ fn scheme_table() -> Result<String> {
     for n in [4usize, 8, 16, 32, 64, 128] {
         let delta: Vec<f64> = (0..n).map(|k| f64::from(u8::from(k == 0))).collect();
         let curve = HarmonicCurve::try_new(delta)?;
-        let cubic = curve.to_bezier(BezierScheme::ThesisCubic, None)?;
-        let quintic = curve.to_bezier(BezierScheme::ThesisQuintic, None)?;
-        let hermite = curve.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4))?;
+        let cubic =
+            curve.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
+        let quintic =
+            curve.to_bezier(BezierScheme::ThesisQuintic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
+        let hermite = curve.to_bezier(
+            BezierScheme::Hermite(HermiteDegree::Cubic),
+            hi_curve::bezier::Tolerance::Absolute(1e-4),
+        )?;
         for r in [&cubic.report, &quintic.report, &hermite.report] {
             ensure!(r.max_deviation <= r.bound, "n = {n}: a deviation above its bound");
         }

@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use hi_bezier::{Bernstein, BezierCurve, PiecewiseBezier, RationalBezierCurve};
 use hi_compare::bspline::{BSplineBasis, BSplineCurve};
 use hi_compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
-use hi_compare::hobby::{HobbyConfig, HobbyCurve};
+use hi_compare::hobby::{HobbyCurve, HobbyOptions};
 use hi_compare::lagrange::{LagrangeBasis, LagrangeCurve};
 use hi_curve::{ParamCurve, PlaneCurve, SpaceCurve};
 
@@ -479,9 +479,9 @@ fn periodic_interpolation(title: &str) -> Result<Vec<u8>> {
 /// Figures 2.15 and 2.16: METAPOST open (zigzag) or closed (pentagon).
 fn metapost(title: &str, closed: bool) -> Result<Vec<u8>> {
     let (points, config) = if closed {
-        (data::plane(&data::PEER_PENTAGON), HobbyConfig::closed())
+        (data::plane(&data::PEER_PENTAGON), HobbyOptions::closed())
     } else {
-        (data::plane(&data::ZIGZAG), HobbyConfig::open())
+        (data::plane(&data::ZIGZAG), HobbyOptions::open())
     };
     let curve = HobbyCurve::try_new(points.clone(), &config)?;
     let mut polygon = Vec::new();

@@ -166,8 +166,10 @@ fn example_patches() -> Result<Vec<u8>> {
 
 /// Figure 4.3: a torus as the thesis's C0 bicubic patches (§5.7), one colour per patch.
 fn piecewise_patches() -> Result<Vec<u8>> {
-    let b: SurfaceBezier<DVec3> =
-        torus(2.5, 1.0).to_bezier(hi_curve::bezier::BezierScheme::ThesisCubic, None)?;
+    let b: SurfaceBezier<DVec3> = torus(2.5, 1.0).to_bezier(
+        hi_curve::bezier::BezierScheme::ThesisCubic,
+        hi_curve::bezier::DEFAULT_TOLERANCE,
+    )?;
     ensure!(b.report.patches == 16, "the 16 patches of the 4×4 grid");
     let all: Vec<usize> = (0..b.patches.len()).collect();
     let m = b.to_triangle_mesh_of(8, &all)?;

@@ -11,7 +11,7 @@ use anyhow::Result;
 use glam::DVec2;
 use hi_compare::bspline_interp::{InterpolatingSpline, Parameters};
 use hi_compare::fairness::{curvature_plot, fairness};
-use hi_compare::hobby::{HobbyConfig, HobbyCurve};
+use hi_compare::hobby::{HobbyCurve, HobbyOptions};
 use hi_curve::{HarmonicCurve, ParamCurve};
 
 use super::curves::{closed, data_plot};
@@ -90,7 +90,7 @@ impl Method {
                 Box::new(InterpolatingSpline::try_periodic(points.to_vec(), Parameters::Uniform)?)
             }
             Method::Metapost => {
-                Box::new(HobbyCurve::try_new(points.to_vec(), &HobbyConfig::closed())?)
+                Box::new(HobbyCurve::try_new(points.to_vec(), &HobbyOptions::closed())?)
             }
         })
     }
@@ -333,7 +333,7 @@ fn control_polygon(method: Method, points: &[DVec2]) -> Result<Option<Vec<DVec2>
     Ok(match method {
         Method::Harmonic => None,
         Method::Metapost => {
-            let curve = HobbyCurve::try_new(points.to_vec(), &HobbyConfig::closed())?;
+            let curve = HobbyCurve::try_new(points.to_vec(), &HobbyOptions::closed())?;
             let knots = curve.knots();
             let mut polygon = Vec::with_capacity(3 * knots.len() + 1);
             for (k, knot) in knots.iter().enumerate() {

@@ -13,9 +13,10 @@ use std::f64::consts::PI;
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_mesh::TriangleMesh;
+use hi_raytrace::testing::{TorusMethod, torus_scene};
 use hi_raytrace::{
-    Camera, EdgeStyle, Geometry, HarmonicObject, HarmonicSettings, IntervalMethod, Light,
-    MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, TorusMethod, render, torus_scene,
+    Camera, EdgeStyle, Geometry, HarmonicObject, HarmonicOptions, IntervalMethod, Light,
+    MeshObject, RenderOptions, Scene, SceneObject, SurfaceColor, render,
 };
 use hi_surface::{HarmonicSurface, sphere, torus};
 
@@ -99,7 +100,7 @@ fn lights(view: DVec3) -> Vec<Light> {
 
 /// Renders `scene` through `camera` to PNG bytes.
 fn png(scene: &Scene, camera: &Camera, spp: u32) -> Result<Vec<u8>> {
-    let settings = RenderSettings {
+    let settings = RenderOptions {
         width: WIDTH,
         height: HEIGHT,
         samples_per_pixel: spp,
@@ -198,7 +199,7 @@ fn scanline_torus() -> Result<Vec<u8>> {
 /// Krawczyk, with bisection where it cannot decide), on a floor, with shadows.
 fn raytraced_torus() -> Result<Vec<u8>> {
     let settings =
-        HarmonicSettings { method: IntervalMethod::Krawczyk, ..HarmonicSettings::default() };
+        HarmonicOptions { method: IntervalMethod::Krawczyk, ..HarmonicOptions::default() };
     let harmonic =
         |surface: HarmonicSurface<DVec3>, shift: DVec3, color: [f32; 3]| -> Result<SceneObject> {
             let moved = HarmonicSurface::try_from_flat(

@@ -3,7 +3,7 @@
 
 use hi_curve::{Error, Sigma};
 
-use hi_interval::{Interval, RootConfig, Verdict};
+use hi_interval::{Interval, RootOptions, Verdict};
 
 use crate::cli::{BasisArgs, BasisCommand, RootsArgs};
 use crate::error::{Failure, context};
@@ -55,7 +55,7 @@ fn run_roots(args: &RootsArgs) -> Result<Json, Failure> {
         )));
     }
     let found =
-        sigma.derivative_roots(args.derivative, Interval::new(0.0, 1.0), &RootConfig::default());
+        sigma.derivative_roots(args.derivative, Interval::new(0.0, 1.0), &RootOptions::default());
     let verdict = |v: Verdict| match v {
         Verdict::Unique => "unique",
         Verdict::Exists => "exists",

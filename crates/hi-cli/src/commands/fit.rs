@@ -131,7 +131,13 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         let scheme = args.bezier_scheme.unwrap_or(BezierScheme::Hermite(HermiteDegree::Cubic));
         let patches = fitted
             .surface
-            .to_bezier(scheme, args.tolerance)
+            .to_bezier(
+                scheme,
+                args.tolerance.map_or(
+                    hi_curve::bezier::DEFAULT_TOLERANCE,
+                    hi_curve::bezier::Tolerance::Absolute,
+                ),
+            )
             .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
         let seconds = start.elapsed().as_secs_f64();
         let (u0, u1) = options.layout.covering_window();
@@ -189,7 +195,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
 /// The summary of a fit as JSON.
 fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Json {
     let r = &fitted.report;
-    let stages = r
+    let stages = fitted
         .stages
         .iter()
         .map(|s| {

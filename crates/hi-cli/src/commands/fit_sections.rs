@@ -102,7 +102,7 @@ fn distances(d: Option<&Distances>) -> Json {
 /// The summary of a fit by algorithm 1 as JSON.
 fn summary(args: &FitArgs, fitted: &SectionFit, dropped: usize, files: &[PathBuf]) -> Json {
     let r = &fitted.report;
-    let stages = r
+    let stages = fitted
         .stages
         .iter()
         .map(|s: &Stage| {

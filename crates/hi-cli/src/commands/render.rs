@@ -10,8 +10,8 @@ use hi_bezier::BezierPatch;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_mesh::{TriangleMesh, srgb_to_linear_rgb};
 use hi_raytrace::{
-    BezierObject, BezierSettings, Camera, Geometry, HarmonicObject, HarmonicSettings,
-    IntervalMethod, Light, MeshObject, RenderSettings, Scene, SceneObject, SurfaceColor, render,
+    BezierObject, BezierOptions, Camera, Geometry, HarmonicObject, HarmonicOptions, IntervalMethod,
+    Light, MeshObject, RenderOptions, Scene, SceneObject, SurfaceColor, render,
 };
 use hi_surface::{CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -51,11 +51,11 @@ pub(crate) fn run(args: &RenderArgs) -> Result<Json, Failure> {
         let value = flag.or(scene).unwrap_or(default);
         u32::try_from(value).map_err(|_| Failure::input(format!("{what} {value}: too large")))
     };
-    let settings = RenderSettings {
+    let settings = RenderOptions {
         width: pick(args.width, loaded.size.0, DEFAULT_SIZE, "--width")?,
         height: pick(args.height, loaded.size.1, DEFAULT_SIZE, "--height")?,
         samples_per_pixel: pick(args.spp, loaded.size.2, DEFAULT_SPP, "--spp")?,
-        ..RenderSettings::default()
+        ..RenderOptions::default()
     };
     let bar = if std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(0);
@@ -247,7 +247,7 @@ fn load_object(
         }
         FileKind::Patches(patches) => {
             mismatch("bezier")?;
-            let object = BezierObject::try_new(patches, &BezierSettings::default())
+            let object = BezierObject::try_new(patches, &BezierOptions::default())
                 .map_err(|e| e.to_string())?;
             Ok(Geometry::Bezier(object))
         }
@@ -267,13 +267,13 @@ fn harmonic_geometry(
     let coloring = curvature.map(|(c, p)| (quantity(c), p.color_map()));
     Ok(match method {
         RenderMethod::Interval | RenderMethod::Bisection => {
-            let settings = HarmonicSettings {
+            let settings = HarmonicOptions {
                 method: if method == RenderMethod::Interval {
                     IntervalMethod::Krawczyk
                 } else {
                     IntervalMethod::Bisection
                 },
-                ..HarmonicSettings::default()
+                ..HarmonicOptions::default()
             };
             let mut object = HarmonicObject::try_new(surface, &settings)?;
             if let Some((quantity, map)) = coloring {
@@ -282,8 +282,11 @@ fn harmonic_geometry(
             Geometry::Harmonic(object)
         }
         RenderMethod::Bezier => {
-            let patches = surface.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), None)?;
-            Geometry::Bezier(BezierObject::from_surface(&patches, &BezierSettings::default())?)
+            let patches = surface.to_bezier(
+                BezierScheme::Hermite(HermiteDegree::Cubic),
+                hi_curve::bezier::DEFAULT_TOLERANCE,
+            )?;
+            Geometry::Bezier(BezierObject::from_surface(&patches, &BezierOptions::default())?)
         }
         RenderMethod::Mesh => {
             let color = coloring.map(|(quantity, map)| CurvatureColoring { quantity, map });

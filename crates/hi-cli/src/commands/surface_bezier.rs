@@ -44,7 +44,11 @@ pub(crate) fn run(args: &SurfaceBezierArgs, pretty: bool) -> Result<Json, Failur
     }
     let surface = read_surface(&args.input.input)?;
     let patches = surface
-        .to_bezier(args.scheme, args.tolerance)
+        .to_bezier(
+            args.scheme,
+            args.tolerance
+                .map_or(hi_curve::bezier::DEFAULT_TOLERANCE, hi_curve::bezier::Tolerance::Absolute),
+        )
         .map_err(|e| Failure::input(format!("--scheme/--tolerance: {e}")))?;
     let report = report_json(args.scheme.name(), &patches.report);
     let files = match kind {

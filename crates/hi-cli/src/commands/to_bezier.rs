@@ -46,7 +46,13 @@ fn harmonic<P: ControlPoint>(
     tolerance: Option<f64>,
 ) -> Result<Json, Failure> {
     let curve = HarmonicCurve::try_new(points).map_err(|e| Failure::input(e.to_string()))?;
-    let b = curve.to_bezier(scheme, tolerance).map_err(|e| Failure::input(e.to_string()))?;
+    let b = curve
+        .to_bezier(
+            scheme,
+            tolerance
+                .map_or(hi_curve::bezier::DEFAULT_TOLERANCE, hi_curve::bezier::Tolerance::Absolute),
+        )
+        .map_err(|e| Failure::input(e.to_string()))?;
     let segments = b.spline.segments().iter().map(|s| Json::points(s.control_points())).collect();
     let r = b.report;
     let report = Object::new()

@@ -124,8 +124,8 @@ impl BSplineSurface {
         let n_i = if ua.closed { ub.len() - 1 } else { ub.len() };
         let n_j = if va.closed { vb.len() - 1 } else { vb.len() };
         let p = |u: f64, v: f64| self.eval(u, v);
-        let pu = |u: f64, v: f64| self.eval_partial(u, v, 1, 0);
-        let pv = |u: f64, v: f64| self.eval_partial(u, v, 0, 1);
+        let pu = |u: f64, v: f64| self.eval_deriv(u, v, 1, 0);
+        let pv = |u: f64, v: f64| self.eval_deriv(u, v, 0, 1);
         (0..n_i)
             .map(|i| {
                 let (_, u) = neighbour(ua, &ub, i as isize);

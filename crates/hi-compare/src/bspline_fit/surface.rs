@@ -44,7 +44,7 @@ use crate::Error;
 /// // x = 3u, y = 3v, z = u·v exactly (the net is that of the bilinear function).
 /// let p = s.eval(0.25, 0.5);
 /// assert!((p - DVec3::new(0.75, 1.5, 0.125)).length() < 1e-15);
-/// assert!((s.eval_partial(0.25, 0.5, 1, 1) - DVec3::Z).length() < 1e-14);
+/// assert!((s.eval_deriv(0.25, 0.5, 1, 1) - DVec3::Z).length() < 1e-14);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct BSplineSurface {
@@ -174,14 +174,14 @@ impl BSplineSurface {
     /// p(u, v), by de Boor's algorithm in both directions.
     #[must_use]
     pub fn eval(&self, u: f64, v: f64) -> DVec3 {
-        self.eval_partial(u, v, 0, 0)
+        self.eval_deriv(u, v, 0, 0)
     }
 
     /// The partial derivative ∂^(a+b) p/∂uᵃ∂vᵇ at (u, v), exact (zero above order 3 in either
     /// direction inside a piece). At a knot the piece on the right is used (on the left at the
     /// end of an open direction).
     #[must_use]
-    pub fn eval_partial(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> DVec3 {
+    pub fn eval_deriv(&self, u: f64, v: f64, order_u: usize, order_v: usize) -> DVec3 {
         let (u, _) = self.u.wrap(u);
         let (v, _) = self.v.wrap(v);
         let (ju, jv) = (self.u.span(u), self.v.span(v));
@@ -325,7 +325,7 @@ impl BSplineSurface {
                 let t = c as f64 / n_v as f64;
                 let v = v0 + t * (v1 - v0);
                 positions.push(self.eval(u, v));
-                let n = self.eval_partial(u, v, 1, 0).cross(self.eval_partial(u, v, 0, 1));
+                let n = self.eval_deriv(u, v, 1, 0).cross(self.eval_deriv(u, v, 0, 1));
                 let tiny = 1e-10 * scale * scale * (u1 - u0).recip() * (v1 - v0).recip();
                 if n.length() > tiny {
                     normals.push(n.normalize());

@@ -7,7 +7,7 @@
 //! The closed form divides by sin(π(t − k/n)), so over an interval containing a node t ≡ k/n it
 //! is unbounded; the cosine sum is bounded everywhere (the thesis found it the tighter form).
 
-use hi_interval::{Interval, RootConfig, Roots1, Scalar, find_roots_1d};
+use hi_interval::{Interval, RootOptions, Roots1, Scalar, find_roots_1d};
 
 use super::Sigma;
 
@@ -112,15 +112,15 @@ impl Sigma {
     ///
     /// ```
     /// use hi_curve::Sigma;
-    /// use hi_interval::{Interval, RootConfig, Verdict};
+    /// use hi_interval::{Interval, RootOptions, Verdict};
     /// // n = 3: σ = (1 + 2 cos 2πt)/3, so σ′ vanishes at t = 0 and 1/2 (and 1).
-    /// let roots = Sigma::new(3).deriv_roots(Interval::new(-0.1, 1.1), &RootConfig::default());
+    /// let roots = Sigma::new(3).deriv_roots(Interval::new(-0.1, 1.1), &RootOptions::default());
     /// assert_eq!(roots.roots.len(), 3);
     /// assert!(roots.roots[1].enclosure.contains(0.5));
     /// assert!(roots.roots.iter().all(|r| r.verdict == Verdict::Unique));
     /// ```
     #[must_use]
-    pub fn deriv_roots(&self, domain: Interval, config: &RootConfig) -> Roots1 {
+    pub fn deriv_roots(&self, domain: Interval, config: &RootOptions) -> Roots1 {
         self.derivative_roots(1, domain, config)
     }
 
@@ -132,14 +132,14 @@ impl Sigma {
     ///
     /// ```
     /// use hi_curve::Sigma;
-    /// use hi_interval::{Interval, RootConfig};
+    /// use hi_interval::{Interval, RootOptions};
     /// // σ⁴ vanishes at 1/4, 2/4 and 3/4.
-    /// let roots = Sigma::new(4).derivative_roots(0, Interval::new(0.1, 0.9), &RootConfig::default());
+    /// let roots = Sigma::new(4).derivative_roots(0, Interval::new(0.1, 0.9), &RootOptions::default());
     /// assert_eq!(roots.roots.len(), 3);
     /// assert!(roots.roots[0].enclosure.contains(0.25));
     /// ```
     #[must_use]
-    pub fn derivative_roots(&self, order: usize, domain: Interval, config: &RootConfig) -> Roots1 {
+    pub fn derivative_roots(&self, order: usize, domain: Interval, config: &RootOptions) -> Roots1 {
         let n = self.n;
         find_roots_1d(|t| cosine_sum(n, t, order), |t| cosine_sum(n, t, order + 1), domain, config)
     }
@@ -236,7 +236,7 @@ mod tests {
             let sigma = Sigma::new(n);
             // Search slightly past [0, 1] so that the zeros 0 and 1 are interior.
             let pad = 0.25 / n as f64;
-            let res = sigma.deriv_roots(Interval::new(-pad, 1.0 + pad), &RootConfig::default());
+            let res = sigma.deriv_roots(Interval::new(-pad, 1.0 + pad), &RootOptions::default());
             assert!(res.complete, "n = {n}");
             let expected = if n % 2 == 1 { n } else { n + 1 };
             assert_eq!(res.roots.len(), expected, "n = {n}: {res:?}");

@@ -178,6 +178,21 @@ impl Sigma {
         out
     }
 
+    /// Calls `f(k, σⁿₖ(t))` for k = 0, …, n − 1 in order, without allocating: the values of
+    /// [`Sigma::values`], bit for bit.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let mut sum = 0.0;
+    /// hi_curve::Sigma::new(6).for_each_value(0.3, |_, s| sum += s);
+    /// assert!((sum - 1.0).abs() < 1e-14); // a partition of unity (Theorem 3.1)
+    /// ```
+    #[inline]
+    pub fn for_each_value(&self, t: f64, f: impl FnMut(usize, f64)) {
+        closed_form::for_each_value(self.n, t, f);
+    }
+
     /// Writes σⁿ₀(t), …, σⁿₙ₋₁(t) into `out`, which is resized to n.
     pub fn values_into(&self, t: f64, out: &mut Vec<f64>) {
         out.resize(self.n, 0.0);

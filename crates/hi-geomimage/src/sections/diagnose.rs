@@ -96,7 +96,7 @@ pub(super) fn dense_and_overshoot(
     curve: &HarmonicCurve<DVec3>,
 ) -> Result<(Vec<DVec3>, f64), Error> {
     let n = curve.n();
-    let dense = curve.sample_uniform(SAMPLES_PER_SPAN * n).map_err(hi_surface::Error::from)?;
+    let dense = curve.sample_uniform(SAMPLES_PER_SPAN * n).map_err(Error::from)?;
     let x = curve.points();
     let mut worst = 0.0_f64;
     for (s, q) in dense.iter().enumerate() {

@@ -277,8 +277,6 @@ pub struct SectionReport {
     pub contour_points: usize,
     /// The grid of the surface: (2K, N).
     pub surface_size: (usize, usize),
-    /// The stages, in order, with their times.
-    pub stages: Vec<Stage>,
     /// Σ over neighbouring contours of the squared distances between their points, without
     /// alignment.
     pub deviation_unaligned: f64,
@@ -298,8 +296,8 @@ pub struct SectionReport {
     pub problems: Vec<Problem>,
 }
 
-/// A surface fitted by algorithm 1, with its contours and report.
-#[derive(Clone, Debug, PartialEq)]
+/// A surface fitted by algorithm 1, with its contours, report and stage times.
+#[derive(Clone, Debug)]
 pub struct SectionFit {
     /// The harmonic surface through the 2K × N grid (step 8).
     pub surface: HarmonicSurface<DVec3>,
@@ -308,8 +306,10 @@ pub struct SectionFit {
     pub contours: Vec<Vec<DVec3>>,
     /// Each contour after insertion and rotation: N points, rows 0…K − 1 of the grid.
     pub rows: Vec<Vec<DVec3>>,
-    /// Diagnostics and times.
+    /// Diagnostics: the same for the same input and options.
     pub report: SectionReport,
+    /// The stages, in order, with their wall-clock times (kept out of the report).
+    pub stages: Vec<Stage>,
 }
 
 impl SectionFit {
@@ -497,7 +497,7 @@ fn fit_slabs(
     let start = Instant::now();
     let curves = ordered
         .iter()
-        .map(|o| HarmonicCurve::try_new(o.points.clone()).map_err(hi_surface::Error::from))
+        .map(|o| HarmonicCurve::try_new(o.points.clone()).map_err(Error::from))
         .collect::<Result<Vec<_>, _>>()?;
     // A contour smaller than this is a point (a pole given as repeated points).
     let tiny = 1e-9 * crate::distance::bounding_diagonal(points);
@@ -522,7 +522,7 @@ fn fit_slabs(
     }
     let inserted = curves
         .iter()
-        .map(|c| Ok(c.resample(n).map_err(hi_surface::Error::from)?.0))
+        .map(|c| Ok(c.resample(n).map_err(Error::from)?.0))
         .collect::<Result<Vec<_>, Error>>()?;
     timed("insertion (Theorem 5.3)", &mut stages, start);
 
@@ -597,7 +597,6 @@ fn fit_slabs(
         slices,
         contour_points: n,
         surface_size: (surface.m(), surface.n()),
-        stages,
         deviation_unaligned,
         deviation,
         sampling_scale,
@@ -606,7 +605,7 @@ fn fit_slabs(
         problems,
     };
     let contours = ordered.into_iter().map(|o| o.points).collect();
-    Ok(SectionFit { surface, contours, rows, report })
+    Ok(SectionFit { surface, contours, rows, report, stages })
 }
 
 /// The points of one section in contour order, with the plane they were put on.
@@ -731,7 +730,7 @@ fn align(
         }
     }
     let offset = offset.rem_euclid(1.0);
-    let turned = curve.rotate_theorem_5_1(offset).map_err(hi_surface::Error::from)?;
+    let turned = curve.rotate_theorem_5_1(offset).map_err(Error::from)?;
     Ok((offset, turned.points().to_vec()))
 }
 

@@ -1,18 +1,21 @@
 // SPDX-License-Identifier: MIT
-//! The torus of Hardy 2005, figure 5.26, rendered by each method, for timing: "the process of
-//! raytracing the image took several hours" (§5.6). A report generator calls [`render_torus`]
-//! at 512 × 512 for each [`TorusMethod`]; the benchmarks do the same at a small size.
+//! References and demonstrations, for tests, benchmarks and the figures: the nearest hit on a
+//! mesh by testing every triangle (the reference the BVH is tested against), and the torus of
+//! Hardy 2005, figure 5.26, rendered by each method, for timing: "the process of raytracing
+//! the image took several hours" (§5.6). A report generator calls [`render_torus`] at
+//! 512 × 512 for each [`TorusMethod`]; the benchmarks do the same at a small size.
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_surface::{MeshOptions, torus};
 
-use crate::bezier::{BezierObject, BezierSettings};
+use crate::bezier::{BezierObject, BezierOptions};
 use crate::camera::Camera;
 use crate::error::Error;
-use crate::harmonic::{HarmonicObject, HarmonicSettings, IntervalMethod, SurfaceColor};
-use crate::mesh::MeshObject;
-use crate::render::{RenderSettings, Rendering, render};
+use crate::harmonic::{HarmonicObject, HarmonicOptions, IntervalMethod, SurfaceColor};
+use crate::mesh::{MeshObject, TriangleHit, intersect_triangle};
+use crate::ray::Ray;
+use crate::render::{RenderOptions, Rendering, render};
 use crate::scene::{Geometry, Light, Scene, SceneObject};
 
 /// How the torus is intersected.
@@ -60,13 +63,13 @@ pub fn torus_scene(method: TorusMethod) -> Result<(Scene, Camera), Error> {
     let color = [0.55, 0.62, 0.85];
     let geometry = match method {
         TorusMethod::IntervalNewton | TorusMethod::IntervalBisection => {
-            let settings = HarmonicSettings {
+            let settings = HarmonicOptions {
                 method: if method == TorusMethod::IntervalNewton {
                     IntervalMethod::Krawczyk
                 } else {
                     IntervalMethod::Bisection
                 },
-                ..HarmonicSettings::default()
+                ..HarmonicOptions::default()
             };
             Geometry::Harmonic(
                 HarmonicObject::try_new(surface, &settings)?
@@ -74,10 +77,12 @@ pub fn torus_scene(method: TorusMethod) -> Result<(Scene, Camera), Error> {
             )
         }
         TorusMethod::Bezier => {
-            let patches =
-                surface.to_bezier(BezierScheme::Hermite(HermiteDegree::Cubic), Some(1e-4))?;
+            let patches = surface.to_bezier(
+                BezierScheme::Hermite(HermiteDegree::Cubic),
+                hi_curve::bezier::Tolerance::Absolute(1e-4),
+            )?;
             Geometry::Bezier(
-                BezierObject::from_surface(&patches, &BezierSettings::default())?
+                BezierObject::from_surface(&patches, &BezierOptions::default())?
                     .with_uniform_color(color),
             )
         }
@@ -110,6 +115,23 @@ pub fn render_torus(
     samples_per_pixel: u32,
 ) -> Result<Rendering, Error> {
     let (scene, camera) = torus_scene(method)?;
-    let settings = RenderSettings { width, height, samples_per_pixel, ..RenderSettings::default() };
+    let settings = RenderOptions { width, height, samples_per_pixel, ..RenderOptions::default() };
     render(&scene, &camera, &settings, None)
+}
+
+/// The nearest hit of `ray` on `mesh` by testing every triangle (no BVH): the reference for
+/// the BVH of [`MeshObject`]. The triangle's index and the hit.
+#[must_use]
+pub fn intersect_brute_force(mesh: &MeshObject, ray: &Ray) -> Option<(usize, TriangleHit)> {
+    let m = mesh.mesh();
+    let p = m.positions();
+    let mut best: Option<(usize, TriangleHit)> = None;
+    for (i, tri) in m.triangles().iter().enumerate() {
+        let t_max = best.map_or(ray.t_max, |(_, h)| h.t);
+        let [a, b, c] = tri.map(|k| p[k as usize]);
+        if let Some(h) = intersect_triangle(ray, a, b, c, t_max) {
+            best = Some((i, h));
+        }
+    }
+    best
 }
