@@ -11,10 +11,10 @@
 
 use std::num::NonZero;
 
+use crate::par::*;
 use glam::DVec3;
 use hi_surface::HarmonicSurface;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
-use rayon::prelude::*;
 
 use crate::Error;
 

@@ -892,7 +892,7 @@ fn fit_errors(
     // Scan → surface.
     let forward = || -> Result<Vec<f64>, Error> {
         Ok(if exact {
-            use rayon::prelude::*;
+            use crate::par::*;
             let bvh = TriangleBvh::try_new(mesh.positions(), mesh.triangles())?;
             let grid = HermiteGrid::of(surface, per_texel)?;
             points
@@ -937,7 +937,7 @@ fn fit_errors(
         }
     };
     // Both ways at once (each builds its search structure on one thread).
-    let (per_point, measured) = rayon::join(forward, backward);
+    let (per_point, measured) = crate::par::join(forward, backward);
     let scan_to_surface = Distances::from_values(per_point?, diagonal);
     let mut measured = measured?.into_iter();
     let back: Vec<f64> = (0..samples.len())

@@ -33,6 +33,12 @@
 //! checked numerically; "`docs/peers.md` §N", of its page of
 //! [peer programs](https://github.com/harmonic-interpolation/harmonic/blob/main/docs/peers.md)
 //! that the tests compare against.
+//!
+//! # Feature flags
+//!
+//! | feature | default | adds |
+//! |---|---|---|
+//! | `parallel` | yes | every stage of a fit on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread computes the surface |
 
 pub mod closest;
 pub mod contours;
@@ -43,6 +49,7 @@ pub mod fit;
 mod image;
 pub mod layout_mesh;
 pub mod noise;
+mod par;
 pub mod regularise;
 pub mod repair;
 pub mod sampling;

@@ -12,9 +12,9 @@
 
 use std::num::NonZero;
 
+use crate::par::*;
 use glam::{DMat3, DVec3};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
-use rayon::prelude::*;
 
 /// Neighbours per local fit.
 const K: usize = 24;

@@ -25,8 +25,8 @@
 //! The filter depends on k² and l² only, so it keeps the half-turn symmetry of the doubled
 //! layouts.
 
+use crate::par::*;
 use glam::DVec3;
-use rayon::prelude::*;
 use rustfft::FftPlanner;
 use rustfft::num_complex::Complex64;
 
@@ -157,7 +157,7 @@ pub fn regularise(
     // in (k, l) ↔ (−k, −l), so it acts on each part alone.
     let mut xy: Vec<Complex64> = image.texels().iter().map(|p| Complex64::new(p.x, p.y)).collect();
     let mut z: Vec<Complex64> = image.texels().iter().map(|p| Complex64::new(p.z, 0.0)).collect();
-    rayon::join(|| fft2(&mut xy, rows, cols, false), || fft2(&mut z, rows, cols, false));
+    join(|| fft2(&mut xy, rows, cols, false), || fft2(&mut z, rows, cols, false));
     let lambda = match how {
         Regularisation::Weight(l) => l,
         Regularisation::Noise(sigma) => {
@@ -174,7 +174,7 @@ pub fn regularise(
             z[k * cols + l] *= s;
         }
     }
-    rayon::join(|| fft2(&mut xy, rows, cols, true), || fft2(&mut z, rows, cols, true));
+    join(|| fft2(&mut xy, rows, cols, true), || fft2(&mut z, rows, cols, true));
     let scale = 1.0 / n as f64;
     let texels: Vec<DVec3> =
         xy.iter().zip(&z).map(|(a, b)| DVec3::new(a.re, a.im, b.re) * scale).collect();

@@ -23,8 +23,8 @@
 //!    [`Error::Topology`] says which genus the surface has;
 //! 8. the whole mesh is flipped if its signed volume is negative, so that it winds outward.
 
+use crate::par::*;
 use glam::DVec3;
-use rayon::slice::ParallelSliceMut;
 
 use crate::Error;
 

@@ -38,9 +38,9 @@
 
 use std::num::NonZero;
 
+use crate::par::*;
 use glam::{DMat3, DVec3};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
-use rayon::prelude::*;
 
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage};

@@ -26,9 +26,9 @@
 use std::f64::consts::TAU;
 use std::num::NonZero;
 
+use crate::par::*;
 use glam::DVec3;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
-use rayon::prelude::*;
 
 use crate::Error;
 use crate::image::{GeometryImage, check_resolution};

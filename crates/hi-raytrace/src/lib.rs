@@ -31,7 +31,9 @@
 //!
 //! # Feature flags
 //!
-//! None: the crate has no optional features.
+//! | feature | default | adds |
+//! |---|---|---|
+//! | `parallel` | yes | image tiles rendered on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread draws the same image |
 
 mod bezier;
 mod bvh;

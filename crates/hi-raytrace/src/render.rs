@@ -13,6 +13,7 @@ use std::time::{Duration, Instant};
 
 use hi_mesh::linear_to_srgb;
 use image::{ImageFormat, RgbImage};
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 use crate::camera::Camera;
@@ -208,8 +209,13 @@ pub fn render(
     let aspect = f64::from(w) / f64::from(h);
     let spp = settings.samples_per_pixel;
     let background = scene.background();
-    let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = (0..n_tiles)
-        .into_par_iter()
+    // The tiles on all cores (the `parallel` feature) or in turn; each is computed alone, so
+    // the image is the same either way.
+    #[cfg(feature = "parallel")]
+    let tile_indices = (0..n_tiles).into_par_iter();
+    #[cfg(not(feature = "parallel"))]
+    let tile_indices = 0..n_tiles;
+    let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = tile_indices
         .map(|tile| {
             let (tx, ty) = (tile as u32 % nx, tile as u32 / nx);
             let (x0, y0) = (tx * ts, ty * ts);

@@ -40,7 +40,9 @@
 //!
 //! # Feature flags
 //!
-//! None: the crate has no optional features.
+//! | feature | default | adds |
+//! |---|---|---|
+//! | `parallel` | yes | grids, meshes and 2-D FFTs computed on all cores (rayon); without it they run on one thread with the same results |
 
 pub mod bezier;
 mod error;
@@ -49,6 +51,7 @@ mod fft2;
 mod geometry;
 mod grid;
 mod mesh;
+mod par;
 mod parametric;
 mod resample;
 mod spectrum;

@@ -3,7 +3,7 @@
 //! grid paths of [`HarmonicSurface`]. Each gives the same result as a faster method, named in
 //! its documentation; none is the way to compute anything.
 
-use rayon::prelude::*;
+use crate::par::*;
 
 use crate::grid::{check_params, check_sizes};
 use hi_curve::ControlPoint;

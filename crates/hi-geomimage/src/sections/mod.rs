@@ -69,11 +69,11 @@ mod slice;
 
 use std::time::Instant;
 
+use crate::par::*;
 use glam::{DVec2, DVec3};
 use hi_curve::HarmonicCurve;
 use hi_surface::HarmonicSurface;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
-use rayon::prelude::*;
 
 use crate::distance::{Distances, distances_to_surface};
 use crate::fit::Stage;
