@@ -8,6 +8,7 @@
 //! and are kept as f32 linear RGB.
 
 use glam::{DVec2, DVec3};
+use hi_bezier::Aabb;
 
 use crate::Error;
 use crate::colormap::{ColorLegend, ColorMapping};
@@ -213,12 +214,11 @@ impl TriangleMesh {
         self.legend.as_ref()
     }
 
-    /// The smallest and largest coordinates of the positions (f64).
+    /// The box of the positions (f64).
     #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        self.positions
-            .iter()
-            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)))
+    pub fn bounds(&self) -> Aabb<DVec3> {
+        // A mesh has a triangle, so a position.
+        Aabb::from_points(&self.positions).unwrap_or(Aabb::from_point(DVec3::ZERO))
     }
 
     /// The volume the triangles enclose, Σ a·(b × c)/6 over the triangles (divergence

@@ -12,7 +12,7 @@
 //! levels deep, with Newton from each sub-piece the ray meets.
 
 use glam::DVec3;
-use hi_bezier::{Bernstein, BezierPatch};
+use hi_bezier::{Aabb, Bernstein, BezierPatch};
 use hi_surface::bezier::{SurfaceBezier, patch_color};
 
 use crate::bvh::{Bvh, slab};
@@ -166,8 +166,9 @@ impl BezierObject {
 
     /// The box of the patches (padded).
     #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        self.bvh.bounds()
+    pub fn bounds(&self) -> Aabb<DVec3> {
+        let (min, max) = self.bvh.bounds();
+        Aabb { min, max }
     }
 
     /// The nearest hit: (patch, local u, local v, t).

@@ -33,6 +33,7 @@
 //! parametrisation) counts as a hit.
 
 use glam::DVec3;
+use hi_bezier::Aabb;
 use hi_interval::Interval;
 use hi_mesh::{ColorLegend, ColorMap};
 use hi_surface::{CurvatureQuantity, HarmonicSurface};
@@ -295,8 +296,9 @@ impl HarmonicObject {
 
     /// The box of the surface (the union of the cell enclosures, padded).
     #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        self.bvh.bounds()
+    pub fn bounds(&self) -> Aabb<DVec3> {
+        let (min, max) = self.bvh.bounds();
+        Aabb { min, max }
     }
 
     /// The legend of the curvature colours, if coloured by curvature.

@@ -5,6 +5,7 @@
 //! its error bound of the hit point.
 
 use glam::DVec3;
+use hi_bezier::Aabb;
 use hi_mesh::TriangleMesh;
 
 use crate::Error;
@@ -155,8 +156,9 @@ impl MeshObject {
 
     /// The box of the mesh (padded).
     #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        self.bvh.bounds()
+    pub fn bounds(&self) -> Aabb<DVec3> {
+        let (min, max) = self.bvh.bounds();
+        Aabb { min, max }
     }
 
     /// The nearest hit in [`Ray::t_min`], [`Ray::t_max`] and the triangle's index, by the BVH.

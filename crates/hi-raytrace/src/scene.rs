@@ -4,6 +4,7 @@
 //! with materials, directional and point lights, Blinn–Phong shading and shadow rays.
 
 use glam::DVec3;
+use hi_bezier::Aabb;
 
 use crate::bezier::BezierObject;
 use crate::error::{Error, check_finite};
@@ -25,7 +26,7 @@ pub enum Geometry {
 impl Geometry {
     /// The box of the geometry.
     #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
+    pub fn bounds(&self) -> Aabb<DVec3> {
         match self {
             Geometry::Mesh(m) => m.bounds(),
             Geometry::Bezier(b) => b.bounds(),
@@ -210,15 +211,11 @@ impl Scene {
 
     /// The box of all objects.
     #[must_use]
-    pub fn bounds(&self) -> (DVec3, DVec3) {
-        let mut lo = DVec3::splat(f64::INFINITY);
-        let mut hi = DVec3::splat(f64::NEG_INFINITY);
-        for o in &self.objects {
-            let (a, b) = o.geometry.bounds();
-            lo = lo.min(a);
-            hi = hi.max(b);
-        }
-        (lo, hi)
+    pub fn bounds(&self) -> Aabb<DVec3> {
+        // A scene has an object (`Scene::try_new`).
+        let mut boxes = self.objects.iter().map(|o| o.geometry.bounds());
+        let first = boxes.next().unwrap_or(Aabb::from_point(DVec3::ZERO));
+        boxes.fold(first, Aabb::union)
     }
 
     /// The nearest hit of `ray` on any object.

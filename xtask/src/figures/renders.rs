@@ -123,7 +123,7 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
     let from = view(number);
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let diagonal = |m: &TriangleMesh| {
-        let (lo, hi) = m.bounds();
+        let hi_bezier::Aabb { min: lo, max: hi } = m.bounds();
         (hi - lo).length()
     };
     let all: Vec<DVec3> = meshes.iter().flat_map(|m| m.positions().iter().copied()).collect();
@@ -148,7 +148,7 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
                 Some(camera) => (camera, (lo, hi)),
                 None => (
                     Camera::fitting(mesh.positions(), from, DVec3::Z, FOV, aspect, FILL)?,
-                    mesh.bounds(),
+                    (mesh.bounds().min, mesh.bounds().max),
                 ),
             };
             let mut object = MeshObject::new(mesh);

@@ -115,7 +115,7 @@ const DEFAULT_VIEW: DVec3 = DVec3::new(0.9, -2.0, 1.3);
 
 /// A camera framing everything in `scene`.
 fn frame(scene: &Scene, from: DVec3, up: DVec3, fov: f64) -> Result<Camera, Failure> {
-    let (lo, hi) = scene.bounds();
+    let hi_bezier::Aabb { min: lo, max: hi } = scene.bounds();
     let radius = 0.5 * (hi - lo).length();
     Camera::framing(0.5 * (lo + hi), radius.max(1e-9), from, up, fov)
         .map_err(|e| Failure::input(format!("camera: {e}")))
