@@ -34,6 +34,7 @@
 //! | feature | default | adds |
 //! |---|---|---|
 //! | `parallel` | yes | image tiles rendered on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread draws the same image |
+//! | `png` | yes | PNG output: `Rendering::png_bytes`, `Rendering::write_png` (the `image` crate) |
 
 mod bezier;
 mod bvh;

@@ -7,12 +7,10 @@
 //! fixed seed) — and each pixel is computed by one thread from its own samples, so a render is
 //! the same, byte for byte, whatever the number of threads and the order they run in.
 
-use std::io::Write;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use hi_mesh::linear_to_srgb;
-use image::{ImageFormat, RgbImage};
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
@@ -80,8 +78,12 @@ pub struct RayCounts {
 /// A finished render: the sRGB image, ray counts and the time taken.
 #[derive(Clone, Debug)]
 pub struct Rendering {
-    /// The image, 8-bit sRGB.
-    pub image: RgbImage,
+    /// The image width in pixels.
+    pub width: u32,
+    /// The image height in pixels.
+    pub height: u32,
+    /// The pixels, 8-bit sRGB, row by row from the top left (`width × height` of them).
+    pub pixels: Vec<[u8; 3]>,
     /// The rays cast.
     pub counts: RayCounts,
     /// Wall-clock time of the render.
@@ -89,23 +91,39 @@ pub struct Rendering {
 }
 
 impl Rendering {
-    /// The image as PNG bytes.
+    /// The pixel at column `x`, row `y` (from the top left); `None` outside the image.
+    #[must_use]
+    pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 3]> {
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        self.pixels.get(y as usize * self.width as usize + x as usize).copied()
+    }
+
+    /// The image as PNG bytes (the `png` feature).
     ///
     /// # Errors
     ///
     /// [`Error::Image`] if encoding fails.
+    #[cfg(feature = "png")]
     pub fn png_bytes(&self) -> Result<Vec<u8>, Error> {
+        let raw: Vec<u8> = self.pixels.iter().flatten().copied().collect();
+        let image = image::RgbImage::from_raw(self.width, self.height, raw)
+            .ok_or_else(|| Error::Image("the pixels do not fill the image".to_owned()))?;
         let mut out = std::io::Cursor::new(Vec::new());
-        self.image.write_to(&mut out, ImageFormat::Png).map_err(|e| Error::Image(e.to_string()))?;
+        image
+            .write_to(&mut out, image::ImageFormat::Png)
+            .map_err(|e| Error::Image(e.to_string()))?;
         Ok(out.into_inner())
     }
 
-    /// Writes the image as PNG to `w`.
+    /// Writes the image as PNG to `w` (the `png` feature).
     ///
     /// # Errors
     ///
     /// [`Error::Image`] if encoding or writing fails.
-    pub fn write_png<W: Write>(&self, mut w: W) -> Result<(), Error> {
+    #[cfg(feature = "png")]
+    pub fn write_png<W: std::io::Write>(&self, mut w: W) -> Result<(), Error> {
         let bytes = self.png_bytes()?;
         w.write_all(&bytes).map_err(|e| Error::Image(e.to_string()))
     }
@@ -189,7 +207,7 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
 /// let settings =
 ///     RenderOptions { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8, first_pass: 0 };
 /// let out = render(&scene, &camera, &settings, None)?;
-/// assert_eq!(out.image.dimensions(), (24, 16));
+/// assert_eq!((out.width, out.height, out.pixels.len()), (24, 16, 24 * 16));
 /// assert_eq!(out.counts.camera, 24 * 16);
 /// assert!(out.counts.hits > 0);
 /// # Ok::<(), hi_raytrace::Error>(())
@@ -301,18 +319,18 @@ pub fn render(
             (x0, y0, pixels, counts)
         })
         .collect();
-    let mut image = RgbImage::new(w, h);
+    let mut image = vec![[0u8; 3]; w as usize * h as usize];
     let mut counts = RayCounts::default();
     for (x0, y0, pixels, c) in tiles {
         let tw = (x0 + ts).min(w) - x0;
         for (i, px) in pixels.into_iter().enumerate() {
             let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
-            image.put_pixel(x, y, image::Rgb(px));
+            image[y as usize * w as usize + x as usize] = px;
         }
         counts.camera += c.camera;
         counts.shadow += c.shadow;
         counts.hits += c.hits;
         counts.shadowed += c.shadowed;
     }
-    Ok(Rendering { image, counts, elapsed: start.elapsed() })
+    Ok(Rendering { width: w, height: h, pixels: image, counts, elapsed: start.elapsed() })
 }
