@@ -42,7 +42,7 @@ const PEER_SUITES: &[(&str, &str, &str, &str)] = &[
     ("trigonometric resampling (§3.3)", "scipy `signal.resample`", "hi-curve", "peer_scipy"),
     (
         "interpolating and periodic B-splines (§2.6)",
-        "scipy `make_interp_spline`",
+        "scipy `CubicSpline` and `splprep`",
         "hi-compare",
         "bspline",
     ),

@@ -166,7 +166,7 @@ impl<P: ControlPoint> InterpolatingSpline<P> {
     /// points, [`Error::CoincidentPoints`] for repeated consecutive points with chord-length
     /// parameters, and [`Error::ParameterCountMismatch`], [`Error::NonFiniteParameter`],
     /// [`Error::ParametersNotDistinct`], [`Error::ParametersNotIncreasing`] or
-    /// [`Error::ParameterOutOfRange`] for bad given parameters; [`Error::Overflow`] if the
+    /// [`Error::NodeOutOfRange`] for bad given parameters; [`Error::Overflow`] if the
     /// coordinates are too large for the solve.
     pub fn try_periodic(points: Vec<P>, params: Parameters) -> Result<Self, Error> {
         check_points(&points)?;
@@ -184,7 +184,7 @@ impl<P: ControlPoint> InterpolatingSpline<P> {
             Parameters::Given(given) => {
                 check_increasing(n, &given)?;
                 if let Some(index) = given.iter().position(|u| !(0.0..1.0).contains(u)) {
-                    return Err(Error::ParameterOutOfRange { index, value: given[index] });
+                    return Err(Error::NodeOutOfRange { index, value: given[index] });
                 }
                 given
             }
@@ -487,7 +487,7 @@ mod tests {
         let given = Parameters::Given(vec![0.0, 0.5, 1.0]);
         assert!(matches!(
             InterpolatingSpline::try_periodic(three.clone(), given),
-            Err(Error::ParameterOutOfRange { index: 2, .. })
+            Err(Error::NodeOutOfRange { index: 2, .. })
         ));
         let dup = vec![0.0, 1.0, 1.0, 2.0];
         assert!(matches!(

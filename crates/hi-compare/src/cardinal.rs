@@ -214,7 +214,7 @@ impl<P: ControlPoint> HermiteSpline<P> {
     ///
     /// As [`HermiteSpline::catmull_rom`], and [`Error::ParameterCountMismatch`],
     /// [`Error::NonFiniteParameter`], [`Error::ParametersNotDistinct`],
-    /// [`Error::ParametersNotIncreasing`] or (closed) [`Error::ParameterOutOfRange`] for bad
+    /// [`Error::ParametersNotIncreasing`] or (closed) [`Error::NodeOutOfRange`] for bad
     /// parameters.
     pub fn bessel_overhauser_with_params(
         points: Vec<P>,
@@ -434,7 +434,7 @@ fn checked_knots<P: ControlPoint>(
         }
         Closure::Closed => {
             if let Some(index) = params.iter().position(|u| !(0.0..1.0).contains(u)) {
-                return Err(Error::ParameterOutOfRange { index, value: params[index] });
+                return Err(Error::NodeOutOfRange { index, value: params[index] });
             }
             let mut knots = params.to_vec();
             knots.push(params[0] + 1.0);
@@ -516,7 +516,7 @@ mod tests {
         let tri = vec![DVec2::ZERO, DVec2::X, DVec2::Y];
         assert!(matches!(
             HermiteSpline::bessel_overhauser_with_params(tri, vec![0.0, 0.5, 1.0], Closure::Closed),
-            Err(Error::ParameterOutOfRange { index: 2, .. })
+            Err(Error::NodeOutOfRange { index: 2, .. })
         ));
     }
 }

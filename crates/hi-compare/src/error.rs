@@ -39,7 +39,7 @@ pub enum Error {
         params: usize,
     },
     /// A node parameter lies outside [0, 1).
-    ParameterOutOfRange {
+    NodeOutOfRange {
         /// Index of the parameter.
         index: usize,
         /// Its value.
@@ -211,8 +211,8 @@ impl fmt::Display for Error {
                 plural(*params, "parameter"),
                 plural(*points, "point")
             ),
-            Error::ParameterOutOfRange { index, value } => {
-                write!(f, "parameter {index} = {value} is outside [0, 1)")
+            Error::NodeOutOfRange { index, value } => {
+                write!(f, "node parameter {index} = {value} is outside [0, 1)")
             }
             Error::ParametersNotDistinct { first, second } => write!(
                 f,

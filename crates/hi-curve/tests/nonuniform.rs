@@ -167,11 +167,11 @@ fn bad_parameters_are_rejected() {
     );
     assert_eq!(
         NonUniformCurve::try_with_params(pts.clone(), vec![0.0, 0.5, 1.0], v).unwrap_err(),
-        Error::ParameterOutOfRange { index: 2, value: 1.0 }
+        Error::NodeOutOfRange { index: 2, value: 1.0 }
     );
     assert!(matches!(
         NonUniformCurve::try_with_params(pts.clone(), vec![0.0, f64::NAN, 0.2], v),
-        Err(Error::ParameterOutOfRange { index: 1, .. })
+        Err(Error::NodeOutOfRange { index: 1, .. })
     ));
     assert_eq!(
         NonUniformCurve::try_with_params(

@@ -80,7 +80,7 @@ fn check_params(n_points: usize, params: &[f64]) -> Result<(), Error> {
     }
     for (index, &value) in params.iter().enumerate() {
         if !(0.0..1.0).contains(&value) {
-            return Err(Error::ParameterOutOfRange { index, value });
+            return Err(Error::NodeOutOfRange { index, value });
         }
     }
     let mut order: Vec<usize> = (0..params.len()).collect();
@@ -148,7 +148,7 @@ impl<P: ControlPoint> NonUniformCurve<P> {
     /// # Errors
     ///
     /// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::ParameterCountMismatch`],
-    /// [`Error::ParameterOutOfRange`] (also for NaN), [`Error::ParametersNotDistinct`], and
+    /// [`Error::NodeOutOfRange`] (also for NaN), [`Error::ParametersNotDistinct`], and
     /// [`Error::Singular`] for the thesis variant if its matrix is singular in floating point.
     pub fn try_with_params(
         points: Vec<P>,
