@@ -302,12 +302,71 @@ pub struct RowPoints {
     pub empty_rows: usize,
 }
 
+/// A stage of a fit, as a progress display and the stage times name it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum StageKind {
+    /// The geometry image (§5.3, §5.4, or the mesh's parameterisation).
+    GeometryImage,
+    /// Smoothing of the image.
+    Smoothing,
+    /// The spectral regularisation.
+    Regularisation,
+    /// Reduction of the image (Theorem 5.3).
+    Reduction,
+    /// The harmonic surface through the image or the grid.
+    HarmonicSurface,
+    /// The 4× rasterisation of the surface for the error.
+    Rasterisation,
+    /// The fit's error, measured both ways.
+    FitError,
+    /// Algorithm 1: the sections across the axis.
+    Slicing,
+    /// Algorithm 1: each section's points in contour order.
+    Ordering,
+    /// Algorithm 1: a harmonic curve through each contour.
+    HarmonicCurves,
+    /// Algorithm 1: insertion to equal counts (Theorem 5.3).
+    Insertion,
+    /// Algorithm 1: rotation for the least deviation (Theorem 5.1).
+    Rotation,
+    /// Algorithm 1: the measured problems of the sections.
+    Diagnostics,
+}
+
+impl StageKind {
+    /// Its name in words: "geometry image", "rasterisation (4×)", "rotation (Theorem 5.1)", ….
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            StageKind::GeometryImage => "geometry image",
+            StageKind::Smoothing => "smoothing",
+            StageKind::Regularisation => "regularisation",
+            StageKind::Reduction => "reduction",
+            StageKind::HarmonicSurface => "harmonic surface",
+            StageKind::Rasterisation => "rasterisation (4×)",
+            StageKind::FitError => "fit error",
+            StageKind::Slicing => "slicing",
+            StageKind::Ordering => "ordering",
+            StageKind::HarmonicCurves => "harmonic curves",
+            StageKind::Insertion => "insertion (Theorem 5.3)",
+            StageKind::Rotation => "rotation (Theorem 5.1)",
+            StageKind::Diagnostics => "diagnostics",
+        }
+    }
+}
+
+impl std::fmt::Display for StageKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// The time one stage took.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stage {
-    /// Its name: "geometry image", "smoothing", "regularisation", "reduction", "harmonic
-    /// surface", "rasterisation (4×)", "fit error".
-    pub name: &'static str,
+    /// Which stage.
+    pub kind: StageKind,
     /// Wall-clock seconds.
     pub seconds: f64,
 }
@@ -449,8 +508,8 @@ fn triangle_area(p: &[DVec3], triangles: &[[u32; 3]]) -> f64 {
         .sum()
 }
 
-/// Fits a harmonic surface to a scan; see the module documentation. `on_stage` is told the
-/// name of each stage as it starts (for a progress display).
+/// Fits a harmonic surface to a scan; see the module documentation. `on_stage` is told each
+/// stage as it starts (for a progress display).
 ///
 /// # Errors
 ///
@@ -463,11 +522,11 @@ fn triangle_area(p: &[DVec3], triangles: &[[u32; 3]]) -> f64 {
 pub fn fit(
     scan: &Scan,
     options: &FitOptions,
-    on_stage: &mut dyn FnMut(&'static str),
+    on_stage: &mut dyn FnMut(StageKind),
 ) -> Result<Fit, Error> {
     let mut stages = Vec::new();
-    let timed = |name: &'static str, stages: &mut Vec<Stage>, start: Instant| {
-        stages.push(Stage { name, seconds: start.elapsed().as_secs_f64() });
+    let timed = |kind: StageKind, stages: &mut Vec<Stage>, start: Instant| {
+        stages.push(Stage { kind, seconds: start.elapsed().as_secs_f64() });
     };
     if let Some(r) = options.reduce
         && !(r > 0.0 && r <= 1.0)
@@ -497,7 +556,7 @@ pub fn fit(
         }
     });
     crate::image::check_resolution(rows, cols)?;
-    on_stage("geometry image");
+    on_stage(StageKind::GeometryImage);
     let start = Instant::now();
     // The mesh path, when asked for or when it applies.
     let mut method = options.method;
@@ -584,7 +643,7 @@ pub fn fit(
             }
         }
     };
-    timed("geometry image", &mut stages, start);
+    timed(StageKind::GeometryImage, &mut stages, start);
     if let SourceImage::ShrinkWrap(w) = &source {
         reason.push_str(if w.implicit_start {
             " (from the zero set of their signed distance, parameterised over the sphere)"
@@ -597,10 +656,10 @@ pub fn fit(
     }
     let mut image = source.image().clone();
     if let Some(filter) = options.smoothing {
-        on_stage("smoothing");
+        on_stage(StageKind::Smoothing);
         let start = Instant::now();
         image = image.smoothed(filter)?;
-        timed("smoothing", &mut stages, start);
+        timed(StageKind::Smoothing, &mut stages, start);
     }
     // Images sampled from a mesh lie on the scan's surface: nothing to smooth away. Images made
     // from points carry the points' scatter: smooth it away, and no more.
@@ -617,16 +676,16 @@ pub fn fit(
     let regularisation = if how == Regularisation::Off {
         RegularisationReport { lambda: 0.0, kept: 1.0, rms_change: 0.0, max_change: 0.0 }
     } else {
-        on_stage("regularisation");
+        on_stage(StageKind::Regularisation);
         let start = Instant::now();
         let (smooth, report) = regularise(&image, how)?;
         image = smooth;
-        timed("regularisation", &mut stages, start);
+        timed(StageKind::Regularisation, &mut stages, start);
         report
     };
     let mut reduction = None;
     if let Some(fraction) = options.reduce.filter(|&f| f < 1.0) {
-        on_stage("reduction");
+        on_stage(StageKind::Reduction);
         let start = Instant::now();
         let scale = fraction.sqrt();
         // Keep the rows even, so that both poles stay texels of a spherical image.
@@ -642,25 +701,25 @@ pub fn fit(
         let (reduced, error) = image.resampled(rows, cols)?;
         image = reduced;
         reduction = Some(error);
-        timed("reduction", &mut stages, start);
+        timed(StageKind::Reduction, &mut stages, start);
     }
-    on_stage("harmonic surface");
+    on_stage(StageKind::HarmonicSurface);
     let start = Instant::now();
     let surface = image.surface()?;
-    timed("harmonic surface", &mut stages, start);
+    timed(StageKind::HarmonicSurface, &mut stages, start);
     if options.rasterise {
-        on_stage("rasterisation (4×)");
+        on_stage(StageKind::Rasterisation);
         let start = Instant::now();
         let raster = surface.sample_uniform(2 * surface.m(), 2 * surface.n(), 0, 0)?;
         std::hint::black_box(&raster);
-        timed("rasterisation (4×)", &mut stages, start);
+        timed(StageKind::Rasterisation, &mut stages, start);
     }
     let (mut errors, mut both_ways, mut both_mesh, mut fit_mesh) = (None, None, None, None);
     match options.error {
         ErrorMeasure::Off => {}
         ErrorMeasure::Sampled(oversample) if method != Method::Mesh => {
             // The thesis's measurement, as the figures of §5.3 report it.
-            on_stage("fit error");
+            on_stage(StageKind::FitError);
             let start = Instant::now();
             if triangles.is_empty() {
                 errors = Some(distances_to_surface(&surface, &points, oversample)?);
@@ -669,10 +728,10 @@ pub fn fit(
                 errors = Some(h.scan_to_surface.clone());
                 both_mesh = Some(h);
             }
-            timed("fit error", &mut stages, start);
+            timed(StageKind::FitError, &mut stages, start);
         }
         measure => {
-            on_stage("fit error");
+            on_stage(StageKind::FitError);
             let start = Instant::now();
             let filled = source.filled().map(|f| {
                 // The texels of the surface's grid, in the source image's (they differ after a
@@ -701,7 +760,7 @@ pub fn fit(
             errors = Some(e.scan_to_surface.clone());
             both_ways = Some(e);
             fit_mesh = Some(m);
-            timed("fit error", &mut stages, start);
+            timed(StageKind::FitError, &mut stages, start);
         }
     }
     let report = FitReport {

@@ -64,7 +64,7 @@ pub use error::Error;
 pub use filter::Smoothing;
 pub use fit::{
     ErrorMeasure, Fit, FitErrors, FitOptions, FitReport, MeshSource, Method, RowPoints,
-    SourceImage, Stage, fit,
+    SourceImage, Stage, StageKind, fit,
 };
 pub use image::{GeometryImage, MAX_TEXELS};
 pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};

@@ -76,7 +76,7 @@ fn combined(scan: &Scan) -> Result<Combined> {
         fitted.surface.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     let end = std::time::Instant::now();
     let mut stages: Vec<(String, f64)> =
-        fitted.stages.iter().map(|s| (s.name.to_owned(), s.seconds)).collect();
+        fitted.stages.iter().map(|s| (s.kind.name().to_owned(), s.seconds)).collect();
     stages.push(("Bézier patches".to_owned(), (end - converting).as_secs_f64()));
     Ok(Combined { stages, total: end - start, patches: patches.report.patches })
 }
@@ -249,7 +249,12 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         let fitted = fit(scan, &options, &mut |_| {})?;
         let r = &fitted.report;
         let stage = |want: &str| {
-            fitted.stages.iter().filter(|s| s.name.contains(want)).map(|s| s.seconds).sum::<f64>()
+            fitted
+                .stages
+                .iter()
+                .filter(|s| s.kind.name().contains(want))
+                .map(|s| s.seconds)
+                .sum::<f64>()
         };
         let total: f64 = fitted.stages.iter().map(|s| s.seconds).sum();
         // The fit a user waits for: every stage but the measurement of its error.
@@ -258,7 +263,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
             slowest_interpolation.max(Duration::from_secs_f64(stage("rasterisation")));
         let ours = r.errors.as_ref().map(|d| d.relative());
         let stages: Vec<String> =
-            fitted.stages.iter().map(|s| format!("{} {:.3}", s.name, s.seconds)).collect();
+            fitted.stages.iter().map(|s| format!("{} {:.3}", s.kind, s.seconds)).collect();
         pipeline.push(vec![
             name.clone(),
             r.points.to_string(),

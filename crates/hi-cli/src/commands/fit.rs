@@ -111,7 +111,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     } else {
         ProgressBar::hidden()
     };
-    let result = fit(&scan, &options, &mut |stage| bar.set_message(stage));
+    let result = fit(&scan, &options, &mut |stage| bar.set_message(stage.name()));
     bar.finish_and_clear();
     let mut fitted = result.map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
     let report = &fitted.report;
@@ -200,7 +200,7 @@ fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Jso
         .iter()
         .map(|s| {
             Object::new()
-                .field("name", Json::String(s.name.to_owned()))
+                .field("name", Json::String(s.kind.name().to_owned()))
                 .field("seconds", Json::Number(s.seconds))
                 .build()
         })

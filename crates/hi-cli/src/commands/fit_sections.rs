@@ -107,7 +107,7 @@ fn summary(args: &FitArgs, fitted: &SectionFit, dropped: usize, files: &[PathBuf
         .iter()
         .map(|s: &Stage| {
             Object::new()
-                .field("name", Json::String(s.name.to_owned()))
+                .field("name", Json::String(s.kind.name().to_owned()))
                 .field("seconds", Json::Number(s.seconds))
                 .build()
         })

@@ -76,7 +76,7 @@ use hi_surface::HarmonicSurface;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::distance::{Distances, distances_to_surface};
-use crate::fit::Stage;
+use crate::fit::{Stage, StageKind};
 use crate::{Error, MAX_TEXELS};
 use slice::{Frame, MIN_SLICE_POINTS, Slab, axis_of, equal_slabs, order_contour, recursive_slabs};
 
@@ -394,7 +394,7 @@ pub fn fit_sections(points: &[DVec3], options: &SectionOptions) -> Result<Sectio
         Some(k) => equal_slabs(&heights, lo, hi, k)?,
         None => recursive_slabs(points, &heights, &frame, options.order, lo, hi)?,
     };
-    let stages = vec![Stage { name: "slicing", seconds: start.elapsed().as_secs_f64() }];
+    let stages = vec![Stage { kind: StageKind::Slicing, seconds: start.elapsed().as_secs_f64() }];
     fit_slabs(points, &heights, &frame, &slabs, options, stages)
 }
 
@@ -469,7 +469,7 @@ pub fn fit_given_sections(
         slabs.push(Slab { from, to, members });
     }
     slice::check_slabs(&slabs)?;
-    let stages = vec![Stage { name: "slicing", seconds: start.elapsed().as_secs_f64() }];
+    let stages = vec![Stage { kind: StageKind::Slicing, seconds: start.elapsed().as_secs_f64() }];
     fit_slabs(&points, &heights, &frame, &slabs, options, stages)
 }
 
@@ -482,8 +482,8 @@ fn fit_slabs(
     options: &SectionOptions,
     mut stages: Vec<Stage>,
 ) -> Result<SectionFit, Error> {
-    let timed = |name: &'static str, stages: &mut Vec<Stage>, start: Instant| {
-        stages.push(Stage { name, seconds: start.elapsed().as_secs_f64() });
+    let timed = |kind: StageKind, stages: &mut Vec<Stage>, start: Instant| {
+        stages.push(Stage { kind, seconds: start.elapsed().as_secs_f64() });
     };
     let axis = frame.axis;
 
@@ -491,7 +491,7 @@ fn fit_slabs(
     let start = Instant::now();
     let ordered: Vec<Ordered> =
         slabs.iter().map(|s| Ordered::new(points, heights, frame, s, options)).collect();
-    timed("ordering", &mut stages, start);
+    timed(StageKind::Ordering, &mut stages, start);
 
     // Step 5: a harmonic curve through each, and what it tells of the section.
     let start = Instant::now();
@@ -506,7 +506,7 @@ fn fit_slabs(
         .zip(&curves)
         .map(|(o, c)| o.shape(c, frame, tiny))
         .collect::<Result<Vec<_>, Error>>()?;
-    timed("harmonic curves", &mut stages, start);
+    timed(StageKind::HarmonicCurves, &mut stages, start);
 
     // Step 6: insertion (Theorem 5.3) to N points, even and above every section.
     let start = Instant::now();
@@ -524,7 +524,7 @@ fn fit_slabs(
         .iter()
         .map(|c| Ok(c.resample(n).map_err(Error::from)?.0))
         .collect::<Result<Vec<_>, Error>>()?;
-    timed("insertion (Theorem 5.3)", &mut stages, start);
+    timed(StageKind::Insertion, &mut stages, start);
 
     // Step 7: rotation (Theorem 5.1) for the least total deviation.
     let start = Instant::now();
@@ -538,7 +538,7 @@ fn fit_slabs(
         rotations.push(offset);
         rows.push(row);
     }
-    timed("rotation (Theorem 5.1)", &mut stages, start);
+    timed(StageKind::Rotation, &mut stages, start);
 
     // Step 8: the reversed traversal on the other side, and the surface.
     let start = Instant::now();
@@ -549,7 +549,7 @@ fn fit_slabs(
         grid.push(other_side);
     }
     let surface = HarmonicSurface::try_new(grid)?;
-    timed("harmonic surface", &mut stages, start);
+    timed(StageKind::HarmonicSurface, &mut stages, start);
 
     // Diagnostics.
     let start = Instant::now();
@@ -581,14 +581,14 @@ fn fit_slabs(
         });
     }
     let sampling_scale = sampling_scale(&slices, &shapes);
-    timed("diagnostics", &mut stages, start);
+    timed(StageKind::Diagnostics, &mut stages, start);
     let (mut surface_to_points, mut points_to_surface) = (None, None);
     if options.error_oversample > 0 {
         let start = Instant::now();
         surface_to_points =
             Some(surface_to_nearest_point(&surface, points, options.error_oversample)?);
         points_to_surface = Some(distances_to_surface(&surface, points, options.error_oversample)?);
-        timed("fit error", &mut stages, start);
+        timed(StageKind::FitError, &mut stages, start);
     }
     let problems = problems(&slices, surface_to_points.as_ref(), sampling_scale);
     let report = SectionReport {
