@@ -62,38 +62,34 @@ pub(crate) fn split_points<P: ControlPoint>(control: &[P], t: f64) -> (Vec<P>, V
 
 /// The control polygon of the piece over [t₀, t₁] by blossoming.
 pub(crate) fn subsegment_points<P: ControlPoint>(control: &[P], t0: f64, t1: f64) -> Vec<P> {
-    let n = control.len() - 1;
-    // rows[i] = control polygon after i de Casteljau steps with t₁ (length n + 1 − i).
-    let mut res = Vec::with_capacity(n + 1);
-    let mut after_t1 = control.to_vec();
-    for i in 0..=n {
-        // R_i: i steps with t₁ (already done), then n − i steps with t₀.
-        let mut work = after_t1.clone();
-        let len = work.len();
-        for level in 1..len {
-            for j in 0..len - level {
-                work[j] = lerp(work[j], work[j + 1], t0);
-            }
-        }
-        res.push(work[0]);
-        if i < n {
-            for j in 0..after_t1.len() - 1 {
-                after_t1[j] = lerp(after_t1[j], after_t1[j + 1], t1);
-            }
-            after_t1.pop();
-        }
-    }
-    res
+    let len = control.len();
+    let mut out = vec![P::ZERO; len];
+    let (mut after_t1, mut work) = (control.to_vec(), vec![P::ZERO; len]);
+    subsegment_with(t0, t1, &mut after_t1, &mut work, &mut out);
+    out
 }
 
 /// The control points of [`subsegment_points`] written into `out` (of the length of
-/// `control`, at most [`SMALL`]) with the same arithmetic, on the stack: no allocation.
+/// `control`, at most [`SMALL`]), with scratch on the stack: no allocation.
 pub(crate) fn subsegment_small<P: ControlPoint>(control: &[P], t0: f64, t1: f64, out: &mut [P]) {
-    let n = control.len() - 1;
-    let mut after_t1 = [P::ZERO; SMALL];
-    after_t1[..=n].copy_from_slice(control);
-    let mut work = [P::ZERO; SMALL];
-    for (i, slot) in out.iter_mut().enumerate().take(n + 1) {
+    let len = control.len();
+    let (mut after_t1, mut work) = ([P::ZERO; SMALL], [P::ZERO; SMALL]);
+    after_t1[..len].copy_from_slice(control);
+    subsegment_with(t0, t1, &mut after_t1[..len], &mut work[..len], &mut out[..len]);
+}
+
+/// Blossoming into `out`: point i is the control polygon after i de Casteljau steps with t₁
+/// (kept in `after_t1`, which starts as the control polygon), then n − i steps with t₀ (in
+/// `work`). All three slices have the length of the control polygon.
+fn subsegment_with<P: ControlPoint>(
+    t0: f64,
+    t1: f64,
+    after_t1: &mut [P],
+    work: &mut [P],
+    out: &mut [P],
+) {
+    let n = after_t1.len() - 1;
+    for (i, slot) in out.iter_mut().enumerate() {
         let len = n + 1 - i;
         work[..len].copy_from_slice(&after_t1[..len]);
         for level in 1..len {

@@ -319,18 +319,18 @@ pub fn render(
             (x0, y0, pixels, counts)
         })
         .collect();
-    let mut image = vec![[0u8; 3]; w as usize * h as usize];
+    let mut image_pixels = vec![[0u8; 3]; w as usize * h as usize];
     let mut counts = RayCounts::default();
     for (x0, y0, pixels, c) in tiles {
         let tw = (x0 + ts).min(w) - x0;
         for (i, px) in pixels.into_iter().enumerate() {
             let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
-            image[y as usize * w as usize + x as usize] = px;
+            image_pixels[y as usize * w as usize + x as usize] = px;
         }
         counts.camera += c.camera;
         counts.shadow += c.shadow;
         counts.hits += c.hits;
         counts.shadowed += c.shadowed;
     }
-    Ok(Rendering { width: w, height: h, pixels: image, counts, elapsed: start.elapsed() })
+    Ok(Rendering { width: w, height: h, pixels: image_pixels, counts, elapsed: start.elapsed() })
 }
