@@ -22,6 +22,7 @@ use crate::{BezierCurve, ControlPoint};
 /// assert!(b.contains(DVec2::new(0.0, 4.0)));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Aabb<P> {
     /// The corner with the smallest coordinates.
     pub min: P,

@@ -13,6 +13,8 @@ use crate::{ControlPoint, Error, RationalBezierCurve};
 /// The type of the conic a rational quadratic Bézier curve traces, fixed by the invariant
 /// k = w₁²/(w₀w₂) (the squared middle weight of the standard form w₀ = w₂ = 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ConicType {
     /// k < 1: an arc of an ellipse (a circle for the right control points).
     Ellipse,

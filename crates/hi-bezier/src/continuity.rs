@@ -11,6 +11,7 @@ use crate::{BezierCurve, ControlPoint, PiecewiseBezier};
 /// the same parameter length, C1 in these is C1 in the global parameter.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Join {
     /// Index of the segment that ends here (the next one starts here; for the closing join of
     /// [`PiecewiseBezier::closing_join`], the last segment).

@@ -18,6 +18,8 @@ const RELATIVE_FLOOR: f64 = 1e-10;
 /// chord from its first to its last control point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum FlatnessTest {
     /// The convex hull test: every control point lies within the tolerance of the chord
     /// segment from P₀ to Pₙ. Then so does every point of the piece (it is a convex combination of

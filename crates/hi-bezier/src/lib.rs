@@ -50,7 +50,23 @@
 //!
 //! # Feature flags
 //!
-//! None: the crate has no optional features.
+//! - `serde`: `Serialize` and `Deserialize` for the curves, patches, boxes and small value
+//!   types. Curves and patches are written as their control data and read back through their
+//!   checked constructors, so a file cannot make a value that breaks an invariant (an empty
+//!   curve, a ragged patch, a non-positive weight): that is an error naming what is wrong.
+//!
+//!   | type | form |
+//!   |---|---|
+//!   | [`BezierCurve`] | `{"control": [p₀, …]}` |
+//!   | [`PiecewiseBezier`] | `{"segments": [curve, …]}` |
+//!   | [`RationalBezierCurve`] | `{"points": [p₀, …], "weights": [w₀, …]}` |
+//!   | [`BezierPatch`] | `{"rows": [[x₀₀, …], …]}`, row j along u |
+//!   | [`RationalBezierPatch`] | `{"rows": […], "weights": [[w₀₀, …], …]}` |
+//!   | [`TriangularPatch`] | `{"points": […]}` in the order of [`TriangularPatch::new`] |
+//!   | [`Aabb`] | `{"min": p, "max": p}` |
+//!
+//!   A point is what its type writes: a number for `f64`, `[x, y]` or `[x, y, z]` for glam's
+//!   vectors (this feature turns on glam's `serde`).
 
 mod bernstein;
 mod bounds;
@@ -66,6 +82,8 @@ mod point;
 mod rational;
 mod rational_patch;
 mod roots;
+#[cfg(feature = "serde")]
+mod serde_impls;
 mod subdivide;
 mod triangle;
 

@@ -50,6 +50,8 @@ use hi_curve::ParamCurve;
 
 /// The parameters tᵢ at which an interpolating spline passes through its points.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Parameters {
     /// tᵢ = i/(n − 1) (open) or i/n (periodic).
     Uniform,
@@ -63,6 +65,8 @@ pub enum Parameters {
 
 /// How an open interpolating cubic spline ends; see the [module documentation](self).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum EndCondition {
     /// Coincident end control points x₀ = x₁, xₙ = xₙ₋₁ (§2.11): zero end derivatives.
     Coincident,

@@ -43,6 +43,8 @@ use hi_curve::ParamCurve;
 /// Whether a curve through n points is open (from the first to the last point) or closed (a
 /// loop, 1-periodic in t).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Closure {
     /// From x₀ at t = 0 to xₙ₋₁ at t = 1: n − 1 pieces.
     Open,
@@ -110,6 +112,7 @@ pub fn chord_length_parameters<P: ControlPoint>(
 ///   differ);
 /// * bias B: −1 takes the direction of the next chord, 1 that of the previous one.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tcb {
     /// Tension T.
     pub tension: f64,

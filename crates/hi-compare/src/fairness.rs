@@ -39,6 +39,7 @@ pub const MONOTONE_TOLERANCE: f64 = 1e-6;
 /// A point of a curvature plot: the parameter and the signed curvature there (`None` where
 /// the curve is singular, X′ = 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CurvatureSample {
     /// The parameter t.
     pub t: f64,
@@ -48,6 +49,7 @@ pub struct CurvatureSample {
 
 /// A point of the curvature and torsion plots of a space curve.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SpaceCurvatureSample {
     /// The parameter t.
     pub t: f64,
@@ -59,6 +61,7 @@ pub struct SpaceCurvatureSample {
 
 /// The fairness numbers of a plane curve; see [`fairness`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Fairness {
     /// The largest |κ| (0 for a straight curve).
     pub max_curvature: f64,

@@ -71,6 +71,7 @@ const HOBBY_B: f64 = 1.0 / 16.0;
 /// assert!(Tension::at_least(1.5).at_least);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tension {
     /// τ; must be finite and at least [`MIN_TENSION`] = 3/4 (checked by
     /// [`HobbyCurve::try_new`]).
@@ -119,6 +120,7 @@ impl Default for Tension {
 /// assert_eq!(join, Join::new(Tension::new(2.0), Tension::new(2.0)));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Join {
     /// α, the tension at the start of the segment.
     pub start: Tension,
@@ -156,6 +158,7 @@ impl Join {
 /// assert_eq!(HobbyOptions::default(), HobbyOptions::open());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct HobbyOptions {
     /// True for a closed path (`..cycle`); false for an open one.
     pub closed: bool,
@@ -224,6 +227,7 @@ impl Default for HobbyOptions {
 /// METAPOST sets the unused precontrol of the first knot and postcontrol of the last knot to
 /// the knot itself.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct HobbyKnot {
     /// The interpolated point zₖ.
     pub point: DVec2,

@@ -101,6 +101,8 @@ pub const FOUR_POINT_STEPS: usize = 4;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum CurveKind {
     /// `harmonic`: the harmonic curve (§3.2, §3.3).
     Harmonic,

@@ -50,7 +50,17 @@
 //!
 //! # Feature flags
 //!
-//! None: the crate has no optional features.
+//! - `serde`: `Serialize` and `Deserialize` for the comparison curves, their options and the
+//!   fairness measures. A curve is written as the data its constructor takes and read back
+//!   through that constructor (an invalid file is an error, never an invalid curve):
+//!   [`bspline::BSplineCurve`] `{"degree", "knots", "control", "closed"}` (the breakpoints of
+//!   one period when closed), [`nurbs::NurbsCurve`] the same plus `"weights"`,
+//!   [`lagrange::LagrangeCurve`] `{"points", "params"}`, [`corner_cutting::ChaikinCurve`]
+//!   `{"points", "closed"}`, [`corner_cutting::FourPointCurve`] the same plus `"weight"`,
+//!   [`bspline_interp::InterpolatingSpline`] `{"points", "params", "end"}` (`end` null when
+//!   periodic), [`AnyCurve`] `{"kind", "points"}`. Results that come out of a solve
+//!   (the Hobby curve, the Hermite splines, the §4.4 surface fit) have no `serde` form: keep
+//!   their inputs, or their Bézier form through `hi-bezier`'s `serde`.
 
 pub mod bspline;
 pub mod bspline_fit;
@@ -64,6 +74,8 @@ pub mod hobby;
 pub mod kind;
 pub mod lagrange;
 pub mod nurbs;
+#[cfg(feature = "serde")]
+mod serde_impls;
 
 pub use bspline_fit::{BSplineFit, BSplineSurface, BezierPatchGrid};
 pub use error::Error;

@@ -131,6 +131,13 @@ impl<P: ControlPoint> NurbsCurve<P> {
         &self.weights
     }
 
+    /// Whether the curve is closed (built by [`NurbsCurve::try_new_periodic`]); its
+    /// [`knots`](NurbsCurve::knots) are then the n + 1 breakpoints of one period.
+    #[must_use]
+    pub fn is_closed(&self) -> bool {
+        self.numerator.is_closed()
+    }
+
     /// The curve parameters of the ends of the polynomial pieces, as
     /// [`BSplineCurve::breakpoints`].
     #[must_use]

@@ -46,6 +46,8 @@ pub const SAMPLES_PER_PIECE: usize = 32;
 /// `hi-surface`) must stay to the harmonic curve or surface: the bound the Hermite schemes
 /// refine to (the thesis's schemes have a fixed error and only report it).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Tolerance {
     /// A distance, in the units of the points.
     Absolute(f64),
@@ -93,6 +95,8 @@ pub const MAX_PIECES: usize = 1 << 20;
 
 /// The degree of the pieces of [`BezierScheme::Hermite`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum HermiteDegree {
     /// Cubic pieces with the value and the first derivative of the curve at both ends: C1.
     #[default]
@@ -104,6 +108,8 @@ pub enum HermiteDegree {
 /// How a harmonic curve becomes Bézier pieces (§5.7).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BezierScheme {
     /// The thesis's cubic scheme (docs/math.md §4): on each [a/n, (a+1)/n] one cubic per σₖ through
     /// σₖ at a/n + i/(3n), i = 0 … 3. C0; the data points are interpolated.
@@ -171,6 +177,7 @@ impl BezierScheme {
 /// pieces [`breaks[a]`, `breaks[a+1]`] and, for each piece a and function k, the Bézier control
 /// values `P[a][k][j]`, j = 0 … degree (local parameter s = (t − `breaks[a]`)/(`breaks[a+1]` − `breaks[a]`)).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct BasisPieces {
     n: usize,
     degree: usize,
@@ -178,6 +185,7 @@ pub struct BasisPieces {
     breaks: Vec<f64>,
     ctrl: Vec<f64>,
     // The breaks of σ₀'s own pieces, from 0 to 1 (σₖ's are these shifted by k/n).
+    #[cfg_attr(feature = "serde", serde(skip))]
     own: Vec<f64>,
 }
 
@@ -491,6 +499,8 @@ pub fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
 /// A closed chain of Bézier pieces over the harmonic parameter: piece a covers
 /// t ∈ [`breaks[a]`, `breaks[a+1]`] with local parameter s = (t − `breaks[a]`)/(`breaks[a+1]` − `breaks[a]`).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(bound = "P: ControlPoint + serde::Serialize"))]
 pub struct BezierSpline<P> {
     // Invariant: breaks as for BasisPieces; segments.len() = breaks.len() − 1 ≥ 1.
     breaks: Vec<f64>,
@@ -557,6 +567,7 @@ impl<P: ControlPoint> BezierSpline<P> {
 /// What a conversion achieved (§5.7): pieces, deviation from the harmonic curve (measured and
 /// bounded) and continuity.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BezierReport {
     /// Number of Bézier pieces.
     pub pieces: usize,
@@ -575,6 +586,8 @@ pub struct BezierReport {
 
 /// A harmonic curve's Bézier form with its report.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(bound = "P: ControlPoint + serde::Serialize"))]
 pub struct CurveBezier<P> {
     /// The pieces.
     pub spline: BezierSpline<P>,

@@ -88,6 +88,7 @@ fn adaptive_gauss(f: &impl Fn(f64) -> f64, a: f64, b: f64, accuracy: f64, depth:
 /// The Frenet frame of a curve at a point: unit tangent, principal normal and (in space)
 /// binormal, with curvature and torsion (Hardy 2005, §2.15).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FrenetFrame<P> {
     /// Unit tangent T = X′/|X′|.
     pub tangent: P,

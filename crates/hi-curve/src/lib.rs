@@ -49,7 +49,14 @@
 //!
 //! # Feature flags
 //!
-//! None: the crate has no optional features.
+//! - `serde`: `Serialize` and `Deserialize` for the curves, the basis and the small value types.
+//!   A curve is written as the data it interpolates and read back through its checked
+//!   constructor, which rebuilds its spectrum: [`HarmonicCurve`] and [`TrigonometricCurve`]
+//!   are `{"points": [x₀, …]}`, [`NonUniformCurve`] `{"points", "params", "variant"}`,
+//!   [`Fourier`] `{"cos": [a₀, …], "sin": [b₀, …]}`, [`Sigma`] `{"n": n}`. The results of
+//!   [`HarmonicCurve::to_bezier`] ([`bezier::CurveBezier`], [`bezier::BezierSpline`],
+//!   [`bezier::BasisPieces`]) are written only: read a spline back as the
+//!   [`hi_bezier::PiecewiseBezier`] of its segments. Points are numbers or glam vectors.
 
 mod basis;
 pub mod bezier;
@@ -61,6 +68,8 @@ mod fourier;
 mod nonuniform;
 mod point;
 mod resample;
+#[cfg(feature = "serde")]
+mod serde_impls;
 pub mod testing;
 mod trig;
 mod trigonometric;

@@ -18,6 +18,7 @@ use crate::{ControlPoint, Error, HarmonicCurve};
 /// grid, or the ℓ¹ norm of the spectrum of D, whichever is smaller). Insertion (N ≥ n) is exact
 /// by Theorem 5.3, and both are then 0.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReductionError {
     /// max |X − Y| measured on a fine uniform grid.
     pub max_deviation: f64,

@@ -20,8 +20,11 @@ use crate::Error;
 
 /// Distances from a set of points to a surface or mesh, with their summary.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Distances {
-    /// The distance of each point, in the order given.
+    /// The distance of each point, in the order given (not written by `serde`: a report stays
+    /// small; read back, it is empty).
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub per_point: Vec<f64>,
     /// The mean distance.
     pub mean: f64,
@@ -291,6 +294,7 @@ pub fn distances_to_mesh(
 
 /// Both ways between a fitted surface and the scan mesh it came from.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Hausdorff {
     /// From each scan vertex to the surface.
     pub scan_to_surface: Distances,

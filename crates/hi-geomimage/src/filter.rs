@@ -13,6 +13,8 @@ use crate::{Error, GeometryImage};
 
 /// A periodic smoothing filter for geometry images (§5.4: "a simple smoothing filter").
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Smoothing {
     /// The mean over a (2r + 1) × (2r + 1) box of texels.
     Box {

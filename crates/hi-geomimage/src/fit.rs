@@ -40,6 +40,8 @@ use crate::{Error, GeometryImage, Smoothing};
 
 /// How the geometry image is made; see the module documentation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Method {
     /// The spherical parameterisation for a mesh that closes to genus 0 with one dominant part,
     /// the shrink-wrap otherwise.
@@ -73,6 +75,8 @@ impl Method {
 
 /// How the fit's error is measured.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ErrorMeasure {
     /// Not measured.
     Off,
@@ -95,6 +99,7 @@ pub enum ErrorMeasure {
 
 /// The settings of [`fit`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FitOptions {
     /// How the geometry image is made. Default [`Method::Auto`].
     pub method: Method,
@@ -291,6 +296,7 @@ impl SourceImage {
 
 /// How many distinct located points the rows of a §5.8 image had.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RowPoints {
     /// The fewest in a row.
     pub min: usize,
@@ -305,6 +311,8 @@ pub struct RowPoints {
 /// A stage of a fit, as a progress display and the stage times name it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum StageKind {
     /// The geometry image (§5.3, §5.4, or the mesh's parameterisation).
     GeometryImage,
@@ -364,6 +372,7 @@ impl std::fmt::Display for StageKind {
 
 /// The time one stage took.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Stage {
     /// Which stage.
     pub kind: StageKind,
@@ -373,6 +382,7 @@ pub struct Stage {
 
 /// The fit's error both ways.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FitErrors {
     /// From each scan point (for a mesh: each point its triangles use) to the surface.
     pub scan_to_surface: Distances,
@@ -389,6 +399,7 @@ pub struct FitErrors {
 
 /// What [`fit`] did and how well the result fits.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FitReport {
     /// How the image was made (never [`Method::Auto`]).
     pub method: Method,

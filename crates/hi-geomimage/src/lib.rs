@@ -39,6 +39,7 @@
 //! | feature | default | adds |
 //! |---|---|---|
 //! | `parallel` | yes | every stage of a fit on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread computes the surface |
+//! | `serde` | no | `Serialize` and `Deserialize` for scans, options, geometry images (`{"rows": [[t₀₀, …], …]}`, read back through [`GeometryImage::try_new`]) and reports; a report's per-point distances are left out, so it stays small |
 
 pub mod closest;
 pub mod contours;
@@ -55,6 +56,8 @@ pub mod repair;
 pub mod sampling;
 pub mod scan;
 pub mod sections;
+#[cfg(feature = "serde")]
+mod serde_impls;
 pub mod shrinkwrap;
 pub mod sphereparam;
 pub mod spherical;

@@ -34,6 +34,8 @@ use crate::{Error, GeometryImage};
 
 /// How the surface through a geometry image is regularised.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Regularisation {
     /// None: the surface interpolates the texels (the thesis).
     Off,
@@ -53,6 +55,7 @@ pub enum Regularisation {
 
 /// What [`regularise`] did.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RegularisationReport {
     /// The weight λ used.
     pub lambda: f64,

@@ -33,6 +33,7 @@ pub const ADDED_VERTEX: u32 = u32::MAX;
 
 /// What [`close_mesh`] changed to make the scan's mesh a closed surface of genus 0.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Repair {
     /// Scan points merged into another point at exactly the same position.
     pub welded_points: usize,

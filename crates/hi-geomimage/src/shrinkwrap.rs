@@ -47,6 +47,7 @@ use crate::{Error, GeometryImage};
 
 /// The settings of [`shrink_wrap`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ShrinkWrapOptions {
     /// The layout of the image. Default [`Layout::FlatOctahedron`].
     pub layout: Layout,

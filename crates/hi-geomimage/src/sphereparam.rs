@@ -56,6 +56,7 @@ const SHAPE_WEIGHT: f64 = 0.1;
 
 /// The settings of [`parameterise`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SphereParamOptions {
     /// Relaxation sweeps over every vertex each time the mesh has grown by half during the
     /// refinement, while it has at most [`SphereParamOptions::fine_vertices`]. Default 4.
@@ -76,6 +77,7 @@ impl Default for SphereParamOptions {
 
 /// How good a spherical parameterisation is.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ParamQuality {
     /// Rounds of collapses from the mesh to the tetrahedron.
     pub levels: usize,

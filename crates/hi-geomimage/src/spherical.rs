@@ -35,6 +35,7 @@ use crate::image::{GeometryImage, check_resolution};
 
 /// The settings of [`spherical_image`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SphericalOptions {
     /// How texels map to ray directions. Default [`Layout::Sphere`].
     pub layout: Layout,
@@ -131,6 +132,8 @@ pub fn ray_direction(i: usize, j: usize, rows: usize, cols: usize) -> DVec3 {
 /// [`hi_surface::MeshOptions`] is wound outwards); for the flattened octahedron this is why
 /// s and t run as they do.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Layout {
     /// Latitude–longitude rays over a doubled meridian (algorithm 2 as in the thesis).
     #[default]

@@ -37,9 +37,11 @@
 //! }
 //! ```
 //!
-//! # Feature Flags
+//! # Feature flags
 //!
-//! None.
+//! - `serde`: `Serialize` and `Deserialize` for [`Interval`] (the pair `[lo, hi]`, `null` for an
+//!   unbounded side, `[]` when empty), [`IntervalMatrix`] (its rows) and the root-finding
+//!   options and results. Reading checks the invariants: reversed bounds are an error.
 
 mod elementary;
 mod interval;
@@ -47,6 +49,8 @@ mod linalg;
 mod roots;
 mod round;
 mod scalar;
+#[cfg(feature = "serde")]
+mod serde_impls;
 
 pub use crate::elementary::LIBM_ULPS;
 pub use crate::interval::Interval;

@@ -24,6 +24,7 @@ use crate::linalg::{IntervalMatrix, hull, intersection, max_width, midpoint, rea
 
 /// Tolerances and caps of the root finders.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RootOptions {
     /// Target width of the enclosures: bisection stops splitting a box whose widest side is at
     /// most this (§5.6: ε), and interval Newton iterates until its box is this narrow.
@@ -47,6 +48,8 @@ impl Default for RootOptions {
 
 /// What is proven about the zeros of f in an enclosure.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Verdict {
     /// Exactly one zero in the enclosure, and the enclosure lies in the search domain
     /// (Krawczyk's test, or in 1-D a sign change with F′ bounded away from 0).
@@ -63,6 +66,7 @@ pub enum Verdict {
 
 /// One enclosure of zeros, with what is known about it.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Root {
     /// A box containing every zero that the search attributes to this entry.
     pub enclosure: Vec<Interval>,
@@ -72,6 +76,7 @@ pub struct Root {
 
 /// The result of a root search: every zero of f in the domain lies in some enclosure.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Roots {
     /// Disjoint-or-touching enclosures, sorted by their first coordinate.
     pub roots: Vec<Root>,
@@ -81,6 +86,7 @@ pub struct Roots {
 
 /// One zero of a 1-D function (see [`Root`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Root1 {
     /// An interval containing every zero attributed to this entry.
     pub enclosure: Interval,
@@ -90,6 +96,7 @@ pub struct Root1 {
 
 /// The result of a 1-D root search (see [`Roots`]).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Roots1 {
     /// Enclosures in increasing order.
     pub roots: Vec<Root1>,
@@ -99,6 +106,7 @@ pub struct Roots1 {
 
 /// The outcome of [`interval_newton`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NewtonOutcome {
     /// The final box, or `None` when it is proven that X holds no zero (K ∩ X = ∅).
     pub enclosure: Option<Vec<Interval>>,

@@ -88,6 +88,8 @@ const COOLWARM: [[f32; 3]; 17] = [
 
 /// The colours of a [`ColorMap`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Palette {
     /// The thesis's ramp (§5.9): blue ([`LOW_SRGB`]) to purple ([`HIGH_SRGB`]), and teal
     /// ([`NEGATIVE_SRGB`]) for −a on the [`ColorScale::Symmetric`] scale.
@@ -119,6 +121,8 @@ impl Palette {
 
 /// How values are placed on the ramp.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ColorScale {
     /// The thesis's map (§5.9): |x| from 0 (blue) to the extent a (purple); the sign is lost.
     Magnitude,
@@ -151,6 +155,7 @@ pub enum ColorScale {
 /// assert_eq!(out.colors[2], hi_mesh::srgb_to_linear_rgb(hi_mesh::HIGH_SRGB));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ColorMap {
     /// The scale.
     pub scale: ColorScale,
@@ -171,6 +176,7 @@ impl Default for ColorMap {
 /// Which values the ends of the ramp stand for, and what happened to the data: enough to draw
 /// a legend beside a picture.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ColorLegend {
     /// The scale used ([`ColorScale::Fixed`] carries its bounds).
     pub scale: ColorScale,
@@ -198,6 +204,7 @@ pub struct ColorLegend {
 
 /// Colours for a list of values, and the legend of the map that made them.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ColorMapping {
     /// One linear-RGB colour per value, each component in [0, 1].
     pub colors: Vec<[f32; 3]>,

@@ -37,6 +37,7 @@
 //! |---|---|---|
 //! | `gltf` | yes | glTF 2.0 and GLB: [`export::write_gltf`], [`export::write_glb`], reading them back (the `gltf` crate) |
 //! | `obj` | yes | reading OBJ files back (the `tobj` crate); writing OBJ needs no feature |
+//! | `serde` | no | `Serialize` and `Deserialize` for the meshes, colour maps and reports; a [`TriangleMesh`] is `{"positions", "normals", "uvs", "triangles"}` (plus `"colors"` and `"legend"` when it has them), a [`PolyMesh`] `{"positions", "faces"}`, both read back through their checked constructors |
 //!
 //! Without them [`export::save`] and [`export::load`] still know every extension and answer a
 //! format left out with [`export::FileError::FeatureDisabled`], naming the feature.
@@ -44,6 +45,8 @@
 mod colormap;
 mod error;
 pub mod export;
+#[cfg(feature = "serde")]
+mod serde_impls;
 pub mod subdivision;
 mod triangle_mesh;
 

@@ -24,6 +24,7 @@ const MAX_FAST_DEGREE: usize = 15;
 
 /// How Bézier patches are prepared and intersected.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BezierOptions {
     /// A piece is flat when its control points lie within this fraction of its diagonal from the
     /// bilinear patch of its corners.
@@ -363,6 +364,7 @@ fn normal_cone(patch: &BezierPatch<DVec3>, u: [f64; 2], v: [f64; 2]) -> Option<C
 
 /// A hit on a Bézier patch.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BezierHit {
     /// Index of the patch.
     pub patch: usize,

@@ -53,6 +53,8 @@ const INFLATION: f64 = 0.1;
 
 /// The root finder of [`HarmonicObject`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum IntervalMethod {
     /// Interval Newton: the Krawczyk operator, with bisection where it cannot decide (§5.6).
     #[default]
@@ -63,6 +65,7 @@ pub enum IntervalMethod {
 
 /// How a harmonic surface is intersected.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct HarmonicOptions {
     /// The root finder.
     pub method: IntervalMethod,
@@ -93,6 +96,8 @@ impl Default for HarmonicOptions {
 
 /// How an object is coloured.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SurfaceColor {
     /// One colour, linear RGB.
     Uniform([f32; 3]),
@@ -143,6 +148,7 @@ pub struct HarmonicObject {
 
 /// A hit on a harmonic surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct HarmonicHit {
     /// Ray parameter.
     pub t: f64,

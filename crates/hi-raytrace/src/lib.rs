@@ -35,6 +35,7 @@
 //! |---|---|---|
 //! | `parallel` | yes | image tiles rendered on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread draws the same image |
 //! | `png` | yes | PNG output: `Rendering::png_bytes`, `Rendering::write_png` (the `image` crate) |
+//! | `serde` | no | `Serialize` and `Deserialize` for cameras (`{"eye", "forward", "up", "fov_y"}`, read back through [`Camera::try_new`]), lights, materials, options, rays, hits and ray counts; objects and scenes (which hold their BVHs) have no `serde` form |
 
 mod bezier;
 mod bvh;
@@ -43,6 +44,8 @@ mod error;
 mod harmonic;
 mod mesh;
 mod ray;
+#[cfg(feature = "serde")]
+mod serde_impls;
 mod render;
 mod scene;
 pub mod testing;

@@ -26,6 +26,7 @@ pub struct MeshObject {
 /// How [`MeshObject::with_edges`] draws edges: a colour, and a width as an angle seen from the
 /// eye (so a line is as wide near as far: about `2·tan(fov/2)/height` radians per pixel).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct EdgeStyle {
     /// Linear RGB.
     pub color: [f32; 3],
@@ -36,6 +37,7 @@ pub struct EdgeStyle {
 /// A hit on a triangle: parameter and barycentric coordinates (b₀ + b₁ + b₂ = 1, the point is
 /// b₀·p₀ + b₁·p₁ + b₂·p₂).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TriangleHit {
     /// The ray parameter.
     pub t: f64,

@@ -12,6 +12,7 @@ use glam::DVec3;
 
 /// A ray o + t·d for t in [`Ray::t_min`], [`Ray::t_max`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Ray {
     /// The origin o.
     pub origin: DVec3,
@@ -55,6 +56,7 @@ impl Ray {
 
 /// Where a ray met an object, and what is needed to shade it.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Hit {
     /// The ray parameter of the hit.
     pub t: f64,

@@ -26,6 +26,7 @@ pub const MAX_SAMPLES: u32 = 1024;
 
 /// Image size and sampling.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RenderOptions {
     /// Width in pixels.
     pub width: u32,
@@ -64,6 +65,7 @@ impl Default for RenderOptions {
 
 /// How many rays a render cast.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RayCounts {
     /// Rays from the eye.
     pub camera: usize,

@@ -38,6 +38,7 @@ impl Geometry {
 /// How a surface reflects light (Blinn–Phong): the colour of a mesh without vertex colours,
 /// and the diffuse and specular weights.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Material {
     /// Colour (linear RGB) of meshes without vertex colours; Bézier patches and harmonic surfaces
     /// carry their own colours.
@@ -76,6 +77,8 @@ impl SceneObject {
 
 /// A light source; intensities are linear RGB.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Light {
     /// Light from a direction (the sun).
     Directional {

@@ -46,6 +46,7 @@ pub const SAMPLES_PER_SIDE: usize = 8;
 /// What a surface conversion achieved (§5.7): patch count, deviation (measured, bounded) and
 /// the largest normal-angle jump across patch edges.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PatchReport {
     /// Number of patches.
     pub patches: usize,
@@ -65,6 +66,14 @@ pub struct PatchReport {
 /// A harmonic surface as Bézier patches: patch (a, b) covers u ∈ [`u_breaks[a]`,
 /// `u_breaks[a+1]`], v ∈ [`v_breaks[b]`, `v_breaks[b+1]`], with local parameters in [0, 1].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(bound(
+        serialize = "P: ControlPoint + serde::Serialize",
+        deserialize = "P: ControlPoint + serde::de::DeserializeOwned"
+    ))
+)]
 pub struct SurfaceBezier<P> {
     /// The patch boundaries in u, from 0 to 1.
     pub u_breaks: Vec<f64>,

@@ -22,6 +22,7 @@ const DEGENERATE: f64 = 1e-10;
 
 /// The surface point and its first and second partial derivatives.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SurfaceDerivs {
     /// p(u, v).
     pub p: DVec3,
@@ -39,6 +40,7 @@ pub struct SurfaceDerivs {
 
 /// The first (E, F, G) and second (L, M, N) fundamental forms at a point (§4.6).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FundamentalForms {
     /// E = pᵤ·pᵤ.
     pub e: f64,
@@ -56,6 +58,7 @@ pub struct FundamentalForms {
 
 /// Curvature at a regular point of a surface (§4.6).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Curvature {
     /// The unit normal pᵤ × pᵥ/|pᵤ × pᵥ| the signs refer to.
     pub normal: DVec3,
@@ -168,6 +171,8 @@ impl HarmonicSurface<DVec3> {
 
 /// Which curvature a colour shows (§4.6); signs refer to the normal the mesh was built with.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum CurvatureQuantity {
     /// Gaussian curvature K = κ₁κ₂ (the default).
     #[default]

@@ -25,6 +25,7 @@ const MAX_TOTAL: usize = 1 << 28;
 /// Samples of a surface on a grid of parameters, row-major: `values[i·n_v + l]` is at
 /// (uᵢ, vₗ).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GridSamples<P> {
     /// Number of u parameters (rows).
     pub n_u: usize,

@@ -43,6 +43,7 @@
 //! | feature | default | adds |
 //! |---|---|---|
 //! | `parallel` | yes | grids, meshes and 2-D FFTs computed on all cores (rayon); without it they run on one thread with the same results |
+//! | `serde` | no | `Serialize` and `Deserialize` for surfaces, options and reports; a [`HarmonicSurface`] is `{"rows": [[x₀₀, …], …]}`, the grid it interpolates, read back through [`HarmonicSurface::try_new`] (which rebuilds its spectrum) |
 
 pub mod bezier;
 mod error;
@@ -54,6 +55,8 @@ mod mesh;
 mod par;
 mod parametric;
 mod resample;
+#[cfg(feature = "serde")]
+mod serde_impls;
 mod spectrum;
 mod surface;
 pub mod testing;

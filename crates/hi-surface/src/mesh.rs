@@ -60,6 +60,8 @@ const PERIOD_TOLERANCE: f64 = 1e-12;
 
 /// How a closed direction (a window one period wide) meets itself; see the module notes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Seam {
     /// One vertex per surface point: the mesh is closed, UVs wrap back to 0 in the last quads,
     /// and a pole is one vertex.
@@ -72,6 +74,7 @@ pub enum Seam {
 
 /// Colouring a mesh by curvature: which curvature and which colour map.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CurvatureColoring {
     /// The curvature shown. Signs refer to the normals of the mesh (so H changes sign with
     /// [`MeshOptions::flip`]).
@@ -82,6 +85,7 @@ pub struct CurvatureColoring {
 
 /// How to mesh a surface: resolution, parameter window, seams, orientation, colours.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeshOptions {
     /// Number of quads along u (at least 1; at least 3 if the u window is a whole period).
     pub n_u: usize,

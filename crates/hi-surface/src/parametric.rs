@@ -102,6 +102,7 @@ impl ParametricSurface {
 
 /// Gaussian and mean curvature of a parametric surface against its harmonic surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CurvatureComparison {
     /// Points compared (regular on both surfaces).
     pub n_points: usize,

@@ -15,6 +15,8 @@ use crate::{Error, HarmonicSurface};
 
 /// A parameter direction of a surface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Axis {
     /// The first parameter (grid rows, m of them).
     U,

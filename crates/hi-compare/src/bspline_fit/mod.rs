@@ -75,6 +75,7 @@ use crate::Error;
 
 /// The choices of [`BSplineFit::try_new`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BSplineFitOptions {
     /// The slices are closed curves: periodic U-curves (do not repeat the first point).
     pub closed_u: bool,

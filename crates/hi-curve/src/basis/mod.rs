@@ -26,6 +26,8 @@ use crate::Error;
 /// | `CosineSum` | eq. 3.28 / 3.29 | O(n) | a few ulps times √n |
 /// | `Chebyshev` | §3.9 | O(n) | degrades as n² near nodes, see [`Sigma::chebyshev`] |
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Form {
     /// sin(nπd)/(n·sin(πd)) (times cos(πd) for even n), eq. 3.13 and 3.26, with d = t − k/n
     /// reduced modulo 1 exactly. The default.

@@ -27,6 +27,8 @@ use crate::{ControlPoint, Error, Fourier};
 
 /// Which reading of §3.10 a [`NonUniformCurve`] follows (docs/math.md §5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum NonUniformVariant {
     /// The thesis's final formula as printed (real part, m = ⌊n/2⌋, the (n−1)·t scaling).
     /// Interpolates xₖ at t = k/(n−1), not at tₖ; defined on t ∈ [0, 1], not periodic.

@@ -51,6 +51,8 @@ use glam::DVec3;
 
 /// The file formats [`read_scan`] understands.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ScanFormat {
     /// Wavefront OBJ.
     Obj,
@@ -138,6 +140,7 @@ impl fmt::Display for ScanFormat {
 
 /// A scan: points in space, with a normal per point and triangles where the file has them.
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Scan {
     /// The points, all finite.
     pub points: Vec<DVec3>,
@@ -194,6 +197,8 @@ impl Scan {
 
 /// Where in a file an error was found.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Location {
     /// A line of a text file, counted from 1.
     Line(usize),

@@ -97,6 +97,8 @@ pub const MAX_SLICES: usize = 1 << 16;
 
 /// The direction the sections are cut across (step 1 of algorithm 1).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SliceAxis {
     /// Sections perpendicular to x.
     X,
@@ -112,6 +114,8 @@ pub enum SliceAxis {
 
 /// How the points of a section are put in order along its contour (step 4 of algorithm 1).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ContourOrder {
     /// By polar angle about the section's centroid: right exactly when the section is
     /// star-shaped about its centroid.
@@ -125,6 +129,8 @@ pub enum ContourOrder {
 
 /// How the contours are turned against each other (step 7 of algorithm 1, Theorem 5.1).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Alignment {
     /// Not at all: every contour starts at its first ordered point.
     None,
@@ -138,6 +144,7 @@ pub enum Alignment {
 
 /// The settings of [`fit_sections`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SectionOptions {
     /// The direction across the sections. Default z.
     pub axis: SliceAxis,
@@ -171,6 +178,7 @@ impl Default for SectionOptions {
 
 /// What happened to one section.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SliceReport {
     /// The slab of heights along the axis the section was cut from.
     pub range: (f64, f64),
@@ -204,6 +212,8 @@ pub struct SliceReport {
 /// A measured sign that the fit failed (see the module documentation).
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Problem {
     /// The order of a section's points does not follow a curve.
     ScrambledContour {
@@ -266,6 +276,7 @@ impl std::fmt::Display for Problem {
 
 /// What [`fit_sections`] did, and how well.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SectionReport {
     /// The input points.
     pub points: usize,

@@ -47,6 +47,8 @@ const MESH_EXTENSIONS: &str = ".obj, .gltf or .glb";
 
 /// A mesh file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum MeshFormat {
     /// Wavefront OBJ (`.obj`).
     Obj,
@@ -299,6 +301,8 @@ pub fn load(path: impl AsRef<Path>) -> Result<TriangleMesh, Error> {
 
 /// Whether two meshes have the same triangles over the same vertices.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Connectivity {
     /// The same index lists.
     Identical,
@@ -312,6 +316,7 @@ pub enum Connectivity {
 /// are the largest absolute difference of a component between the two, both rounded to f32,
 /// over the corners of corresponding triangles.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReadBackReport {
     /// Number of vertices of the mesh in memory.
     pub expected_vertices: usize,

@@ -16,6 +16,8 @@ use crate::Error;
 
 /// The weight β of the Loop vertex rule, for valence n.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum LoopWeights {
     /// Loop's original β = (1/n)·(5/8 − (3/8 + 1/4·cos(2π/n))²), as in CGAL, `OpenMesh`, `trimesh`
     /// and `MeshLab`.
@@ -127,6 +129,7 @@ pub(crate) fn split_1_to_4(mesh: &PolyMesh, positions: Vec<DVec3>) -> Result<Pol
 /// Where a vertex of a Loop or Catmull-Clark surface ends up after infinitely many steps, and
 /// the surface normal there.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LimitPoint {
     /// The limit position.
     pub position: DVec3,

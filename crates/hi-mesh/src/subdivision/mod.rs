@@ -52,6 +52,8 @@ pub use sqrt3::{interpolating_sqrt3_step, sqrt3_step};
 /// The subdivision schemes of §4.5, for code that picks one at run time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Scheme {
     /// [`loop_step`] with the given β.
     Loop(LoopWeights),
