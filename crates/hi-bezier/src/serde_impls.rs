@@ -229,8 +229,10 @@ mod tests {
         }
         assert!(serde_json::from_str::<BezierPatch<f64>>(r#"{"rows":[[1.0,2.0],[3.0]]}"#).is_err());
         assert!(
-            serde_json::from_str::<RationalBezierCurve<f64>>(r#"{"points":[1.0],"weights":[-1.0]}"#)
-                .is_err()
+            serde_json::from_str::<RationalBezierCurve<f64>>(
+                r#"{"points":[1.0],"weights":[-1.0]}"#
+            )
+            .is_err()
         );
         assert!(serde_json::from_str::<TriangularPatch<f64>>(r#"{"points":[1.0,2.0]}"#).is_err());
         assert!(serde_json::from_str::<PiecewiseBezier<f64>>(r#"{"segments":[]}"#).is_err());

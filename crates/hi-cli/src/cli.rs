@@ -59,7 +59,7 @@ Output: {\"roots\": [[lo, hi], ...], \"unique\": [true, ...], \"verdicts\": [\"u
   Every zero of dᴰσⁿ/dtᴰ (σⁿ = σⁿ₀; the zeros of σⁿₖ are these shifted by k/n) in [0, 1] lies in
   one of the intervals [lo, hi], found by interval bisection and Krawczyk's method on the
   cosine-sum extension (eq. 5.4) with outward rounding. unique: the interval holds exactly one
-  zero (proven). verdicts: unique, exists (at least one), at-most-one (a zero at an end of
+  zero (proven). verdicts: unique, exists (at least one), at_most_one (a zero at an end of
   [0, 1] may lie just outside), unknown. complete: false if a cap stopped the search.
 Example: hi basis roots --n 3 --derivative 1   (zeros at 0, 1/2 and 1)";
 

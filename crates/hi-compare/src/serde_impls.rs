@@ -297,9 +297,12 @@ mod tests {
         assert_eq!(round_trip(&chaikin), chaikin);
         let four = FourPointCurve::try_with_weight(p.clone(), false, 0.1).unwrap();
         assert_eq!(round_trip(&four), four);
-        let natural =
-            InterpolatingSpline::try_open(p.clone(), Parameters::ChordLength, EndCondition::Natural)
-                .unwrap();
+        let natural = InterpolatingSpline::try_open(
+            p.clone(),
+            Parameters::ChordLength,
+            EndCondition::Natural,
+        )
+        .unwrap();
         assert_eq!(round_trip(&natural), natural);
         let periodic = InterpolatingSpline::try_periodic(p.clone(), Parameters::Uniform).unwrap();
         assert_eq!(round_trip(&periodic), periodic);
@@ -320,7 +323,9 @@ mod tests {
         }
         let bad_weight = r#"{"degree":1,"knots":[0,0,1,1],"control":[0,1],"weights":[1,-1]}"#;
         assert!(serde_json::from_str::<NurbsCurve<f64>>(bad_weight).is_err());
-        assert!(serde_json::from_str::<AnyCurve<f64>>(r#"{"kind":"harmonic","points":[]}"#).is_err());
+        assert!(
+            serde_json::from_str::<AnyCurve<f64>>(r#"{"kind":"harmonic","points":[]}"#).is_err()
+        );
         let repeated = r#"{"points":[0.0,1.0],"params":[0.5,0.5]}"#;
         assert!(serde_json::from_str::<LagrangeCurve<f64>>(repeated).is_err());
     }

@@ -29,9 +29,14 @@ impl<'de> Deserialize<'de> for Interval {
         let bounds = Vec::<Option<f64>>::deserialize(deserializer)?;
         match bounds[..] {
             [] => Ok(Interval::EMPTY),
-            [lo, hi] => Interval::try_new(lo.unwrap_or(f64::NEG_INFINITY), hi.unwrap_or(f64::INFINITY))
-                .map_err(D::Error::custom),
-            _ => Err(D::Error::invalid_length(bounds.len(), &"an interval [lo, hi], or [] when empty")),
+            [lo, hi] => {
+                Interval::try_new(lo.unwrap_or(f64::NEG_INFINITY), hi.unwrap_or(f64::INFINITY))
+                    .map_err(D::Error::custom)
+            }
+            _ => Err(D::Error::invalid_length(
+                bounds.len(),
+                &"an interval [lo, hi], or [] when empty",
+            )),
         }
     }
 }

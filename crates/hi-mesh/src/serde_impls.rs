@@ -57,9 +57,9 @@ impl<'de> Deserialize<'de> for TriangleMesh {
         match (raw.colors, raw.legend) {
             (None, None) => Ok(mesh),
             (Some(colors), None) => mesh.try_with_colors(colors).map_err(D::Error::custom),
-            (Some(colors), Some(legend)) => mesh
-                .try_with_mapping(ColorMapping { colors, legend })
-                .map_err(D::Error::custom),
+            (Some(colors), Some(legend)) => {
+                mesh.try_with_mapping(ColorMapping { colors, legend }).map_err(D::Error::custom)
+            }
             (None, Some(_)) => Err(D::Error::custom("a mesh with a colour legend has no colours")),
         }
     }

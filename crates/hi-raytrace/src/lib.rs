@@ -44,10 +44,10 @@ mod error;
 mod harmonic;
 mod mesh;
 mod ray;
-#[cfg(feature = "serde")]
-mod serde_impls;
 mod render;
 mod scene;
+#[cfg(feature = "serde")]
+mod serde_impls;
 pub mod testing;
 
 pub use bezier::{BezierHit, BezierObject, BezierOptions};

@@ -28,8 +28,7 @@ impl Serialize for Camera {
 impl<'de> Deserialize<'de> for Camera {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let raw = CameraRaw::deserialize(deserializer)?;
-        Camera::try_new(raw.eye, raw.eye + raw.forward, raw.up, raw.fov_y)
-            .map_err(D::Error::custom)
+        Camera::try_new(raw.eye, raw.eye + raw.forward, raw.up, raw.fov_y).map_err(D::Error::custom)
     }
 }
 

@@ -2,12 +2,13 @@
 //! `hi basis`: σⁿₖ(t) and its derivatives.
 
 use hi_curve::{Error, Sigma};
-
 use hi_interval::{Interval, RootOptions, Verdict};
 
 use crate::cli::{BasisArgs, BasisCommand, RootsArgs};
 use crate::error::{Failure, context};
-use crate::output::{Json, Object};
+use serde::Serialize;
+
+use crate::output::{Derivatives, Json, json};
 
 /// `{"sigma": [...], "d1": [...], ...}` for the basis function σⁿₖ at each t.
 ///
@@ -27,11 +28,21 @@ pub(crate) fn run(args: &BasisArgs) -> Result<Json, Failure> {
         return Err(context("--k")(Error::IndexOutOfRange { k, n }));
     }
     let ts = &t.0;
-    let mut out = Object::new().field("sigma", Json::numbers(ts.iter().map(|&t| sigma.eval(k, t))));
-    for order in 1..=args.derivatives {
-        out.push(format!("d{order}"), Json::numbers(ts.iter().map(|&t| sigma.deriv(k, t, order))));
+    /// `{"sigma": [...], "d1": [...], ...}`.
+    #[derive(Serialize)]
+    struct Values {
+        sigma: Vec<f64>,
+        #[serde(flatten)]
+        derivatives: Derivatives<Vec<f64>>,
     }
-    Ok(out.build())
+    json(&Values {
+        sigma: ts.iter().map(|&t| sigma.eval(k, t)).collect(),
+        derivatives: Derivatives(
+            (1..=args.derivatives)
+                .map(|order| ts.iter().map(|&t| sigma.deriv(k, t, order)).collect())
+                .collect(),
+        ),
+    })
 }
 
 /// `{"roots": [[lo, hi], ...], "unique": [...], "verdicts": [...], "complete": c}`: the zeros
@@ -56,35 +67,18 @@ fn run_roots(args: &RootsArgs) -> Result<Json, Failure> {
     }
     let found =
         sigma.derivative_roots(args.derivative, Interval::new(0.0, 1.0), &RootOptions::default());
-    let verdict = |v: Verdict| match v {
-        Verdict::Unique => "unique",
-        Verdict::Exists => "exists",
-        Verdict::AtMostOne => "at-most-one",
-        Verdict::Unknown => "unknown",
-    };
-    Ok(Object::new()
-        .field(
-            "roots",
-            Json::Array(
-                found
-                    .roots
-                    .iter()
-                    .map(|r| Json::numbers([r.enclosure.lo(), r.enclosure.hi()]))
-                    .collect(),
-            ),
-        )
-        .field(
-            "unique",
-            Json::Array(
-                found.roots.iter().map(|r| Json::Bool(r.verdict == Verdict::Unique)).collect(),
-            ),
-        )
-        .field(
-            "verdicts",
-            Json::Array(
-                found.roots.iter().map(|r| Json::String(verdict(r.verdict).into())).collect(),
-            ),
-        )
-        .field("complete", Json::Bool(found.complete))
-        .build())
+    /// `{"roots": [[lo, hi], ...], "unique": [...], "verdicts": [...], "complete": bool}`.
+    #[derive(Serialize)]
+    struct Found {
+        roots: Vec<Interval>,
+        unique: Vec<bool>,
+        verdicts: Vec<Verdict>,
+        complete: bool,
+    }
+    json(&Found {
+        roots: found.roots.iter().map(|r| r.enclosure).collect(),
+        unique: found.roots.iter().map(|r| r.verdict == Verdict::Unique).collect(),
+        verdicts: found.roots.iter().map(|r| r.verdict).collect(),
+        complete: found.complete,
+    })
 }

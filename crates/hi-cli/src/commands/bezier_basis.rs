@@ -5,7 +5,9 @@ use hi_curve::bezier::BasisPieces;
 
 use crate::cli::{BasisSchemeName, BezierBasisArgs};
 use crate::error::{Failure, context};
-use crate::output::{Json, Object};
+use serde::Serialize;
+
+use crate::output::{Json, json};
 
 /// The largest n accepted: the output has pieces·n·(degree + 1) numbers.
 const MAX_N: usize = 1024;
@@ -24,20 +26,24 @@ pub(crate) fn run(args: &BezierBasisArgs) -> Result<Json, Failure> {
         BasisSchemeName::ThesisQuintic => (BasisPieces::thesis_quintic(args.n), "thesis-quintic"),
     };
     let pieces = pieces.map_err(context("--n"))?;
-    let p = (0..pieces.n_pieces())
-        .map(|a| {
-            Json::Array(
-                (0..pieces.n())
-                    .map(|k| Json::numbers(pieces.control(a, k).iter().copied()))
-                    .collect(),
-            )
-        })
-        .collect();
-    Ok(Object::new()
-        .field("n", Json::Count(pieces.n()))
-        .field("scheme", Json::String(name.to_owned()))
-        .field("degree", Json::Count(pieces.degree()))
-        .field("breaks", Json::numbers(pieces.breaks().iter().copied()))
-        .field("P", Json::Array(p))
-        .build())
+    /// `{"n", "scheme", "degree", "breaks", "P"}`: `P[a][k]` the Bernstein coefficients of σₖ
+    /// on piece a.
+    #[derive(Serialize)]
+    struct Pieces<'a> {
+        n: usize,
+        scheme: &'a str,
+        degree: usize,
+        breaks: &'a [f64],
+        #[serde(rename = "P")]
+        p: Vec<Vec<&'a [f64]>>,
+    }
+    json(&Pieces {
+        n: pieces.n(),
+        scheme: name,
+        degree: pieces.degree(),
+        breaks: pieces.breaks(),
+        p: (0..pieces.n_pieces())
+            .map(|a| (0..pieces.n()).map(|k| pieces.control(a, k)).collect())
+            .collect(),
+    })
 }

@@ -6,7 +6,7 @@ use hi_compare::fairness::fairness;
 use crate::cli::FairnessArgs;
 use crate::error::{Failure, context};
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use crate::output::{Json, json};
 
 /// `{"max_curvature", "max_curvature_at", "monotone_pieces", "bending_energy",
 /// "bending_energy_error", "length",
@@ -24,15 +24,7 @@ pub(crate) fn run(args: &FairnessArgs) -> Result<Json, Failure> {
     };
     let curve = args.kind.build(points)?;
     let f = fairness(&curve, curve.points(), args.samples).map_err(context("--samples"))?;
-    Ok(Object::new()
-        .field("max_curvature", Json::Number(f.max_curvature))
-        .field("max_curvature_at", Json::Number(f.max_curvature_at))
-        .field("monotone_pieces", Json::Count(f.monotone_pieces))
-        .field("bending_energy", Json::Number(f.bending_energy))
-        .field("bending_energy_error", Json::Number(f.bending_energy_error))
-        .field("length", Json::Number(f.length))
-        .field("confinement", f.confinement.map_or(Json::Null, Json::Number))
-        .build())
+    json(&f)
 }
 
 fn not_planar(dim: usize) -> Failure {

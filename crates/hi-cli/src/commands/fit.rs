@@ -7,20 +7,25 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use glam::DVec3;
+use hi_curve::ReductionError;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::fit::mesh_oversample;
+use hi_geomimage::fit::{RowPoints, Stage};
 use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::regularise::Regularisation;
+use hi_geomimage::regularise::RegularisationReport;
 use hi_geomimage::scan::read_scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
 use hi_mesh::export::{self, MeshFormat};
 use indicatif::{ProgressBar, ProgressStyle};
+use serde::Serialize;
 
 use crate::cli::{FitArgs, MethodName, ParamName};
+use crate::commands::fit_sections::DistancesOut;
 use crate::commands::surface_bezier;
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
-use crate::output::{Json, Object};
+use crate::output::{Json, file_names, json};
 
 /// Above this fraction of rays meeting the scan more than once, `hi fit` warns.
 const NON_STAR_WARNING: f64 = 0.05;
@@ -143,14 +148,14 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         let (u0, u1) = options.layout.covering_window();
         let once = patches.patches_in([u0, u1]);
         let name = scheme.name();
-        let mut report = surface_bezier::report_json(name, &patches.report);
-        if let Json::Object(fields) = &mut report {
-            fields.push(("seconds".to_owned(), Json::Number(seconds)));
-            fields.push(("patches_once".to_owned(), Json::Count(once.len())));
-        }
-        bezier_report = Some(report.clone());
-        if as_grid {
-            write_file(&args.output, &surface_bezier::patches_json(name, &patches, report), false)?;
+        let report = BezierOut {
+            report: surface_bezier::Report { scheme: name, report: &patches.report },
+            seconds,
+            patches_once: once.len(),
+        };
+        let files = if as_grid {
+            let file = surface_bezier::patches_json(name, &patches, &report)?;
+            write_file(&args.output, &file, false)?;
             vec![args.output.clone()]
         } else if ext.as_deref() == Some("obj") {
             surface_bezier::write_obj(&patches, &once, &args.output)?;
@@ -160,9 +165,11 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
                 .to_triangle_mesh_of(BEZIER_SAMPLES, &once)
                 .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
             export::save(&mesh, &args.output)?
-        }
+        };
+        bezier_report = Some(json(&report)?);
+        files
     } else if as_grid {
-        write_file(&args.output, &grid_json(&fitted.surface.rows()), false)?;
+        write_file(&args.output, &grid_json(&fitted.surface.rows())?, false)?;
         vec![args.output.clone()]
     } else {
         // The closed mesh the error was measured on, or the same made now.
@@ -182,139 +189,149 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         };
         export::save(&mesh, &args.output)?
     };
-    let mut summary = summary(args, &fitted, &files);
-    if let (Some(b), Json::Object(fields)) = (bezier_report, &mut summary) {
-        fields.push(("bezier".to_owned(), b));
-    }
+    let summary = summary(args, &fitted, &files, bezier_report)?;
     if let Some(path) = &args.report {
         write_file(path, &summary, true)?;
     }
     Ok(summary)
 }
 
+/// The report of `--bezier`: the conversion's, its time and the patches written.
+#[derive(Serialize)]
+struct BezierOut<'a> {
+    #[serde(flatten)]
+    report: surface_bezier::Report<'a>,
+    seconds: f64,
+    patches_once: usize,
+}
+
+/// What `hi fit` did to a mesh scan before parameterising it.
+#[derive(Serialize)]
+struct MeshOut {
+    holes_filled: usize,
+    hole_edges: usize,
+    parts: usize,
+    area_kept: f64,
+    welded_points: usize,
+    dropped_triangles: usize,
+    reoriented_triangles: usize,
+    split_vertices: usize,
+    stretch_efficiency: f64,
+    levels: usize,
+}
+
+/// Both directions of the fit's error, as printed.
+#[derive(Serialize)]
+struct BothWaysOut {
+    scan_to_surface: DistancesOut,
+    surface_to_scan: DistancesOut,
+    filled_to_scan_max: f64,
+    filled_to_scan_max_relative: f64,
+    unreached_fraction: f64,
+    diagonal: f64,
+}
+
+/// The Hausdorff distance of an exact error measurement.
+#[derive(Serialize)]
+struct HausdorffOut {
+    distance: f64,
+    relative: f64,
+    scan_to_surface_max: f64,
+    surface_to_scan_max: f64,
+}
+
+/// The printed summary of `hi fit`.
+#[derive(Serialize)]
+struct Summary<'a> {
+    scan: String,
+    method: &'static str,
+    method_reason: &'a str,
+    points: usize,
+    unused_points: usize,
+    image_points: usize,
+    dropped_points: usize,
+    image: [usize; 2],
+    surface: (usize, usize),
+    non_star_fraction: f64,
+    hole_fraction: f64,
+    row_points: Option<&'a RowPoints>,
+    mesh: Option<MeshOut>,
+    regularisation: &'a RegularisationReport,
+    stages: &'a [Stage],
+    reduction: Option<&'a ReductionError>,
+    errors: Option<DistancesOut>,
+    both_ways: Option<BothWaysOut>,
+    hausdorff: Option<HausdorffOut>,
+    files: Vec<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    bezier: Option<Json>,
+}
+
+/// `x / d`, or 0 for an empty diagonal.
+fn relative(x: f64, d: f64) -> f64 {
+    if d > 0.0 { x / d } else { 0.0 }
+}
+
 /// The summary of a fit as JSON.
-fn summary(args: &FitArgs, fitted: &hi_geomimage::Fit, files: &[PathBuf]) -> Json {
+fn summary(
+    args: &FitArgs,
+    fitted: &hi_geomimage::Fit,
+    files: &[PathBuf],
+    bezier: Option<Json>,
+) -> Result<Json, Failure> {
     let r = &fitted.report;
-    let stages = fitted
-        .stages
-        .iter()
-        .map(|s| {
-            Object::new()
-                .field("name", Json::String(s.kind.name().to_owned()))
-                .field("seconds", Json::Number(s.seconds))
-                .build()
-        })
-        .collect();
-    let reduction = r.reduction.map_or(Json::Null, |e| {
-        Object::new()
-            .field("max_deviation", Json::Number(e.max_deviation))
-            .field("upper_bound", Json::Number(e.upper_bound))
-            .build()
-    });
-    let errors = r.errors.as_ref().map_or(Json::Null, |d| {
-        Object::new()
-            .field("mean", Json::Number(d.mean))
-            .field("rms", Json::Number(d.rms))
-            .field("max", Json::Number(d.max))
-            .field("diagonal", Json::Number(d.diagonal))
-            .field("relative", Json::numbers(d.relative()))
-            .build()
-    });
-    let hausdorff = r.hausdorff.as_ref().map_or(Json::Null, |h| {
-        let diagonal = h.scan_to_surface.diagonal;
-        Object::new()
-            .field("distance", Json::Number(h.distance()))
-            .field(
-                "relative",
-                Json::Number(if diagonal > 0.0 { h.distance() / diagonal } else { 0.0 }),
-            )
-            .field("scan_to_surface_max", Json::Number(h.scan_to_surface.max))
-            .field("surface_to_scan_max", Json::Number(h.surface_to_scan.max))
-            .build()
-    });
-    let row_points = r.row_points.map_or(Json::Null, |rp| {
-        Object::new()
-            .field("min", Json::Count(rp.min))
-            .field("mean", Json::Number(rp.mean))
-            .field("max", Json::Count(rp.max))
-            .field("empty_rows", Json::Count(rp.empty_rows))
-            .build()
-    });
-    let distances = |d: &hi_geomimage::distance::Distances| {
-        Object::new()
-            .field("mean", Json::Number(d.mean))
-            .field("rms", Json::Number(d.rms))
-            .field("max", Json::Number(d.max))
-            .field("relative", Json::numbers(d.relative()))
-            .build()
-    };
-    let both_ways = r.both_ways.as_ref().map_or(Json::Null, |e| {
-        let diagonal = e.scan_to_surface.diagonal;
-        Object::new()
-            .field("scan_to_surface", distances(&e.scan_to_surface))
-            .field("surface_to_scan", distances(&e.surface_to_scan))
-            .field("filled_to_scan_max", Json::Number(e.filled_to_scan_max))
-            .field(
-                "filled_to_scan_max_relative",
-                Json::Number(if diagonal > 0.0 { e.filled_to_scan_max / diagonal } else { 0.0 }),
-            )
-            .field("unreached_fraction", Json::Number(e.unreached_fraction))
-            .field("diagonal", Json::Number(diagonal))
-            .build()
-    });
     let mesh = match &fitted.source {
-        hi_geomimage::SourceImage::Mesh(m) => Object::new()
-            .field("holes_filled", Json::Count(m.repair.holes))
-            .field("hole_edges", Json::Count(m.repair.hole_edges))
-            .field("parts", Json::Count(m.repair.components))
-            .field("area_kept", Json::Number(m.area_kept))
-            .field("welded_points", Json::Count(m.repair.welded_points))
-            .field("dropped_triangles", Json::Count(m.repair.dropped_triangles))
-            .field("reoriented_triangles", Json::Count(m.repair.reoriented_triangles))
-            .field("split_vertices", Json::Count(m.repair.split_vertices))
-            .field("stretch_efficiency", Json::Number(m.quality.stretch_efficiency))
-            .field("levels", Json::Count(m.quality.levels))
-            .build(),
-        _ => Json::Null,
+        hi_geomimage::SourceImage::Mesh(m) => Some(MeshOut {
+            holes_filled: m.repair.holes,
+            hole_edges: m.repair.hole_edges,
+            parts: m.repair.components,
+            area_kept: m.area_kept,
+            welded_points: m.repair.welded_points,
+            dropped_triangles: m.repair.dropped_triangles,
+            reoriented_triangles: m.repair.reoriented_triangles,
+            split_vertices: m.repair.split_vertices,
+            stretch_efficiency: m.quality.stretch_efficiency,
+            levels: m.quality.levels,
+        }),
+        _ => None,
     };
-    let regularisation = Object::new()
-        .field("lambda", Json::Number(r.regularisation.lambda))
-        .field("kept", Json::Number(r.regularisation.kept))
-        .field("rms_change", Json::Number(r.regularisation.rms_change))
-        .field("max_change", Json::Number(r.regularisation.max_change))
-        .build();
-    Object::new()
-        .field("scan", Json::String(args.scan.display().to_string()))
-        .field("method", Json::String(r.method.name().to_owned()))
-        .field("method_reason", Json::String(r.method_reason.clone()))
-        .field("points", Json::Count(r.points))
-        .field("unused_points", Json::Count(r.unused_points))
-        .field("image_points", Json::Count(r.image_points))
-        .field("dropped_points", Json::Count(r.dropped_points))
-        .field(
-            "image",
-            Json::Array(vec![
-                Json::Count(fitted.source.image().rows()),
-                Json::Count(fitted.source.image().cols()),
-            ]),
-        )
-        .field(
-            "surface",
-            Json::Array(vec![Json::Count(r.surface_size.0), Json::Count(r.surface_size.1)]),
-        )
-        .field("non_star_fraction", Json::Number(r.non_star_fraction))
-        .field("hole_fraction", Json::Number(r.hole_fraction))
-        .field("row_points", row_points)
-        .field("mesh", mesh)
-        .field("regularisation", regularisation)
-        .field("stages", Json::Array(stages))
-        .field("reduction", reduction)
-        .field("errors", errors)
-        .field("both_ways", both_ways)
-        .field("hausdorff", hausdorff)
-        .field(
-            "files",
-            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
-        )
-        .build()
+    let image = fitted.source.image();
+    json(&Summary {
+        scan: args.scan.display().to_string(),
+        method: r.method.name(),
+        method_reason: &r.method_reason,
+        points: r.points,
+        unused_points: r.unused_points,
+        image_points: r.image_points,
+        dropped_points: r.dropped_points,
+        image: [image.rows(), image.cols()],
+        surface: r.surface_size,
+        non_star_fraction: r.non_star_fraction,
+        hole_fraction: r.hole_fraction,
+        row_points: r.row_points.as_ref(),
+        mesh,
+        regularisation: &r.regularisation,
+        stages: &fitted.stages,
+        reduction: r.reduction.as_ref(),
+        errors: r.errors.as_ref().map(DistancesOut::of),
+        both_ways: r.both_ways.as_ref().map(|e| {
+            let diagonal = e.scan_to_surface.diagonal;
+            BothWaysOut {
+                scan_to_surface: DistancesOut::of(&e.scan_to_surface),
+                surface_to_scan: DistancesOut::of(&e.surface_to_scan),
+                filled_to_scan_max: e.filled_to_scan_max,
+                filled_to_scan_max_relative: relative(e.filled_to_scan_max, diagonal),
+                unreached_fraction: e.unreached_fraction,
+                diagonal,
+            }
+        }),
+        hausdorff: r.hausdorff.as_ref().map(|h| HausdorffOut {
+            distance: h.distance(),
+            relative: relative(h.distance(), h.scan_to_surface.diagonal),
+            scan_to_surface_max: h.scan_to_surface.max,
+            surface_to_scan_max: h.surface_to_scan.max,
+        }),
+        files: file_names(files),
+        bezier,
+    })
 }

@@ -5,17 +5,22 @@
 
 use std::path::PathBuf;
 
+use glam::DVec3;
+
 use hi_geomimage::Stage;
 use hi_geomimage::distance::Distances;
 use hi_geomimage::scan::read_scan;
-use hi_geomimage::sections::{ContourOrder, SectionFit, SectionOptions, SliceAxis, fit_sections};
+use hi_geomimage::sections::{
+    ContourOrder, SectionFit, SectionOptions, SliceAxis, SliceReport, fit_sections,
+};
 use hi_mesh::export::{self, MeshFormat};
 use hi_surface::MeshOptions;
+use serde::Serialize;
 
 use crate::cli::{AxisName, FitArgs, OrderName};
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
-use crate::output::{Json, Object};
+use crate::output::{Json, file_names, json};
 
 /// Fits by algorithm 1, writes the surface and returns the summary (also written to
 /// `--report`).
@@ -65,7 +70,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         eprintln!("{}", stderr_line(&format!("warning: {problem}")));
     }
     let files: Vec<PathBuf> = if as_grid {
-        write_file(&args.output, &grid_json(&fitted.surface.rows()), false)?;
+        write_file(&args.output, &grid_json(&fitted.surface.rows())?, false)?;
         vec![args.output.clone()]
     } else {
         let (u0, u1) = fitted.covering_window();
@@ -80,81 +85,79 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         let mesh = fitted.surface.to_mesh(&mesh_options)?;
         export::save(&mesh, &args.output)?
     };
-    let summary = summary(args, &fitted, scan.dropped_points, &files);
+    let summary = summary(args, &fitted, scan.dropped_points, &files)?;
     if let Some(path) = &args.report {
         write_file(path, &summary, true)?;
     }
     Ok(summary)
 }
 
-fn distances(d: Option<&Distances>) -> Json {
-    d.map_or(Json::Null, |d| {
-        Object::new()
-            .field("mean", Json::Number(d.mean))
-            .field("rms", Json::Number(d.rms))
-            .field("max", Json::Number(d.max))
-            .field("diagonal", Json::Number(d.diagonal))
-            .field("relative", Json::numbers(d.relative()))
-            .build()
-    })
+/// A one-way distance as printed: the library's summary and the relative numbers.
+#[derive(Serialize)]
+pub(crate) struct DistancesOut {
+    mean: f64,
+    rms: f64,
+    max: f64,
+    diagonal: f64,
+    /// Mean, RMS and max divided by the diagonal.
+    relative: [f64; 3],
+}
+
+impl DistancesOut {
+    /// The printed form of `d`.
+    pub(crate) fn of(d: &Distances) -> Self {
+        DistancesOut {
+            mean: d.mean,
+            rms: d.rms,
+            max: d.max,
+            diagonal: d.diagonal,
+            relative: d.relative(),
+        }
+    }
 }
 
 /// The summary of a fit by algorithm 1 as JSON.
-fn summary(args: &FitArgs, fitted: &SectionFit, dropped: usize, files: &[PathBuf]) -> Json {
+fn summary(
+    args: &FitArgs,
+    fitted: &SectionFit,
+    dropped: usize,
+    files: &[PathBuf],
+) -> Result<Json, Failure> {
     let r = &fitted.report;
-    let stages = fitted
-        .stages
-        .iter()
-        .map(|s: &Stage| {
-            Object::new()
-                .field("name", Json::String(s.kind.name().to_owned()))
-                .field("seconds", Json::Number(s.seconds))
-                .build()
-        })
-        .collect();
-    let sections = r
-        .slices
-        .iter()
-        .map(|s| {
-            Object::new()
-                .field("range", Json::numbers([s.range.0, s.range.1]))
-                .field("height", Json::Number(s.height))
-                .field("points", Json::Count(s.points))
-                .field("radius", Json::Number(s.radius))
-                .field("polygon_crossings", Json::Count(s.polygon_crossings))
-                .field("misordered", Json::Number(s.misordered))
-                .field("curve_crossings", Json::Count(s.curve_crossings))
-                .field("overshoot", Json::Number(s.overshoot))
-                .field("rotation", Json::Number(s.rotation))
-                .field("deviation", Json::Number(s.deviation))
-                .field("deviation_unaligned", Json::Number(s.deviation_unaligned))
-                .build()
-        })
-        .collect();
-    Object::new()
-        .field("scan", Json::String(args.scan.display().to_string()))
-        .field("points", Json::Count(r.points))
-        .field("dropped_points", Json::Count(dropped))
-        .field("axis", Json::point(&r.axis))
-        .field("sections", Json::Array(sections))
-        .field("contour_points", Json::Count(r.contour_points))
-        .field(
-            "surface",
-            Json::Array(vec![Json::Count(r.surface_size.0), Json::Count(r.surface_size.1)]),
-        )
-        .field("stages", Json::Array(stages))
-        .field("deviation", Json::Number(r.deviation))
-        .field("deviation_unaligned", Json::Number(r.deviation_unaligned))
-        .field("sampling_scale", Json::Number(r.sampling_scale))
-        .field("surface_to_points", distances(r.surface_to_points.as_ref()))
-        .field("errors", distances(r.points_to_surface.as_ref()))
-        .field(
-            "problems",
-            Json::Array(r.problems.iter().map(|p| Json::String(p.to_string())).collect()),
-        )
-        .field(
-            "files",
-            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
-        )
-        .build()
+    /// The printed summary.
+    #[derive(Serialize)]
+    struct Summary<'a> {
+        scan: String,
+        points: usize,
+        dropped_points: usize,
+        axis: DVec3,
+        sections: &'a [SliceReport],
+        contour_points: usize,
+        surface: (usize, usize),
+        stages: &'a [Stage],
+        deviation: f64,
+        deviation_unaligned: f64,
+        sampling_scale: f64,
+        surface_to_points: Option<DistancesOut>,
+        errors: Option<DistancesOut>,
+        problems: Vec<String>,
+        files: Vec<String>,
+    }
+    json(&Summary {
+        scan: args.scan.display().to_string(),
+        points: r.points,
+        dropped_points: dropped,
+        axis: r.axis,
+        sections: &r.slices,
+        contour_points: r.contour_points,
+        surface: r.surface_size,
+        stages: &fitted.stages,
+        deviation: r.deviation,
+        deviation_unaligned: r.deviation_unaligned,
+        sampling_scale: r.sampling_scale,
+        surface_to_points: r.surface_to_points.as_ref().map(DistancesOut::of),
+        errors: r.points_to_surface.as_ref().map(DistancesOut::of),
+        problems: r.problems.iter().map(ToString::to_string).collect(),
+        files: file_names(files),
+    })
 }

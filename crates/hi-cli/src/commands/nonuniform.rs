@@ -2,11 +2,12 @@
 //! `hi curve nonuniform`: interpolation at non-uniform parameters (§3.10).
 
 use hi_curve::{ControlPoint, Error, NonUniformCurve, chord_length_params};
+use serde::Serialize;
 
 use crate::cli::{NonUniformArgs, Variant};
 use crate::error::{Failure, context};
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use crate::output::{Json, coords, json};
 
 /// `{"params": [...], "X": [...], "condition": c}`, plus `"matrix_condition"` for the thesis
 /// variant.
@@ -41,14 +42,22 @@ fn nonuniform<P: ControlPoint>(
             NonUniformCurve::try_with_params(points, params, variant.into())?
         }
     };
-    let mut out = Object::new()
-        .field("params", Json::numbers(curve.params().iter().copied()))
-        .field("X", Json::Array(ts.iter().map(|&t| Json::point(&curve.eval(t))).collect()))
-        .field("condition", Json::Number(curve.condition()));
-    if let Some(m) = curve.matrix_condition() {
-        out.push("matrix_condition", Json::Number(m));
+    /// `{"params", "X", "condition"}`, and `"matrix_condition"` for the thesis variant.
+    #[derive(Serialize)]
+    struct Output<'a> {
+        params: &'a [f64],
+        #[serde(rename = "X")]
+        x: Vec<Vec<f64>>,
+        condition: f64,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        matrix_condition: Option<f64>,
     }
-    Ok(out.build())
+    json(&Output {
+        params: curve.params(),
+        x: ts.iter().map(|&t| coords(&curve.eval(t))).collect(),
+        condition: curve.condition(),
+        matrix_condition: curve.matrix_condition(),
+    })
 }
 
 /// Explains a failure of the chord-length parameters in terms of the points.

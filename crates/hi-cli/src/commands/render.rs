@@ -11,16 +11,17 @@ use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_mesh::{TriangleMesh, srgb_to_linear_rgb};
 use hi_raytrace::{
     BezierObject, BezierOptions, Camera, Geometry, HarmonicObject, HarmonicOptions, IntervalMethod,
-    Light, MeshObject, RenderOptions, Scene, SceneObject, SurfaceColor, render,
+    Light, MeshObject, RayCounts, RenderOptions, Scene, SceneObject, SurfaceColor, render,
 };
 use hi_surface::{CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions};
 use indicatif::{ProgressBar, ProgressStyle};
+use serde::Serialize;
 use serde_json::Value;
 
 use crate::cli::{ColorBy, PaletteName, RenderArgs, RenderMethod};
 use crate::error::Failure;
 use crate::input::parse_grid;
-use crate::output::{Json, Object};
+use crate::output::{Json, file_names, json};
 
 /// Default image size and samples per pixel.
 const DEFAULT_SIZE: usize = 512;
@@ -76,21 +77,24 @@ pub(crate) fn run(args: &RenderArgs) -> Result<Json, Failure> {
     let fail = |e: String| Failure::input(format!("{}: cannot write: {e}", args.output.display()));
     let file = std::fs::File::create(&args.output).map_err(|e| fail(e.to_string()))?;
     out.write_png(std::io::BufWriter::new(file)).map_err(|e| fail(e.to_string()))?;
-    Ok(Object::new()
-        .field("files", Json::Array(vec![Json::String(args.output.display().to_string())]))
-        .field("width", Json::Count(settings.width as usize))
-        .field("height", Json::Count(settings.height as usize))
-        .field("spp", Json::Count(settings.samples_per_pixel as usize))
-        .field(
-            "rays",
-            Object::new()
-                .field("camera", Json::Count(out.counts.camera))
-                .field("shadow", Json::Count(out.counts.shadow))
-                .field("hits", Json::Count(out.counts.hits))
-                .build(),
-        )
-        .field("seconds", Json::Number(out.elapsed.as_secs_f64()))
-        .build())
+    /// `{"files", "width", "height", "spp", "rays", "seconds"}`.
+    #[derive(Serialize)]
+    struct Written<'a> {
+        files: Vec<String>,
+        width: u32,
+        height: u32,
+        spp: u32,
+        rays: &'a RayCounts,
+        seconds: f64,
+    }
+    json(&Written {
+        files: file_names(&[args.output.clone()]),
+        width: settings.width,
+        height: settings.height,
+        spp: settings.samples_per_pixel,
+        rays: &out.counts,
+        seconds: out.elapsed.as_secs_f64(),
+    })
 }
 
 /// A scene ready to render, with the image size it asks for.

@@ -2,11 +2,12 @@
 //! `hi curve resample`: insertion and reduction (Theorem 5.3).
 
 use hi_curve::{ControlPoint, HarmonicCurve};
+use serde::Serialize;
 
 use crate::cli::ResampleArgs;
 use crate::error::{Failure, context};
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use crate::output::{Json, PointList, json};
 
 /// `{"points": [...], "max_error": e, "error_bound": b}`.
 ///
@@ -24,9 +25,17 @@ pub(crate) fn run(args: &ResampleArgs) -> Result<Json, Failure> {
 fn resample<P: ControlPoint>(points: Vec<P>, count: usize) -> Result<Json, Failure> {
     let (curve, error) =
         HarmonicCurve::try_new(points)?.resample(count).map_err(context("--count"))?;
-    Ok(Object::new()
-        .field("points", Json::points(curve.points()))
-        .field("max_error", Json::Number(error.max_deviation))
-        .field("error_bound", Json::Number(error.upper_bound))
-        .build())
+    /// `{"points", "max_error", "error_bound"}`.
+    #[derive(Serialize)]
+    #[serde(bound = "P: ControlPoint")]
+    struct Output<'a, P: ControlPoint> {
+        points: PointList<'a, P>,
+        max_error: f64,
+        error_bound: f64,
+    }
+    json(&Output {
+        points: PointList(curve.points()),
+        max_error: error.max_deviation,
+        error_bound: error.upper_bound,
+    })
 }

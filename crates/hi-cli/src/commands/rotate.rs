@@ -6,7 +6,7 @@ use hi_curve::{ControlPoint, HarmonicCurve};
 use crate::cli::RotateArgs;
 use crate::error::{Failure, context};
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use crate::output::{Json, PointList, PointsOutput, json};
 
 /// `{"points": [...]}`: the points of the rotated curve.
 ///
@@ -26,5 +26,5 @@ fn rotate<P: ControlPoint>(points: Vec<P>, offset: f64, exact: bool) -> Result<J
     let curve = HarmonicCurve::try_new(points)?;
     let rotated = if exact { curve.rotate(offset) } else { curve.rotate_theorem_5_1(offset) };
     let rotated = rotated.map_err(context("--offset"))?;
-    Ok(Object::new().field("points", Json::points(rotated.points())).build())
+    json(&PointsOutput { points: PointList(rotated.points()) })
 }

@@ -3,11 +3,12 @@
 
 use hi_compare::CurveKind;
 use hi_curve::ControlPoint;
+use serde::Serialize;
 
 use crate::cli::SampleArgs;
 use crate::error::{Failure, context};
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use crate::output::{Json, PointList, json};
 
 /// `{"X": [...]}` with X(l/N) for l = 0, …, N − 1 (closed kinds) or X(l/(N − 1)) (open kinds).
 ///
@@ -24,5 +25,12 @@ pub(crate) fn run(args: &SampleArgs) -> Result<Json, Failure> {
 
 fn sample<P: ControlPoint>(points: Vec<P>, kind: CurveKind, count: usize) -> Result<Json, Failure> {
     let samples = kind.build(points)?.sample(count).map_err(context("--count"))?;
-    Ok(Object::new().field("X", Json::points(&samples)).build())
+    /// `{"X": [...]}`.
+    #[derive(Serialize)]
+    #[serde(bound = "P: ControlPoint")]
+    struct Samples<'a, P: ControlPoint> {
+        #[serde(rename = "X")]
+        x: PointList<'a, P>,
+    }
+    json(&Samples { x: PointList(&samples) })
 }

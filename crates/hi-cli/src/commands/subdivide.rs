@@ -6,7 +6,7 @@ use hi_curve::{ControlPoint, HarmonicCurve};
 use crate::cli::SubdivideArgs;
 use crate::error::{Failure, context};
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use crate::output::{Json, PointList, PointsOutput, json};
 
 /// `{"points": [...]}`: the n·2ᴸ points after L levels.
 ///
@@ -23,5 +23,5 @@ pub(crate) fn run(args: &SubdivideArgs) -> Result<Json, Failure> {
 
 fn subdivide<P: ControlPoint>(points: Vec<P>, levels: u32) -> Result<Json, Failure> {
     let curve = HarmonicCurve::try_new(points)?.subdivide(levels).map_err(context("--levels"))?;
-    Ok(Object::new().field("points", Json::points(curve.points())).build())
+    json(&PointsOutput { points: PointList(curve.points()) })
 }

@@ -8,7 +8,9 @@ use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 
 use crate::cli::{LoopBeta, SchemeName, SubdivideMeshArgs};
 use crate::error::Failure;
-use crate::output::{Json, Object};
+use serde::Serialize;
+
+use crate::output::{Json, file_names, json};
 
 /// The most steps allowed: each multiplies the faces by 3 or 4, so 8 steps make a cube's 6
 /// faces about 400 000.
@@ -67,13 +69,18 @@ pub(crate) fn run(args: &SubdivideMeshArgs) -> Result<Json, Failure> {
             export::save(&triangles, &args.output)?
         }
     };
-    Ok(Object::new()
-        .field(
-            "files",
-            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
-        )
-        .field("vertices", Json::Count(refined.n_vertices()))
-        .field("edges", Json::Count(refined.n_edges()))
-        .field("faces", Json::Count(refined.n_faces()))
-        .build())
+    /// `{"files", "vertices", "edges", "faces"}`.
+    #[derive(Serialize)]
+    struct Written {
+        files: Vec<String>,
+        vertices: usize,
+        edges: usize,
+        faces: usize,
+    }
+    json(&Written {
+        files: file_names(&files),
+        vertices: refined.n_vertices(),
+        edges: refined.n_edges(),
+        faces: refined.n_faces(),
+    })
 }

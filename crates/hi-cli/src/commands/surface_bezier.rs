@@ -6,12 +6,13 @@ use std::path::Path;
 use glam::DVec3;
 use hi_mesh::export;
 use hi_surface::bezier::{PatchReport, SurfaceBezier};
+use serde::Serialize;
 
 use crate::cli::SurfaceBezierArgs;
 use crate::commands::surface_example::write_file;
 use crate::error::Failure;
 use crate::input::read_surface;
-use crate::output::{Json, Object};
+use crate::output::{Json, file_names, json};
 
 /// The output kinds, from the extension of `-o`.
 enum Output {
@@ -50,12 +51,12 @@ pub(crate) fn run(args: &SurfaceBezierArgs, pretty: bool) -> Result<Json, Failur
                 .map_or(hi_curve::bezier::DEFAULT_TOLERANCE, hi_curve::bezier::Tolerance::Absolute),
         )
         .map_err(|e| Failure::input(format!("--scheme/--tolerance: {e}")))?;
-    let report = report_json(args.scheme.name(), &patches.report);
+    let report = Report { scheme: args.scheme.name(), report: &patches.report };
     let files = match kind {
         Output::Json => {
             write_file(
                 &args.output,
-                &patches_json(args.scheme.name(), &patches, report.clone()),
+                &patches_json(args.scheme.name(), &patches, &report)?,
                 pretty,
             )?;
             vec![args.output.clone()]
@@ -72,55 +73,71 @@ pub(crate) fn run(args: &SurfaceBezierArgs, pretty: bool) -> Result<Json, Failur
             export::save(&mesh, &args.output)?
         }
     };
-    Ok(Object::new()
-        .field(
-            "files",
-            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
-        )
-        .field("report", report)
-        .build())
+    /// `{"files", "report"}`.
+    #[derive(Serialize)]
+    struct Written<'a> {
+        files: Vec<String>,
+        report: Report<'a>,
+    }
+    json(&Written { files: file_names(&files), report })
 }
 
-/// The report as JSON.
-pub(crate) fn report_json(scheme: &str, r: &PatchReport) -> Json {
-    Object::new()
-        .field("scheme", Json::String(scheme.to_owned()))
-        .field("patches", Json::Count(r.patches))
-        .field("degree", Json::Array(vec![Json::Count(r.degree.0), Json::Count(r.degree.1)]))
-        .field("max_deviation", Json::Number(r.max_deviation))
-        .field("rms_deviation", Json::Number(r.rms_deviation))
-        .field("bound", Json::Number(r.bound))
-        .field("max_normal_jump", Json::Number(r.max_normal_jump))
-        .build()
+/// The report of a conversion to patches: the scheme's name and the library's
+/// [`PatchReport`].
+#[derive(Clone, Copy, Debug, Serialize)]
+pub(crate) struct Report<'a> {
+    /// The scheme's name.
+    pub(crate) scheme: &'a str,
+    /// The patch count, degrees, deviations and bound, and the largest normal jump.
+    #[serde(flatten)]
+    pub(crate) report: &'a PatchReport,
+}
+
+/// One patch of the patches file: its window, degrees and control rows (along u).
+#[derive(Serialize)]
+struct PatchOut {
+    u: [f64; 2],
+    v: [f64; 2],
+    degree: [usize; 2],
+    control: Vec<Vec<DVec3>>,
 }
 
 /// The patches file: breaks, each patch's window, degrees and control points, the report.
-pub(crate) fn patches_json(scheme: &str, b: &SurfaceBezier<DVec3>, report: Json) -> Json {
+pub(crate) fn patches_json(
+    scheme: &str,
+    b: &SurfaceBezier<DVec3>,
+    report: &impl Serialize,
+) -> Result<Json, Failure> {
     let nv = b.v_breaks.len() - 1;
-    let patches = b
-        .patches
-        .iter()
-        .enumerate()
-        .map(|(idx, p)| {
-            let (a, c) = (idx / nv, idx % nv);
-            Object::new()
-                .field("u", Json::numbers([b.u_breaks[a], b.u_breaks[a + 1]]))
-                .field("v", Json::numbers([b.v_breaks[c], b.v_breaks[c + 1]]))
-                .field(
-                    "degree",
-                    Json::Array(vec![Json::Count(p.degree_u()), Json::Count(p.degree_v())]),
-                )
-                .field("control", Json::Array(p.rows().iter().map(|r| Json::points(r)).collect()))
-                .build()
-        })
-        .collect();
-    Object::new()
-        .field("scheme", Json::String(scheme.to_owned()))
-        .field("u_breaks", Json::numbers(b.u_breaks.iter().copied()))
-        .field("v_breaks", Json::numbers(b.v_breaks.iter().copied()))
-        .field("patches", Json::Array(patches))
-        .field("report", report)
-        .build()
+    /// `{"scheme", "u_breaks", "v_breaks", "patches", "report"}`.
+    #[derive(Serialize)]
+    struct File<'a, R> {
+        scheme: &'a str,
+        u_breaks: &'a [f64],
+        v_breaks: &'a [f64],
+        patches: Vec<PatchOut>,
+        report: R,
+    }
+    json(&File {
+        scheme,
+        u_breaks: &b.u_breaks,
+        v_breaks: &b.v_breaks,
+        patches: b
+            .patches
+            .iter()
+            .enumerate()
+            .map(|(idx, p)| {
+                let (a, c) = (idx / nv, idx % nv);
+                PatchOut {
+                    u: [b.u_breaks[a], b.u_breaks[a + 1]],
+                    v: [b.v_breaks[c], b.v_breaks[c + 1]],
+                    degree: [p.degree_u(), p.degree_v()],
+                    control: p.rows(),
+                }
+            })
+            .collect(),
+        report,
+    })
 }
 
 /// Writes the patches `indices` as an OBJ free-form file.

@@ -6,16 +6,18 @@
 use std::path::Path;
 
 use glam::DVec3;
+use hi_bezier::BezierPatch;
 use hi_compare::bspline_fit::{
     BSplineFit, BSplineFitOptions, BezierPatchGrid, EndCondition, Parameters,
 };
 use hi_mesh::export::{self, MeshFormat};
+use serde::Serialize;
 
 use crate::cli::{BsplineEnd, BsplineParams, SurfaceBsplineArgs};
 use crate::commands::surface_example::write_file;
 use crate::error::Failure;
 use crate::input::read_slices;
-use crate::output::{Json, Object};
+use crate::output::{Json, file_names, json};
 
 /// Fits the surface; without `-o` returns the surface's JSON, with `-o OUT.json` writes it
 /// there, with a mesh extension writes the mesh; then returns `{"files": [...], ...}`.
@@ -53,27 +55,40 @@ pub(crate) fn run(args: &SurfaceBsplineArgs, pretty: bool) -> Result<Json, Failu
     };
     let fit = BSplineFit::try_new(slices, &options)
         .map_err(|e| Failure::input(format!("{name}: {e}")))?;
-    let Some(path) = &args.output else { return Ok(surface_json(&fit)) };
+    let Some(path) = &args.output else { return surface_json(&fit) };
     let (n_control_u, n_control_v) = fit.surface().n_control();
-    let mut out = Object::new();
-    if mesh_format.is_some() {
+    /// `{"files", "vertices", "triangles", "control"}` (no counts for a `.json` file).
+    #[derive(Serialize)]
+    struct Written {
+        files: Vec<String>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        vertices: Option<usize>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        triangles: Option<usize>,
+        control: [usize; 2],
+    }
+    let written = if mesh_format.is_some() {
         let mesh = fit
             .surface()
             .to_mesh(args.resolution.0, args.resolution.1)
             .map_err(|e| Failure::input(format!("--resolution: {e}")))?;
         let files = export::save(&mesh, path)?;
-        out.push(
-            "files",
-            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
-        );
-        out.push("vertices", Json::Count(mesh.n_vertices()));
-        out.push("triangles", Json::Count(mesh.n_triangles()));
+        Written {
+            files: file_names(&files),
+            vertices: Some(mesh.n_vertices()),
+            triangles: Some(mesh.n_triangles()),
+            control: [n_control_u, n_control_v],
+        }
     } else {
-        write_file(path, &surface_json(&fit), pretty)?;
-        out.push("files", Json::Array(vec![Json::String(path.display().to_string())]));
-    }
-    out.push("control", Json::Array(vec![Json::Count(n_control_u), Json::Count(n_control_v)]));
-    Ok(out.build())
+        write_file(path, &surface_json(&fit)?, pretty)?;
+        Written {
+            files: file_names(&[path.clone()]),
+            vertices: None,
+            triangles: None,
+            control: [n_control_u, n_control_v],
+        }
+    };
+    json(&written)
 }
 
 /// True for a `.json` output path.
@@ -83,36 +98,49 @@ fn is_json(path: &Path) -> bool {
 
 /// The surface as JSON: degree, closed flags, knots, control net, the data's parameters, and
 /// the exact and Adini Bézier patches.
-fn surface_json(fit: &BSplineFit) -> Json {
+fn surface_json(fit: &BSplineFit) -> Result<Json, Failure> {
     let s = fit.surface();
-    let pair = |a: bool, b: bool| Json::Array(vec![Json::Bool(a), Json::Bool(b)]);
-    Object::new()
-        .field("degree", Json::Array(vec![Json::Count(3), Json::Count(3)]))
-        .field("closed", pair(s.is_closed_u(), s.is_closed_v()))
-        .field("u_knots", Json::numbers(s.u_knots().iter().copied()))
-        .field("v_knots", Json::numbers(s.v_knots().iter().copied()))
-        .field("control", Json::Array(s.control_rows().iter().map(|r| Json::points(r)).collect()))
-        .field(
-            "u_params",
-            Json::Array(fit.u_params().iter().map(|p| Json::numbers(p.iter().copied())).collect()),
-        )
-        .field("v_params", Json::numbers(fit.v_params().iter().copied()))
-        .field("patches", patches_json(&s.to_bezier_patches()))
-        .field("adini_patches", patches_json(&s.to_adini_patches()))
-        .build()
+    /// The surface file.
+    #[derive(Serialize)]
+    struct File<'a> {
+        degree: [usize; 2],
+        closed: [bool; 2],
+        u_knots: &'a [f64],
+        v_knots: &'a [f64],
+        control: Vec<Vec<DVec3>>,
+        u_params: &'a [Vec<f64>],
+        v_params: &'a [f64],
+        patches: Patches,
+        adini_patches: Patches,
+    }
+    json(&File {
+        degree: [3, 3],
+        closed: [s.is_closed_u(), s.is_closed_v()],
+        u_knots: s.u_knots(),
+        v_knots: s.v_knots(),
+        control: s.control_rows(),
+        u_params: fit.u_params(),
+        v_params: fit.v_params(),
+        patches: Patches::of(&s.to_bezier_patches()),
+        adini_patches: Patches::of(&s.to_adini_patches()),
+    })
 }
 
 /// `{"u_breaks": [...], "v_breaks": [...], "control": [patch, ...]}`, each patch its 4×4 net
 /// (rows along u), row-major over the patches.
-fn patches_json(grid: &BezierPatchGrid) -> Json {
-    let nets = grid
-        .patches()
-        .iter()
-        .map(|p| Json::Array(p.rows().iter().map(|r: &Vec<DVec3>| Json::points(r)).collect()))
-        .collect();
-    Object::new()
-        .field("u_breaks", Json::numbers(grid.u_breaks().iter().copied()))
-        .field("v_breaks", Json::numbers(grid.v_breaks().iter().copied()))
-        .field("control", Json::Array(nets))
-        .build()
+#[derive(Serialize)]
+struct Patches {
+    u_breaks: Vec<f64>,
+    v_breaks: Vec<f64>,
+    control: Vec<Vec<Vec<DVec3>>>,
+}
+
+impl Patches {
+    fn of(grid: &BezierPatchGrid) -> Self {
+        Patches {
+            u_breaks: grid.u_breaks().to_vec(),
+            v_breaks: grid.v_breaks().to_vec(),
+            control: grid.patches().iter().map(BezierPatch::rows).collect(),
+        }
+    }
 }

@@ -10,7 +10,9 @@ use hi_surface::{ParametricSurface, sphere, test_surface, test_surfaces, torus};
 use crate::args::Size;
 use crate::cli::SurfaceExampleArgs;
 use crate::error::Failure;
-use crate::output::{Json, Object, write_json};
+use serde::Serialize;
+
+use crate::output::{self, Json, file_names, write_json};
 
 /// Radius of the `sphere` example.
 const SPHERE_RADIUS: f64 = 1.0;
@@ -28,16 +30,19 @@ const TORUS_RADII: (f64, f64) = (2.0, 1.0);
 pub(crate) fn run(args: &SurfaceExampleArgs, pretty: bool) -> Result<Json, Failure> {
     let grid = example_grid(&args.name, args.samples)?;
     let (m, n) = (grid.len(), grid.first().map_or(0, Vec::len));
-    let json = grid_json(&grid);
+    let json = grid_json(&grid)?;
     match &args.output {
         None => Ok(json),
         Some(path) => {
             write_file(path, &json, pretty)?;
-            Ok(Object::new()
-                .field("files", Json::Array(vec![Json::String(path.display().to_string())]))
-                .field("m", Json::Count(m))
-                .field("n", Json::Count(n))
-                .build())
+            /// `{"files": [FILE], "m": M, "n": N}`.
+            #[derive(Serialize)]
+            struct Written {
+                files: Vec<String>,
+                m: usize,
+                n: usize,
+            }
+            output::json(&Written { files: file_names(&[path.clone()]), m, n })
         }
     }
 }
@@ -94,10 +99,13 @@ fn find_test_surface(name: &str) -> Result<ParametricSurface, Failure> {
 
 /// The grid file `{"grid": [[[x, y, z], ...], ...]}` of the rows of a grid, as the surface
 /// commands read it.
-pub(crate) fn grid_json(rows: &[Vec<DVec3>]) -> Json {
-    Object::new()
-        .field("grid", Json::Array(rows.iter().map(|row| Json::points(row)).collect()))
-        .build()
+pub(crate) fn grid_json(rows: &[Vec<DVec3>]) -> Result<Json, Failure> {
+    /// `{"grid": rows}`.
+    #[derive(Serialize)]
+    struct Grid<'a> {
+        grid: &'a [Vec<DVec3>],
+    }
+    output::json(&Grid { grid: rows })
 }
 
 /// Writes `json` to the file at `path`.

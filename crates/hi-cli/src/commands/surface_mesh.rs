@@ -8,7 +8,9 @@ use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions};
 use crate::cli::{ColorBy, SurfaceMeshArgs};
 use crate::error::Failure;
 use crate::input::read_surface;
-use crate::output::{Json, Object};
+use serde::Serialize;
+
+use crate::output::{Json, file_names, json};
 
 /// Writes the mesh and returns `{"files": [...], "vertices": V, "triangles": T}`, with
 /// `"legend"` when coloured.
@@ -39,22 +41,30 @@ pub(crate) fn run(args: &SurfaceMeshArgs) -> Result<Json, Failure> {
         .to_mesh(&options)
         .map_err(|e| Failure::input(format!("--resolution/--window: {e}")))?;
     let files = export::save(&mesh, &args.output)?;
-    let mut out = Object::new()
-        .field(
-            "files",
-            Json::Array(files.iter().map(|f| Json::String(f.display().to_string())).collect()),
-        )
-        .field("vertices", Json::Count(mesh.n_vertices()))
-        .field("triangles", Json::Count(mesh.n_triangles()));
-    if let (Some(quantity), Some(legend)) = (quantity, mesh.legend()) {
-        out.push(
-            "legend",
-            Object::new()
-                .field("quantity", Json::String(quantity.symbol().to_owned()))
-                .field("min", Json::Number(legend.min))
-                .field("max", Json::Number(legend.max))
-                .build(),
-        );
+    /// The colour scale of a curvature-coloured mesh.
+    #[derive(Serialize)]
+    struct Legend {
+        quantity: &'static str,
+        min: f64,
+        max: f64,
     }
-    Ok(out.build())
+    /// `{"files", "vertices", "triangles"}`, and `"legend"` when coloured.
+    #[derive(Serialize)]
+    struct Written {
+        files: Vec<String>,
+        vertices: usize,
+        triangles: usize,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        legend: Option<Legend>,
+    }
+    json(&Written {
+        files: file_names(&files),
+        vertices: mesh.n_vertices(),
+        triangles: mesh.n_triangles(),
+        legend: quantity.zip(mesh.legend()).map(|(quantity, legend)| Legend {
+            quantity: quantity.symbol(),
+            min: legend.min,
+            max: legend.max,
+        }),
+    })
 }

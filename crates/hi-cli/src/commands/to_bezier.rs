@@ -2,13 +2,15 @@
 //! `hi curve to-bezier`: the piecewise Bézier form of a piecewise polynomial curve.
 
 use hi_compare::CurveKind;
-use hi_curve::bezier::{BezierScheme, HermiteDegree};
+use hi_curve::bezier::{BezierReport, BezierScheme, HermiteDegree};
 use hi_curve::{ControlPoint, HarmonicCurve};
 
 use crate::cli::ToBezierArgs;
 use crate::error::Failure;
 use crate::input::{Points, read_points};
-use crate::output::{Json, Object};
+use serde::Serialize;
+
+use crate::output::{Json, PointList, json};
 
 /// `{"segments": [[p0, p1, p2, p3], ...]}`: the control points of each Bézier segment; for
 /// the harmonic curve also `"breaks"` (the segments' parameter windows) and `"report"`.
@@ -53,26 +55,37 @@ fn harmonic<P: ControlPoint>(
                 .map_or(hi_curve::bezier::DEFAULT_TOLERANCE, hi_curve::bezier::Tolerance::Absolute),
         )
         .map_err(|e| Failure::input(e.to_string()))?;
-    let segments = b.spline.segments().iter().map(|s| Json::points(s.control_points())).collect();
-    let r = b.report;
-    let report = Object::new()
-        .field("scheme", Json::String(scheme.name().to_owned()))
-        .field("pieces", Json::Count(r.pieces))
-        .field("degree", Json::Count(r.degree))
-        .field("max_deviation", Json::Number(r.max_deviation))
-        .field("rms_deviation", Json::Number(r.rms_deviation))
-        .field("bound", Json::Number(r.bound))
-        .field("max_tangent_jump", Json::Number(r.max_tangent_jump))
-        .build();
-    Ok(Object::new()
-        .field("segments", Json::Array(segments))
-        .field("breaks", Json::numbers(b.spline.breaks().iter().copied()))
-        .field("report", report)
-        .build())
+    /// The scheme's name and the conversion's report.
+    #[derive(Serialize)]
+    struct Report<'a> {
+        scheme: &'static str,
+        #[serde(flatten)]
+        report: &'a BezierReport,
+    }
+    /// `{"segments", "breaks", "report"}`.
+    #[derive(Serialize)]
+    #[serde(bound = "P: ControlPoint")]
+    struct Output<'a, P: ControlPoint> {
+        segments: Vec<PointList<'a, P>>,
+        breaks: &'a [f64],
+        report: Report<'a>,
+    }
+    json(&Output {
+        segments: b.spline.segments().iter().map(|s| PointList(s.control_points())).collect(),
+        breaks: b.spline.breaks(),
+        report: Report { scheme: scheme.name(), report: &b.report },
+    })
 }
 
 fn to_bezier<P: ControlPoint>(points: Vec<P>, kind: CurveKind) -> Result<Json, Failure> {
     let bezier = kind.build(points)?.to_bezier().map_err(|e| Failure::input(e.to_string()))?;
-    let segments = bezier.segments().iter().map(|s| Json::points(s.control_points())).collect();
-    Ok(Object::new().field("segments", Json::Array(segments)).build())
+    /// `{"segments"}`.
+    #[derive(Serialize)]
+    #[serde(bound = "P: ControlPoint")]
+    struct Output<'a, P: ControlPoint> {
+        segments: Vec<PointList<'a, P>>,
+    }
+    json(&Output {
+        segments: bezier.segments().iter().map(|s| PointList(s.control_points())).collect(),
+    })
 }
