@@ -88,7 +88,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<Json, Failure> {
         seconds: f64,
     }
     json(&Written {
-        files: file_names(&[args.output.clone()]),
+        files: file_names(std::slice::from_ref(&args.output)),
         width: settings.width,
         height: settings.height,
         spp: settings.samples_per_pixel,

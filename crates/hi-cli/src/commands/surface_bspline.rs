@@ -82,7 +82,7 @@ pub(crate) fn run(args: &SurfaceBsplineArgs, pretty: bool) -> Result<Json, Failu
     } else {
         write_file(path, &surface_json(&fit)?, pretty)?;
         Written {
-            files: file_names(&[path.clone()]),
+            files: file_names(std::slice::from_ref(path)),
             vertices: None,
             triangles: None,
             control: [n_control_u, n_control_v],

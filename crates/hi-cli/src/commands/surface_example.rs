@@ -42,7 +42,7 @@ pub(crate) fn run(args: &SurfaceExampleArgs, pretty: bool) -> Result<Json, Failu
                 m: usize,
                 n: usize,
             }
-            output::json(&Written { files: file_names(&[path.clone()]), m, n })
+            output::json(&Written { files: file_names(std::slice::from_ref(path)), m, n })
         }
     }
 }

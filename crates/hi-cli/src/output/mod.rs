@@ -11,7 +11,7 @@
 //!
 //! Every output is a value whose type derives `Serialize`: each command's own output struct,
 //! embedding the libraries' report types (their `serde` feature), so a field's name is the
-//! name of the field it prints. [`to_json`] turns it into a [`Json`] tree, which
+//! name of the field it prints. [`to_json()`] turns it into a [`Json`] tree, which
 //! [`write_json`] prints by the rules above.
 
 use std::io::{self, Write};
