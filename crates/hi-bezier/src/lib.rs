@@ -86,6 +86,7 @@ mod roots;
 mod serde_impls;
 mod subdivide;
 mod triangle;
+mod window;
 
 pub use bernstein::Bernstein;
 pub use bounds::Aabb;
@@ -101,6 +102,7 @@ pub use point::ControlPoint;
 pub use rational::RationalBezierCurve;
 pub use rational_patch::RationalBezierPatch;
 pub use triangle::TriangularPatch;
+pub use window::{ParamRange, ParamWindow};
 
 /// The example of this crate's README, run as a doctest so that it stays true.
 #[doc = include_str!("../README.md")]

@@ -13,7 +13,7 @@ use crate::curve::{
 use crate::error::check_points;
 use crate::flatten::check_tolerance;
 use crate::subdivide::{split_points, subsegment_points, subsegment_small};
-use crate::{BezierCurve, ControlPoint, Error};
+use crate::{BezierCurve, ControlPoint, Error, ParamWindow};
 
 /// A tensor-product Bézier patch of degree (m, n) with an (m + 1) × (n + 1) control grid xⱼₖ,
 /// over (u, v) ∈ [0, 1]²; u runs over the first (row) index j, v over the second (column)
@@ -322,38 +322,41 @@ impl<P: ControlPoint> BezierPatch<P> {
         )
     }
 
-    /// The piece over [u₀, u₁] × [v₀, v₁], reparametrised to [0, 1]² (blossoming along each
-    /// direction, as [`BezierCurve::subsegment`]).
+    /// The piece over `window` = [u₀, u₁] × [v₀, v₁], reparametrised to [0, 1]² (blossoming
+    /// along each direction, as [`BezierCurve::subsegment`]).
     #[must_use]
-    pub fn subpatch(&self, u0: f64, u1: f64, v0: f64, v1: f64) -> Self {
+    pub fn subpatch(&self, window: ParamWindow) -> Self {
+        let ([u0, u1], [v0, v1]) = ends(window);
         let rows: Vec<P> =
             self.points.chunks(self.n_cols).flat_map(|r| subsegment_points(r, v0, v1)).collect();
         map_columns(&rows, self.n_rows, self.n_cols, |c| subsegment_points(c, u0, u1))
     }
 
     /// The box of the control points of [`BezierPatch::subpatch`] (which holds the piece over
-    /// [u₀, u₁] × [v₀, v₁]), computed with the same arithmetic but without allocating for
-    /// degrees below 16 in both directions.
+    /// `window`), computed with the same arithmetic but without allocating for degrees below 16
+    /// in both directions.
     ///
     /// # Examples
     ///
     /// ```
     /// use glam::DVec3;
-    /// use hi_bezier::BezierPatch;
+    /// use hi_bezier::{BezierPatch, ParamRange, ParamWindow};
     ///
     /// let rows = (0..4)
     ///     .map(|j| (0..3).map(|k| DVec3::new(j as f64, k as f64, (j * k) as f64)).collect())
     ///     .collect();
     /// let p = BezierPatch::new(rows);
-    /// let expected = p.subpatch(0.2, 0.7, 0.1, 0.4).control_bounding_box();
-    /// assert_eq!(p.subpatch_bounds(0.2, 0.7, 0.1, 0.4), expected);
+    /// let window = ParamWindow::new(ParamRange::new(0.2, 0.7), ParamRange::new(0.1, 0.4));
+    /// let expected = p.subpatch(window).control_bounding_box();
+    /// assert_eq!(p.subpatch_bounds(window), expected);
     /// ```
     #[must_use]
-    pub fn subpatch_bounds(&self, u0: f64, u1: f64, v0: f64, v1: f64) -> Aabb<P> {
+    pub fn subpatch_bounds(&self, window: ParamWindow) -> Aabb<P> {
         let (n_rows, n_cols) = (self.n_rows, self.n_cols);
         if n_rows > SMALL || n_cols > SMALL {
-            return self.subpatch(u0, u1, v0, v1).control_bounding_box();
+            return self.subpatch(window).control_bounding_box();
         }
+        let ([u0, u1], [v0, v1]) = ends(window);
         // Each row cut to [v0, v1], then each column of the result to [u0, u1].
         let mut rows = [[P::ZERO; SMALL]; SMALL];
         for (row, r) in rows.iter_mut().zip(self.points.chunks(n_cols)) {
@@ -477,6 +480,11 @@ pub(crate) fn grid_shape<T>(rows: &[Vec<T>]) -> Result<(usize, usize), Error> {
 }
 
 /// Applies `f` to every column of a row-major grid; every result must have the same length.
+/// The ends of a window's two ranges, `([u₀, u₁], [v₀, v₁])`.
+fn ends(window: ParamWindow) -> ([f64; 2], [f64; 2]) {
+    ([window.u.start, window.u.end], [window.v.start, window.v.end])
+}
+
 fn map_columns<P: ControlPoint>(
     points: &[P],
     n_rows: usize,

@@ -9,7 +9,7 @@ use crate::curve::with_scratch;
 use crate::error::{check_points, check_weights};
 use crate::flatten::{check_tolerance, distance_to_segment};
 use crate::subdivide::subsegment_points;
-use crate::{BezierCurve, ControlPoint, Error};
+use crate::{BezierCurve, ControlPoint, Error, ParamRange};
 
 /// A rational Bézier curve of degree n: control points P₀, …, Pₙ with positive weights
 /// w₀, …, wₙ, over t ∈ [0, 1].
@@ -177,14 +177,16 @@ impl<P: ControlPoint> RationalBezierCurve<P> {
         (Self { points: lp, weights: lw }, Self { points: rp, weights: rw })
     }
 
-    /// The piece over [t₀, t₁] ⊆ [0, 1] (t₀ > t₁ reverses it), reparametrised to [0, 1].
+    /// The piece over `range` = [t₀, t₁] ⊆ [0, 1] (t₀ > t₁ reverses it), reparametrised to
+    /// [0, 1].
     ///
     /// # Errors
     ///
     /// [`Error::InvalidArgument`] unless both ends lie in [0, 1].
-    pub fn subsegment(&self, t0: f64, t1: f64) -> Result<Self, Error> {
-        check_unit("t0", t0)?;
-        check_unit("t1", t1)?;
+    pub fn subsegment(&self, range: ParamRange) -> Result<Self, Error> {
+        let (t0, t1) = (range.start, range.end);
+        check_unit("start", t0)?;
+        check_unit("end", t1)?;
         let (a, w) = self.homogeneous();
         let hp = subsegment_points(a.control_points(), t0, t1);
         let hw = subsegment_points(w.control_points(), t0, t1);
@@ -388,7 +390,7 @@ mod tests {
         assert_eq!(RationalBezierCurve::<f64>::try_new(vec![], vec![]), Err(Error::Empty));
         let c = RationalBezierCurve::new(vec![0.0, 1.0], vec![1.0, 2.0]);
         assert!(c.split(1.5).is_err());
-        assert!(c.subsegment(0.0, f64::NAN).is_err());
+        assert!(c.subsegment(ParamRange::new(0.0, f64::NAN)).is_err());
     }
 
     #[test]

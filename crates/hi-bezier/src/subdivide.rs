@@ -4,7 +4,7 @@
 //! de Casteljau's triangle; subsegments [t₀, t₁] come from the blossom.
 
 use crate::curve::{SMALL, lerp};
-use crate::{BezierCurve, ControlPoint};
+use crate::{BezierCurve, ControlPoint, ParamRange};
 
 impl<P: ControlPoint> BezierCurve<P> {
     /// Splits the curve at t₀ (Theorem 2.2): returns q₁(t) = q(t₀·t) and
@@ -31,15 +31,15 @@ impl<P: ControlPoint> BezierCurve<P> {
         (Self::from_vec_unchecked(left), Self::from_vec_unchecked(right))
     }
 
-    /// The piece of the curve over [t₀, t₁] as a Bézier curve of the same degree,
+    /// The piece of the curve over `range` = [t₀, t₁] as a Bézier curve of the same degree,
     /// reparametrised to [0, 1]: r(s) = q(t₀ + (t₁ − t₀)·s). t₀ > t₁ gives the reversed piece.
     ///
     /// The control points are the blossom values Rᵢ = q[t₀, …, t₀ (n − i times), t₁, …, t₁
     /// (i times)], computed by de Casteljau steps with t₁ then t₀, so no division by t₁ or by
     /// t₁ − t₀ is needed.
     #[must_use]
-    pub fn subsegment(&self, t0: f64, t1: f64) -> Self {
-        Self::from_vec_unchecked(subsegment_points(self.control_points(), t0, t1))
+    pub fn subsegment(&self, range: ParamRange) -> Self {
+        Self::from_vec_unchecked(subsegment_points(self.control_points(), range.start, range.end))
     }
 }
 
@@ -123,12 +123,12 @@ mod tests {
     #[test]
     fn subsegment_ends_and_reversal() {
         let c = BezierCurve::new(vec![0.0, 3.0, -1.0, 2.0, 5.0]);
-        let s = c.subsegment(0.2, 0.9);
+        let s = c.subsegment(ParamRange::new(0.2, 0.9));
         assert!((s.control_points()[0] - c.eval(0.2)).abs() < 1e-14);
         assert!((s.control_points()[4] - c.eval(0.9)).abs() < 1e-14);
-        let r = c.subsegment(0.9, 0.2);
+        let r = c.subsegment(ParamRange::new(0.9, 0.2));
         assert!((r.eval(0.3) - s.eval(0.7)).abs() < 1e-14);
-        let whole = c.subsegment(0.0, 1.0);
+        let whole = c.subsegment(ParamRange::new(0.0, 1.0));
         for (p, q) in whole.control_points().iter().zip(c.control_points()) {
             assert!((p - q).abs() < 1e-15);
         }

@@ -10,7 +10,7 @@ use common::{
     wiggly_points,
 };
 use glam::{DVec2, DVec3};
-use hi_bezier::{BezierCurve, Error, FlatnessTest, convex_hull_2d, polygon_area};
+use hi_bezier::{BezierCurve, Error, FlatnessTest, ParamRange, convex_hull_2d, polygon_area};
 
 fn cubic() -> BezierCurve<DVec2> {
     BezierCurve::new(vec![
@@ -134,7 +134,7 @@ fn split_outside_extrapolates() {
 fn subsegment_reproduces() {
     let c = space_curve();
     for &(t0, t1) in &[(0.2, 0.6), (0.0, 0.3), (0.9, 0.1), (-0.2, 1.3)] {
-        let s = c.subsegment(t0, t1);
+        let s = c.subsegment(ParamRange::new(t0, t1));
         for k in 0..=10 {
             let t = k as f64 / 10.0;
             assert!((s.eval(t) - c.eval(t0 + (t1 - t0) * t)).length() < 1e-12, "[{t0}, {t1}]");

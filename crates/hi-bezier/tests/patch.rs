@@ -9,7 +9,9 @@ use std::f64::consts::FRAC_PI_2;
 
 use common::bernstein;
 use glam::{DVec2, DVec3};
-use hi_bezier::{Aabb, BezierPatch, Error, RationalBezierCurve, RationalBezierPatch};
+use hi_bezier::{
+    Aabb, BezierPatch, Error, ParamRange, ParamWindow, RationalBezierCurve, RationalBezierPatch,
+};
 
 /// A bumpy patch of degree (3, 4).
 fn bumpy() -> BezierPatch<DVec3> {
@@ -121,7 +123,7 @@ fn split_and_subpatch_reproduce() {
     let p = bumpy();
     let (a, b) = p.split_u(0.3);
     let (c, d) = p.split_v(0.6);
-    let s = p.subpatch(0.2, 0.7, 0.9, 0.4);
+    let s = p.subpatch(ParamWindow::new(ParamRange::new(0.2, 0.7), ParamRange::new(0.9, 0.4)));
     for (u, v) in params() {
         assert!((a.eval(u, v) - p.eval(0.3 * u, v)).length() < 1e-13);
         assert!((b.eval(u, v) - p.eval(0.3 + 0.7 * u, v)).length() < 1e-13);

@@ -8,7 +8,7 @@ mod common;
 use common::{bezier_sum, dist_to_polyline};
 use glam::{DVec2, DVec3};
 use hi_bezier::{
-    Aabb, Bernstein, BezierCurve, BezierPatch, RationalBezierCurve, TriangularPatch,
+    Aabb, Bernstein, BezierCurve, BezierPatch, ParamRange, RationalBezierCurve, TriangularPatch,
     convex_hull_2d, polygon_area,
 };
 use proptest::prelude::*;
@@ -68,7 +68,7 @@ proptest! {
     /// Subsegments reproduce the curve between their ends.
     #[test]
     fn subsegment_reproduces(c in curve2(10), t0 in 0.0..=1.0f64, t1 in 0.0..=1.0f64, s in 0.0..=1.0f64) {
-        let r = c.subsegment(t0, t1);
+        let r = c.subsegment(ParamRange::new(t0, t1));
         prop_assert!((r.eval(s) - c.eval(t0 + (t1 - t0) * s)).length() < 1e-10);
     }
 

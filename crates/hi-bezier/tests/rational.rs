@@ -9,7 +9,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use common::central;
 use glam::DVec2;
-use hi_bezier::{BezierCurve, ConicType, Error, RationalBezierCurve};
+use hi_bezier::{BezierCurve, ConicType, Error, ParamRange, RationalBezierCurve};
 
 /// Figure 2.8: x₀ = (0, 1), x₁ = (2, 1), x₂ = (2, −1), x₃ = (0, −1), weights 1, ⅓, ⅓, 1.
 fn figure_2_8() -> RationalBezierCurve<DVec2> {
@@ -234,7 +234,7 @@ fn conic_type_is_invariant_under_weight_scaling() {
 fn split_subsegment_and_elevation_reproduce() {
     let c = figure_2_8();
     let (a, b) = c.split(0.3).unwrap();
-    let s = c.subsegment(0.2, 0.9).unwrap();
+    let s = c.subsegment(ParamRange::new(0.2, 0.9)).unwrap();
     let e = c.elevate();
     assert_eq!(e.degree(), 4);
     for k in 0..=20 {

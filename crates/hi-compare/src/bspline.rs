@@ -30,7 +30,7 @@ use hi_bezier::{BezierCurve, PiecewiseBezier};
 
 use crate::check::check_points;
 use crate::{ControlPoint, Error};
-use hi_curve::ParamCurve;
+use hi_curve::{ParamCurve, ParamRange};
 
 /// The largest distance of a point from the centroid of `points`: the `scale` of the
 /// comparison curves (at least the smallest positive double).
@@ -161,8 +161,8 @@ impl BSplineBasis {
 
     /// The domain [uₚ, uₘ] on which the functions sum to one.
     #[must_use]
-    pub fn domain(&self) -> (f64, f64) {
-        (self.knots[self.degree], self.knots[self.n_functions()])
+    pub fn domain(&self) -> ParamRange {
+        ParamRange::new(self.knots[self.degree], self.knots[self.n_functions()])
     }
 
     /// Nᵢ,ₚ(u) by the Cox–de Boor recursion, O(p²).
@@ -453,14 +453,14 @@ impl<P: ControlPoint> BSplineCurve<P> {
 
     /// The domain [a, b] in knot units: [uₚ, uₘ] for an open curve, [τ₀, τₙ] for a closed one.
     #[must_use]
-    pub fn domain(&self) -> (f64, f64) {
-        (self.ext_knots[self.degree], self.ext_knots[self.ext_control.len()])
+    pub fn domain(&self) -> ParamRange {
+        ParamRange::new(self.ext_knots[self.degree], self.ext_knots[self.ext_control.len()])
     }
 
     /// The knot parameter u of the curve parameter t (see the [module documentation](self)).
     #[must_use]
     pub fn knot_param(&self, t: f64) -> f64 {
-        let (a, b) = self.domain();
+        let ParamRange { start: a, end: b } = self.domain();
         let len = b - a;
         if self.periodic {
             let u = a + (len * t - a).rem_euclid(len);
@@ -480,7 +480,7 @@ impl<P: ControlPoint> BSplineCurve<P> {
     /// t = tᵢ + v·(tᵢ₊₁ − tᵢ).
     #[must_use]
     pub fn breakpoints(&self) -> Vec<f64> {
-        let (a, b) = self.domain();
+        let ParamRange { start: a, end: b } = self.domain();
         let len = b - a;
         let to_t = |u: f64| if self.periodic { u / len } else { (u - a) / len };
         let mut res = vec![to_t(self.ext_knots[self.first_span])];
@@ -513,7 +513,7 @@ impl<P: ControlPoint> BSplineCurve<P> {
     #[must_use]
     pub fn eval_deriv(&self, t: f64, order: usize) -> P {
         let u = self.knot_param(t);
-        let (a, b) = self.domain();
+        let ParamRange { start: a, end: b } = self.domain();
         self.eval_knot_deriv(u, order) * (b - a).powi(order as i32)
     }
 

@@ -7,6 +7,7 @@
 
 use glam::{DVec2, DVec3};
 use hi_bezier::BezierCurve;
+use hi_compare::ParamRange;
 use hi_compare::bspline::{BSplineBasis, BSplineCurve};
 use hi_compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
 use hi_compare::nurbs::NurbsCurve;
@@ -107,7 +108,7 @@ fn open_uniform_cubic_spans_p_to_m() {
     // starts at (x₀ + 4x₁ + x₂)/6.
     let control: Vec<f64> = vec![0.0, 6.0, 12.0, 0.0, 6.0, 3.0];
     let curve = BSplineCurve::try_uniform_open(3, control).unwrap();
-    assert_eq!(curve.domain(), (3.0, 6.0));
+    assert_eq!(curve.domain(), ParamRange::new(3.0, 6.0));
     assert!((curve.eval(0.0) - (0.0 + 24.0 + 12.0) / 6.0).abs() < 1e-14);
     assert_eq!(curve.to_bezier().segments().len(), 3);
 }

@@ -34,7 +34,7 @@
 //! (The thesis quintic approximates each σₖ on its own pieces; its bound is σ's bound on its
 //! pieces times Σₖ ‖xₖ‖, as the approximated basis does not sum to one.)
 
-use hi_bezier::{Aabb, BezierCurve, ControlPoint, PiecewiseBezier};
+use hi_bezier::{Aabb, BezierCurve, ControlPoint, ParamRange, PiecewiseBezier};
 use hi_interval::{Interval, RootOptions};
 
 use crate::{Error, Fourier, HarmonicCurve, Sigma};
@@ -361,7 +361,7 @@ impl BasisPieces {
                     (u0 - shift + offset - b0) / (b1 - b0),
                     (u1 - shift + offset - b0) / (b1 - b0),
                 );
-                let sub = curve.subsegment(s0.clamp(0.0, 1.0), s1.clamp(0.0, 1.0));
+                let sub = curve.subsegment(ParamRange::new(s0.clamp(0.0, 1.0), s1.clamp(0.0, 1.0)));
                 ctrl.extend_from_slice(sub.control_points());
             }
         }

@@ -79,7 +79,7 @@ pub use curve::HarmonicCurve;
 pub use differential::{FrenetFrame, ParamCurve, PlaneCurve, SpaceCurve};
 pub use error::Error;
 pub use fourier::Fourier;
-pub use hi_bezier::ControlPoint;
+pub use hi_bezier::{ControlPoint, ParamRange, ParamWindow};
 pub use nonuniform::{NonUniformCurve, NonUniformVariant, chord_length_params};
 pub use resample::ReductionError;
 pub use trigonometric::TrigonometricCurve;

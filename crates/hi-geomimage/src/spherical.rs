@@ -28,6 +28,7 @@ use std::num::NonZero;
 
 use crate::par::*;
 use glam::DVec3;
+use hi_surface::ParamRange;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::Error;
@@ -162,13 +163,13 @@ impl Layout {
         }
     }
 
-    /// The parameter window (u₀, u₁) over which the harmonic surface covers the object once
-    /// (v runs over [0, 1]).
+    /// The u range [u₀, u₁] over which the harmonic surface covers the object once (v runs
+    /// over [0, 1]).
     #[must_use]
-    pub const fn covering_window(self) -> (f64, f64) {
+    pub const fn covering_window(self) -> ParamRange {
         match self {
-            Self::Sphere | Self::FlatOctahedron => (0.0, 0.5),
-            Self::Octahedron => (0.0, 1.0),
+            Self::Sphere | Self::FlatOctahedron => ParamRange::new(0.0, 0.5),
+            Self::Octahedron => ParamRange::UNIT,
         }
     }
 

@@ -10,6 +10,7 @@ use hi_geomimage::scan::{Scan, read_scan};
 use hi_geomimage::{
     ErrorMeasure, FitOptions, GeometryImage, Layout, Method, Smoothing, StageKind, fit,
 };
+use hi_surface::{ParamRange, ParamWindow};
 
 fn fibonacci(n: usize) -> Vec<DVec3> {
     let golden = PI * (3.0 - 5f64.sqrt());
@@ -253,13 +254,13 @@ fn every_layout_faces_outwards() {
             ..FitOptions::thesis()
         };
         let result = fit(&scan, &options, &mut |_| {}).unwrap();
-        let (u0, u1) = layout.covering_window();
+        let u = layout.covering_window();
         let mesh = result
             .surface
             .to_mesh(&hi_surface::MeshOptions {
                 n_u: 64,
                 n_v: 64,
-                u_range: [u0, u1],
+                window: ParamWindow::new(u, ParamRange::UNIT),
                 ..Default::default()
             })
             .unwrap();

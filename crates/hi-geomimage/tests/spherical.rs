@@ -10,6 +10,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 use hi_geomimage::Error;
 use hi_geomimage::spherical::{SphericalOptions, ray_direction, spherical_image};
+use hi_surface::ParamRange;
 
 /// `n` points spread evenly over the unit sphere (a Fibonacci lattice).
 fn fibonacci(n: usize) -> Vec<DVec3> {
@@ -247,6 +248,6 @@ mod octahedral {
                 assert_eq!(image.get(i, j), twin, "({i}, {j})");
             }
         }
-        assert_eq!(Layout::FlatOctahedron.covering_window(), (0.0, 0.5));
+        assert_eq!(Layout::FlatOctahedron.covering_window(), ParamRange::new(0.0, 0.5));
     }
 }

@@ -12,7 +12,7 @@
 //! levels deep, with Newton from each sub-piece the ray meets.
 
 use glam::DVec3;
-use hi_bezier::{Aabb, Bernstein, BezierPatch};
+use hi_bezier::{Aabb, Bernstein, BezierPatch, ParamRange, ParamWindow};
 use hi_surface::bezier::{SurfaceBezier, patch_color};
 
 use crate::bvh::{Bvh, slab};
@@ -57,7 +57,7 @@ struct Piece {
 pub struct BezierObject {
     patches: Vec<BezierPatch<DVec3>>,
     /// Global (u, v) window of each patch (for a harmonic surface's patches), else [0, 1]².
-    windows: Vec<([f64; 2], [f64; 2])>,
+    windows: Vec<ParamWindow>,
     colors: Vec<[f32; 3]>,
     pieces: Vec<Piece>,
     /// Control boxes of the pieces.
@@ -83,7 +83,7 @@ impl BezierObject {
         patches: Vec<BezierPatch<DVec3>>,
         settings: &BezierOptions,
     ) -> Result<Self, Error> {
-        let windows = vec![([0.0, 1.0], [0.0, 1.0]); patches.len()];
+        let windows = vec![ParamWindow::UNIT; patches.len()];
         Self::build(patches, windows, settings)
     }
 
@@ -103,7 +103,7 @@ impl BezierObject {
 
     fn build(
         patches: Vec<BezierPatch<DVec3>>,
-        windows: Vec<([f64; 2], [f64; 2])>,
+        windows: Vec<ParamWindow>,
         settings: &BezierOptions,
     ) -> Result<Self, Error> {
         if patches.is_empty() {
@@ -207,7 +207,10 @@ impl BezierObject {
     ) -> Option<BezierHit> {
         let patch = &self.patches[piece.patch];
         let (lo, hi) = bounds.unwrap_or_else(|| {
-            let bb = patch.subpatch_bounds(piece.u[0], piece.u[1], piece.v[0], piece.v[1]);
+            let bb = patch.subpatch_bounds(ParamWindow::new(
+                ParamRange::new(piece.u[0], piece.u[1]),
+                ParamRange::new(piece.v[0], piece.v[1]),
+            ));
             (bb.min, bb.max)
         });
         let pad = self.tolerance * 4.0;
@@ -322,8 +325,7 @@ impl BezierObject {
             let (_, a, b) = eval(patch, u, v);
             a.cross(b).try_normalize().unwrap_or(DVec3::Z)
         });
-        let (wu, wv) = self.windows[h.patch];
-        let uv = (wu[0] + h.u * (wu[1] - wu[0]), wv[0] + h.v * (wv[1] - wv[0]));
+        let uv = self.windows[h.patch].lerp(h.u, h.v);
         (h.point, h.error, normal, uv, self.colors[h.patch])
     }
 }
@@ -395,7 +397,8 @@ fn split_flat(
     pieces: &mut Vec<Piece>,
     boxes: &mut Vec<(DVec3, DVec3)>,
 ) {
-    let sub = patch.subpatch(u[0], u[1], v[0], v[1]);
+    let sub =
+        patch.subpatch(ParamWindow::new(ParamRange::new(u[0], u[1]), ParamRange::new(v[0], v[1])));
     let bb = sub.control_bounding_box();
     if depth >= settings.max_depth || is_flat(&sub, settings.flatness) {
         pieces.push(Piece { patch: index, u, v });

@@ -28,7 +28,7 @@
 use std::io::Write;
 
 use glam::{DVec2, DVec3};
-use hi_bezier::{Aabb, BezierPatch, ControlPoint};
+use hi_bezier::{Aabb, BezierPatch, ControlPoint, ParamRange, ParamWindow};
 use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree, locate};
 pub use hi_curve::bezier::{DEFAULT_TOLERANCE, Tolerance};
 
@@ -101,28 +101,31 @@ impl<P: ControlPoint> SurfaceBezier<P> {
         self.patches[i].eval(s, t)
     }
 
-    /// The parameter window ([u0, u1], [v0, v1]) of patch `index` (row-major).
+    /// The parameter window [u0, u1] × [v0, v1] of patch `index` (row-major).
     ///
     /// # Panics
     ///
     /// If `index` is not less than the number of patches.
     #[must_use]
-    pub fn window(&self, index: usize) -> ([f64; 2], [f64; 2]) {
+    pub fn window(&self, index: usize) -> ParamWindow {
         assert!(index < self.patches.len(), "patch {index} of {}", self.patches.len());
         let nv = self.v_breaks.len() - 1;
         let (a, c) = (index / nv, index % nv);
-        ([self.u_breaks[a], self.u_breaks[a + 1]], [self.v_breaks[c], self.v_breaks[c + 1]])
+        ParamWindow::new(
+            ParamRange::new(self.u_breaks[a], self.u_breaks[a + 1]),
+            ParamRange::new(self.v_breaks[c], self.v_breaks[c + 1]),
+        )
     }
 
-    /// The indices of the patches whose u-window lies inside `u_range` (to 1e-12): for a surface
-    /// that covers its object twice, such as a fitted spherical geometry image, the patches of
-    /// one cover.
+    /// The indices of the patches whose u-window lies inside `u` (to 1e-12): for a surface that
+    /// covers its object twice, such as a fitted spherical geometry image, the patches of one
+    /// cover.
     #[must_use]
-    pub fn patches_in(&self, u_range: [f64; 2]) -> Vec<usize> {
+    pub fn patches_in(&self, u: ParamRange) -> Vec<usize> {
         (0..self.patches.len())
             .filter(|&i| {
-                let ([u0, u1], _) = self.window(i);
-                u0 >= u_range[0] - 1e-12 && u1 <= u_range[1] + 1e-12
+                let w = self.window(i).u;
+                w.start >= u.start - 1e-12 && w.end <= u.end + 1e-12
             })
             .collect()
     }

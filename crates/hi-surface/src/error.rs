@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+use hi_bezier::ParamWindow;
+
 /// Everything that can be wrong with the input of a `hi-surface` function; `Display` gives one
 /// line naming the problem.
 #[derive(Clone, Debug, PartialEq)]
@@ -44,8 +46,8 @@ pub enum Error {
     },
     /// A parameter window is empty or not finite.
     InvalidWindow {
-        /// The window as given: u0, u1, v0, v1.
-        window: [f64; 4],
+        /// The window as given.
+        window: ParamWindow,
     },
     /// An error from the curve layer (per-axis operations).
     Curve(hi_curve::Error),
@@ -86,7 +88,7 @@ impl fmt::Display for Error {
             Error::InvalidWindow { window } => write!(
                 f,
                 "window u ∈ [{}, {}], v ∈ [{}, {}] is invalid: bounds must be finite with u0 < u1 and v0 < v1",
-                window[0], window[1], window[2], window[3]
+                window.u.start, window.u.end, window.v.start, window.v.end
             ),
             Error::Curve(e) => write!(f, "{e}"),
             Error::InvalidValue { what, index: Some(i), value, expected } => {

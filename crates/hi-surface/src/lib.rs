@@ -65,6 +65,7 @@ pub use error::Error;
 pub use examples::{sphere, torus};
 pub use geometry::{Curvature, CurvatureQuantity, FundamentalForms, SurfaceDerivs};
 pub use grid::GridSamples;
+pub use hi_bezier::{ParamRange, ParamWindow};
 pub use mesh::{CurvatureColoring, MeshOptions, Seam};
 pub use parametric::{
     CurvatureComparison, ParametricSurface, compare_curvature, test_surface, test_surfaces,

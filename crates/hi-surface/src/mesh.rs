@@ -45,7 +45,7 @@ use glam::{DVec2, DVec3};
 
 use hi_mesh::{ColorMap, TriangleMesh};
 
-use crate::{CurvatureQuantity, Error, HarmonicSurface, SurfaceDerivs};
+use crate::{CurvatureQuantity, Error, HarmonicSurface, ParamRange, ParamWindow, SurfaceDerivs};
 
 /// Relative size below which sample points coincide (welding at poles), as a fraction of the
 /// size of the surface.
@@ -91,10 +91,8 @@ pub struct MeshOptions {
     pub n_u: usize,
     /// Number of quads along v (likewise).
     pub n_v: usize,
-    /// The u window [u0, u1], u0 < u1.
-    pub u_range: [f64; 2],
-    /// The v window [v0, v1], v0 < v1.
-    pub v_range: [f64; 2],
+    /// The window [u0, u1] × [v0, v1] to mesh, u0 < u1 and v0 < v1.
+    pub window: ParamWindow,
     /// How a closed direction meets itself.
     pub seam: Seam,
     /// Reverse the triangles and normals (so they follow `p_v × p_u`).
@@ -109,8 +107,7 @@ impl Default for MeshOptions {
         MeshOptions {
             n_u: 64,
             n_v: 64,
-            u_range: [0.0, 1.0],
-            v_range: [0.0, 1.0],
+            window: ParamWindow::UNIT,
             seam: Seam::Welded,
             flip: false,
             color: None,
@@ -132,10 +129,11 @@ impl HarmonicSurface<DVec3> {
     /// # Examples
     ///
     /// ```
-    /// use hi_surface::{MeshOptions, Seam, sphere, torus};
+    /// use hi_surface::{MeshOptions, ParamRange, ParamWindow, Seam, sphere, torus};
     ///
     /// // The sphere once: u ∈ [0, ½] from pole to pole, v closed.
-    /// let opts = MeshOptions { n_u: 16, n_v: 32, u_range: [0.0, 0.5], ..Default::default() };
+    /// let window = ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT);
+    /// let opts = MeshOptions { n_u: 16, n_v: 32, window, ..Default::default() };
     /// let mesh = sphere(1.0).to_mesh(&opts).unwrap();
     /// assert_eq!(mesh.n_vertices(), 15 * 32 + 2); // two pole vertices
     /// assert_eq!(mesh.n_triangles(), 2 * 16 * 32 - 2 * 32); // one triangle per pole quad
@@ -166,8 +164,8 @@ struct Axis {
 }
 
 impl Axis {
-    fn new(range: [f64; 2], n: usize, what: &'static str) -> Result<Self, Error> {
-        let [lo, hi] = range;
+    fn new(range: ParamRange, n: usize, what: &'static str) -> Result<Self, Error> {
+        let (lo, hi) = (range.start, range.end);
         let closed = ((hi - lo) - 1.0).abs() <= PERIOD_TOLERANCE;
         let min = if closed { 3 } else { 1 };
         if n < min {
@@ -261,14 +259,12 @@ struct Builder<'a> {
 
 impl<'a> Builder<'a> {
     fn new(surface: &'a HarmonicSurface<DVec3>, options: &MeshOptions) -> Result<Self, Error> {
-        let [u0, u1] = options.u_range;
-        let [v0, v1] = options.v_range;
-        let window = [u0, u1, v0, v1];
-        if !window.iter().all(|x| x.is_finite()) || u0 >= u1 || v0 >= v1 {
+        let window = options.window;
+        if !window.u.is_increasing() || !window.v.is_increasing() {
             return Err(Error::InvalidWindow { window });
         }
-        let u = Axis::new(options.u_range, options.n_u, "number of quads along u")?;
-        let v = Axis::new(options.v_range, options.n_v, "number of quads along v")?;
+        let u = Axis::new(window.u, options.n_u, "number of quads along u")?;
+        let v = Axis::new(window.v, options.n_v, "number of quads along v")?;
         for n in [options.n_u, options.n_v] {
             if n >= 1 << 24 {
                 return Err(Error::InvalidCount {

@@ -16,8 +16,8 @@ use std::f64::consts::{PI, TAU};
 
 use glam::DVec3;
 
-use crate::HarmonicSurface;
 use crate::geometry::{Curvature, SurfaceDerivs};
+use crate::{HarmonicSurface, ParamRange, ParamWindow};
 
 /// A parametric surface of §5.9 with the sampling the thesis used.
 #[derive(Clone, Copy, Debug)]
@@ -30,8 +30,8 @@ pub struct ParametricSurface {
     pub title: &'static str,
     /// Samples (in u, in v) the thesis took: grid point (j, k) is f(j/m, k/n).
     pub samples: (usize, usize),
-    /// The parameter window of the thesis's picture (u0, u1, v0, v1); a sub-window of [0, 1]².
-    pub window: [f64; 4],
+    /// The parameter window of the thesis's picture; a sub-window of [0, 1]².
+    pub window: ParamWindow,
     /// True if f is 1-periodic in u and in v, so harmonic interpolation can reproduce it well.
     pub periodic: bool,
     f: fn(f64, f64) -> DVec3,
@@ -128,7 +128,8 @@ pub struct CurvatureComparison {
 pub fn compare_curvature(surface: &ParametricSurface, res: usize) -> CurvatureComparison {
     let harmonic = surface.harmonic();
     let scale = harmonic.radius().max(1e-300);
-    let [u0, u1, v0, v1] = surface.window;
+    let ParamWindow { u: ParamRange { start: u0, end: u1 }, v: ParamRange { start: v0, end: v1 } } =
+        surface.window;
     let mut c = CurvatureComparison {
         n_points: 0,
         n_skipped: 0,
@@ -291,7 +292,10 @@ pub fn test_surfaces() -> Vec<ParametricSurface> {
         figure,
         title,
         samples,
-        window,
+        window: {
+            let [u0, u1, v0, v1]: [f64; 4] = window;
+            ParamWindow::new(ParamRange::new(u0, u1), ParamRange::new(v0, v1))
+        },
         periodic,
         f,
     };

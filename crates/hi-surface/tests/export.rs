@@ -10,6 +10,7 @@ use hi_mesh::Error;
 use hi_mesh::export::{self, Connectivity, FileError, MeshFormat};
 use hi_mesh::{ColorMap, ColorScale, TriangleMesh};
 use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions, Seam, sphere, torus};
+use hi_surface::{ParamRange, ParamWindow};
 
 fn tmp(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("export");
@@ -30,7 +31,12 @@ fn colored(quantity: CurvatureQuantity) -> Option<CurvatureColoring> {
 
 /// Meshes with and without colours, welded and split, u16 and u32 indices.
 fn meshes() -> Vec<(&'static str, TriangleMesh)> {
-    let half = MeshOptions { n_u: 12, n_v: 20, u_range: [0.0, 0.5], ..Default::default() };
+    let half = MeshOptions {
+        n_u: 12,
+        n_v: 20,
+        window: ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT),
+        ..Default::default()
+    };
     let cases = [
         ("sphere", sphere(1.25), half),
         (

@@ -17,6 +17,7 @@ use hi_mesh::{ColorMap, ColorScale, TriangleMesh, export};
 use hi_surface::{
     CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions, Seam, sphere, torus,
 };
+use hi_surface::{ParamRange, ParamWindow};
 
 const VALIDATOR_DIR: &str =
     concat!(env!("CARGO_MANIFEST_DIR"), "/../../xtask/peers/gltf-validator");
@@ -64,7 +65,12 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
     });
     let mean =
         Some(CurvatureColoring { quantity: CurvatureQuantity::Mean, map: ColorMap::default() });
-    let half_sphere = MeshOptions { n_u: 24, n_v: 48, u_range: [0.0, 0.5], ..Default::default() };
+    let half_sphere = MeshOptions {
+        n_u: 24,
+        n_v: 48,
+        window: ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT),
+        ..Default::default()
+    };
     let cases = [
         ("sphere", sphere(1.5), half_sphere),
         ("sphere_colors", sphere(1.5), MeshOptions { color: mean, ..half_sphere }),
@@ -92,8 +98,7 @@ fn meshes() -> Vec<(&'static str, TriangleMesh)> {
             MeshOptions {
                 n_u: 20,
                 n_v: 30,
-                u_range: [0.1, 0.6],
-                v_range: [-0.3, 0.4],
+                window: ParamWindow::new(ParamRange::new(0.1, 0.6), ParamRange::new(-0.3, 0.4)),
                 color: mean,
                 ..Default::default()
             },

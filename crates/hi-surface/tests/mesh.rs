@@ -9,6 +9,7 @@ use hi_mesh::{ColorMap, ColorScale, TriangleMesh};
 use hi_surface::{
     CurvatureColoring, CurvatureQuantity, Error, HarmonicSurface, MeshOptions, Seam, sphere, torus,
 };
+use hi_surface::{ParamRange, ParamWindow};
 use proptest::prelude::*;
 
 fn mesh(s: &HarmonicSurface<DVec3>, opts: MeshOptions) -> TriangleMesh {
@@ -50,9 +51,12 @@ fn all_distinct(points: &[DVec3]) -> bool {
 
 /// The surface parameter of a vertex, from its UV and the window.
 fn param(uv: DVec2, opts: &MeshOptions) -> (f64, f64) {
-    let [u0, u1] = opts.u_range;
-    let [v0, v1] = opts.v_range;
-    (u0 + uv.x * (u1 - u0), v0 + uv.y * (v1 - v0))
+    opts.window.lerp(uv.x, uv.y)
+}
+
+/// The window `[u0, u1] × [v0, v1]`.
+fn window([u0, u1]: [f64; 2], [v0, v1]: [f64; 2]) -> ParamWindow {
+    ParamWindow::new(ParamRange::new(u0, u1), ParamRange::new(v0, v1))
 }
 
 fn face_normal(m: &TriangleMesh, t: [u32; 3]) -> DVec3 {
@@ -102,7 +106,12 @@ fn torus_split_repeats_the_seams_with_uv_one() {
 #[test]
 fn half_sphere_window_welds_the_poles() {
     let (n_u, n_v) = (10, 16);
-    let opts = MeshOptions { n_u, n_v, u_range: [0.0, 0.5], ..Default::default() };
+    let opts = MeshOptions {
+        n_u,
+        n_v,
+        window: ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT),
+        ..Default::default()
+    };
     let m = mesh(&sphere(2.0), opts);
     assert_eq!(m.n_vertices(), (n_u - 1) * n_v + 2, "rings plus one vertex per pole");
     assert_eq!(m.n_triangles(), 2 * n_u * n_v - 2 * n_v, "one triangle per pole quad");
@@ -118,10 +127,11 @@ fn half_sphere_window_welds_the_poles() {
 
 #[test]
 fn sphere_vertices_lie_on_the_sphere() {
-    for (window, seam) in
+    for (u_range, seam) in
         [([0.0, 0.5], Seam::Welded), ([0.0, 0.5], Seam::Split), ([0.0, 1.0], Seam::Welded)]
     {
-        let opts = MeshOptions { n_u: 32, n_v: 48, u_range: window, seam, ..Default::default() };
+        let window = window(u_range, [0.0, 1.0]);
+        let opts = MeshOptions { n_u: 32, n_v: 48, window, seam, ..Default::default() };
         let m = mesh(&sphere(2.0), opts);
         for p in m.positions() {
             // The sphere is exact; the FFT or basis sums round at ~1e-16 relative.
@@ -154,8 +164,13 @@ fn full_sphere_welds_both_pole_rows() {
 #[test]
 fn split_sphere_keeps_pole_copies_with_their_uvs() {
     let (n_u, n_v) = (8, 12);
-    let opts =
-        MeshOptions { n_u, n_v, u_range: [0.0, 0.5], seam: Seam::Split, ..Default::default() };
+    let opts = MeshOptions {
+        n_u,
+        n_v,
+        window: ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT),
+        seam: Seam::Split,
+        ..Default::default()
+    };
     let m = mesh(&sphere(1.0), opts);
     // Each pole sample is used by one triangle (the seam copy at t = 1 by the last quad's
     // triangle at the south pole only, and not at all at the north pole, where it is removed).
@@ -180,8 +195,7 @@ fn normals_are_unit_and_follow_pu_cross_pv() {
         let opts = MeshOptions {
             n_u: 10,
             n_v: 14,
-            u_range: [0.1, 0.8],
-            v_range: [0.3, 1.3],
+            window: ParamWindow::new(ParamRange::new(0.1, 0.8), ParamRange::new(0.3, 1.3)),
             flip,
             ..Default::default()
         };
@@ -210,7 +224,12 @@ fn normals_are_unit_and_follow_pu_cross_pv() {
 
 #[test]
 fn pole_normals_are_the_limit_direction_and_never_nan() {
-    let opts = MeshOptions { n_u: 9, n_v: 7, u_range: [0.0, 0.5], ..Default::default() };
+    let opts = MeshOptions {
+        n_u: 9,
+        n_v: 7,
+        window: ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT),
+        ..Default::default()
+    };
     let m = mesh(&sphere(3.0), opts);
     for (p, n) in m.positions().iter().zip(m.normals()) {
         assert!(n.is_finite() && (n.length() - 1.0).abs() < 1e-14, "unit, finite");
@@ -236,7 +255,8 @@ fn fft_and_separable_paths_sample_the_surface() {
     for (u_range, v_range) in
         [([0.0, 1.0], [0.0, 1.0]), ([0.2, 1.2], [0.0, 1.0]), ([0.1, 0.4], [-0.5, 0.25])]
     {
-        let opts = MeshOptions { n_u: 11, n_v: 9, u_range, v_range, ..Default::default() };
+        let window = window(u_range, v_range);
+        let opts = MeshOptions { n_u: 11, n_v: 9, window, ..Default::default() };
         let m = mesh(&s, opts);
         for (k, p) in m.positions().iter().enumerate() {
             let (u, v) = param(m.uvs()[k], &opts);
@@ -250,8 +270,7 @@ fn uvs_span_the_unit_square() {
     let opts = MeshOptions {
         n_u: 4,
         n_v: 5,
-        u_range: [0.25, 0.5],
-        v_range: [0.0, 0.3],
+        window: ParamWindow::new(ParamRange::new(0.25, 0.5), ParamRange::new(0.0, 0.3)),
         ..Default::default()
     };
     let m = mesh(&torus(2.0, 0.5), opts);
@@ -270,7 +289,7 @@ fn curvature_colours_and_legend() {
     let opts = MeshOptions {
         n_u: 8,
         n_v: 8,
-        u_range: [0.0, 0.5],
+        window: ParamWindow::new(ParamRange::new(0.0, 0.5), ParamRange::UNIT),
         color: Some(color),
         ..Default::default()
     };
@@ -316,11 +335,13 @@ fn invalid_options_are_errors() {
     let t = torus(2.0, 0.5);
     let bad_windows = [[0.5, 0.5], [0.7, 0.2], [f64::NAN, 1.0], [0.0, f64::INFINITY]];
     for u_range in bad_windows {
-        let r = t.to_mesh(&MeshOptions { u_range, ..Default::default() });
+        let window = window(u_range, [0.0, 1.0]);
+        let r = t.to_mesh(&MeshOptions { window, ..Default::default() });
         assert!(matches!(r, Err(Error::InvalidWindow { .. })), "{u_range:?}: {r:?}");
     }
     for (n_u, u_range) in [(0, [0.0, 0.5]), (2, [0.0, 1.0]), (1 << 24, [0.0, 0.5])] {
-        let r = t.to_mesh(&MeshOptions { n_u, u_range, ..Default::default() });
+        let window = window(u_range, [0.0, 1.0]);
+        let r = t.to_mesh(&MeshOptions { n_u, window, ..Default::default() });
         assert!(matches!(r, Err(Error::InvalidCount { .. })), "n_u = {n_u}: {r:?}");
     }
     // A surface that is one point has no non-degenerate triangle.
@@ -368,7 +389,8 @@ proptest! {
         let v_range = if closed_v { [0.0, 1.0] } else { [0.2, 0.9] };
         let seam = if split { Seam::Split } else { Seam::Welded };
         let u_range = [u0, u0 + du];
-        let opts = MeshOptions { n_u, n_v, u_range, v_range, seam, ..Default::default() };
+        let window = window(u_range, v_range);
+        let opts = MeshOptions { n_u, n_v, window, seam, ..Default::default() };
         let m = s.to_mesh(&opts).unwrap();
         let cols = if closed_v && !split { n_v } else { n_v + 1 };
         let rows = if (du - 1.0).abs() < 1e-12 && !split { n_u.max(3) } else { n_u + 1 };

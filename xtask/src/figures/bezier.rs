@@ -101,8 +101,8 @@ fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
     let b =
         fitted.surface.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     ensure!(b.report.max_deviation <= b.report.bound, "deviation above its bound");
-    let (u0, u1) = Layout::FlatOctahedron.covering_window();
-    let once = b.patches_in([u0, u1]);
+    let u = Layout::FlatOctahedron.covering_window();
+    let once = b.patches_in(u);
     Ok((b, once))
 }
 

@@ -6,6 +6,7 @@
 use anyhow::Result;
 use glam::{DVec2, DVec3};
 use hi_bezier::{Bernstein, BezierCurve, PiecewiseBezier, RationalBezierCurve};
+use hi_compare::ParamRange;
 use hi_compare::bspline::{BSplineBasis, BSplineCurve};
 use hi_compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
 use hi_compare::hobby::{HobbyCurve, HobbyOptions};
@@ -408,7 +409,7 @@ fn bspline_pieces(title: &str) -> Result<Vec<u8>> {
 fn blending(title: &str) -> Result<Vec<u8>> {
     const N: usize = 8;
     let basis = BSplineBasis::uniform(3, N);
-    let (lo, hi) = basis.domain();
+    let ParamRange { start: lo, end: hi } = basis.domain();
     let mut plot = Plot::function(title, "u", "y")
         .x_range(0.0, (N + 3) as f64)
         .y_range(0.0, 1.1)

@@ -12,6 +12,7 @@ use hi_surface::MeshOptions;
 
 use super::glb::glb;
 use super::{Figure, Format, Panel, Table};
+use hi_surface::{ParamRange, ParamWindow};
 
 /// Table 5.1 holds timings, which differ from run to run: it lives in the benchmark report, and
 /// this page points to it.
@@ -78,8 +79,12 @@ fn sphere_fit() -> Result<Vec<u8>> {
     let result = fit(&scan, &options, &mut |_| {})?;
     let worst = result.image.texels().iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max);
     ensure!(worst < 1e-12, "a texel is {worst} off the sphere");
-    let (u0, u1) = Layout::Sphere.covering_window();
-    let mesh_options =
-        MeshOptions { n_u: 32, n_v: 64, u_range: [u0, u1], ..MeshOptions::default() };
+    let u = Layout::Sphere.covering_window();
+    let mesh_options = MeshOptions {
+        n_u: 32,
+        n_v: 64,
+        window: ParamWindow::new(u, ParamRange::UNIT),
+        ..MeshOptions::default()
+    };
     glb(&result.surface.to_mesh(&mesh_options)?)
 }

@@ -28,6 +28,7 @@ use hi_surface::{HarmonicSurface, MeshOptions};
 use super::glb::glb;
 use super::subdivision::head_with;
 use super::{Figure, Format, Panel, Table};
+use hi_surface::{ParamRange, ParamWindow};
 
 /// Rows and columns of every geometry image here.
 const IMAGE: usize = 64;
@@ -184,17 +185,17 @@ fn covering_mesh(
     layout: Layout,
     per_texel: usize,
 ) -> Result<TriangleMesh> {
-    let (u0, u1) = layout.covering_window();
+    let u = layout.covering_window();
     #[expect(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,
         reason = "the window is ½ or 1 of a period of 64 rows"
     )]
-    let n_u = ((u1 - u0) * surface.m() as f64).round() as usize * per_texel;
+    let n_u = (u.width() * surface.m() as f64).round() as usize * per_texel;
     let options = MeshOptions {
         n_u,
         n_v: surface.n() * per_texel,
-        u_range: [u0, u1],
+        window: ParamWindow::new(u, ParamRange::UNIT),
         ..MeshOptions::default()
     };
     let mesh = surface.to_mesh(&options)?;

@@ -15,6 +15,7 @@ use hi_surface::MeshOptions;
 
 use super::glb::glb;
 use super::{Figure, Format, Panel};
+use hi_surface::{ParamRange, ParamWindow};
 
 /// Latitudes (M, poles included as M + 1 rows) and longitudes (N) of the data of figure 5.7.
 const LAT_LONG: (usize, usize) = (12, 24);
@@ -94,11 +95,11 @@ pub(crate) const FIGURES: &[Figure] = &[
 /// The surface of `fit` over the half period that covers the object once, with `per_row` quads
 /// along u between neighbouring grid rows.
 fn mesh(fit: &SectionFit, per_row: usize) -> Result<Vec<u8>> {
-    let (u0, u1) = fit.covering_window();
+    let u = fit.covering_window();
     let options = MeshOptions {
         n_u: per_row * fit.rows.len(),
         n_v: 2 * fit.surface.n(),
-        u_range: [u0, u1],
+        window: ParamWindow::new(u, ParamRange::UNIT),
         ..MeshOptions::default()
     };
     glb(&fit.surface.to_mesh(&options)?)

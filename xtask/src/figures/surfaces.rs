@@ -36,6 +36,7 @@ use hi_surface::{
 
 use super::glb::{glb, glb_with_edges};
 use super::{Figure, Format, Panel, Table};
+use hi_surface::{ParamRange, ParamWindow};
 
 /// The fraction of the parametric surface's curvature values the colour scale spans.
 const COVERAGE: f64 = 0.95;
@@ -403,10 +404,11 @@ enum Torus {
 fn parametric_mesh(
     derivs: &dyn Fn(f64, f64) -> SurfaceDerivs,
     scale: f64,
-    window: [f64; 4],
+    window: ParamWindow,
     (n_u, n_v): (usize, usize),
 ) -> Result<(TriangleMesh, Vec<DVec2>)> {
-    let [u0, u1, v0, v1] = window;
+    let ParamWindow { u: ParamRange { start: u0, end: u1 }, v: ParamRange { start: v0, end: v1 } } =
+        window;
     let cols = n_v + 1;
     let mut params = Vec::with_capacity((n_u + 1) * cols);
     for i in 0..=n_u {
@@ -739,11 +741,12 @@ fn parametric_figure(name: &str, n_u: usize, n_v: usize) -> Result<Vec<u8>> {
 
 /// Figure 5.1: the exact sphere or torus with its interpolation points.
 fn harmonic_figure(which: Exact) -> Result<Vec<u8>> {
-    let (surface, u_range) = match which {
-        Exact::Sphere => (hi_surface::sphere(1.0), [0.0, 0.5]),
-        Exact::Torus => (hi_surface::torus(2.0, 1.0), [0.0, 1.0]),
+    let (surface, u) = match which {
+        Exact::Sphere => (hi_surface::sphere(1.0), ParamRange::new(0.0, 0.5)),
+        Exact::Torus => (hi_surface::torus(2.0, 1.0), ParamRange::UNIT),
     };
-    let options = MeshOptions { n_u: 24, n_v: 48, u_range, ..Default::default() };
+    let window = ParamWindow::new(u, ParamRange::UNIT);
+    let options = MeshOptions { n_u: 24, n_v: 48, window, ..Default::default() };
     let mesh = surface.to_mesh(&options)?;
     glb(&with_markers(&mesh, surface.points(), MARKER_SIZE * surface.radius())?)
 }
@@ -839,20 +842,9 @@ impl Comparison {
         let window = surface.window;
         let parametric_mesh =
             parametric_mesh(&|u, v| surface.derivs(u, v), scale, window, (spec.n_u, spec.n_v))?;
-        let [u0, u1, v0, v1] = window;
-        let options = MeshOptions {
-            n_u: spec.n_u,
-            n_v: spec.n_v,
-            u_range: [u0, u1],
-            v_range: [v0, v1],
-            ..Default::default()
-        };
+        let options = MeshOptions { n_u: spec.n_u, n_v: spec.n_v, window, ..Default::default() };
         let mesh = harmonic.to_mesh(&options)?;
-        let params = mesh
-            .uvs()
-            .iter()
-            .map(|t| DVec2::new(u0 + (u1 - u0) * t.x, v0 + (v1 - v0) * t.y))
-            .collect();
+        let params = mesh.uvs().iter().map(|t| DVec2::from(window.lerp(t.x, t.y))).collect();
         Ok(Comparison { surface, harmonic, scale, parametric_mesh, harmonic_mesh: (mesh, params) })
     }
 
@@ -947,7 +939,8 @@ fn mesh_table() -> Result<String> {
         };
         let ((ak, nk), (ah, nh)) =
             (over(CurvatureQuantity::Gaussian)?, over(CurvatureQuantity::Mean)?);
-        let [u0, u1, v0, v1] = c.surface.window;
+        let w = c.surface.window;
+        let (u0, u1, v0, v1) = (w.u.start, w.u.end, w.v.start, w.v.end);
         s += &format!(
             "| {} | {} | ({u0}, {u1}, {v0}, {v1}) | {}×{} | {}, {} | {ak:.3e} | {nk} | {ah:.3e} | {nh} |\n",
             spec.figure,

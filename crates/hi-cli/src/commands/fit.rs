@@ -143,8 +143,8 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
             )
             .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
         let seconds = start.elapsed().as_secs_f64();
-        let (u0, u1) = options.layout.covering_window();
-        let once = patches.patches_in([u0, u1]);
+        let u = options.layout.covering_window();
+        let once = patches.patches_in(u);
         let name = scheme.name();
         let report = BezierOut {
             report: surface_bezier::Report { scheme: name, report: &patches.report },

@@ -21,6 +21,7 @@ use crate::cli::{AxisName, FitArgs, OrderName};
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
 use crate::output::{Json, file_names, json};
+use hi_surface::{ParamRange, ParamWindow};
 
 /// Fits by algorithm 1, writes the surface and returns the summary (also written to
 /// `--report`).
@@ -73,13 +74,12 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         write_file(&args.output, &grid_json(&fitted.surface.rows())?, false)?;
         vec![args.output.clone()]
     } else {
-        let (u0, u1) = fitted.covering_window();
+        let u = fitted.covering_window();
         let (m, n) = (fitted.surface.m(), fitted.surface.n());
         let mesh_options = MeshOptions {
             n_u: m.max(3),
             n_v: 2 * n,
-            u_range: [u0, u1],
-            v_range: [0.0, 1.0],
+            window: ParamWindow::new(u, ParamRange::UNIT),
             ..MeshOptions::default()
         };
         let mesh = fitted.surface.to_mesh(&mesh_options)?;

@@ -11,6 +11,7 @@ use crate::input::read_surface;
 use serde::Serialize;
 
 use crate::output::{Json, file_names, json};
+use hi_surface::{ParamRange, ParamWindow};
 
 /// Writes the mesh and returns `{"files": [...], "vertices": V, "triangles": T}`, with
 /// `"legend"` when coloured.
@@ -31,8 +32,7 @@ pub(crate) fn run(args: &SurfaceMeshArgs) -> Result<Json, Failure> {
     let options = MeshOptions {
         n_u: args.resolution.0,
         n_v: args.resolution.1,
-        u_range: [u0, u1],
-        v_range: [v0, v1],
+        window: ParamWindow::new(ParamRange::new(u0, u1), ParamRange::new(v0, v1)),
         color: quantity
             .map(|quantity| CurvatureColoring { quantity, map: args.palette.color_map() }),
         ..Default::default()

@@ -11,7 +11,7 @@
 use crate::bspline::{blossom, de_boor};
 use glam::DVec3;
 
-use crate::Error;
+use crate::{Error, ParamRange};
 
 /// The degree: the surfaces of §4.4 are bicubic.
 pub(crate) const DEGREE: usize = 3;
@@ -117,8 +117,8 @@ impl Axis {
     }
 
     /// The domain [a, b]: [u₃, uₙ] open, [τ₀, τₙ] closed.
-    pub(crate) fn domain(&self) -> (f64, f64) {
-        (self.ext[DEGREE], self.ext[self.ext.len() - DEGREE - 1])
+    pub(crate) fn domain(&self) -> ParamRange {
+        ParamRange::new(self.ext[DEGREE], self.ext[self.ext.len() - DEGREE - 1])
     }
 
     /// The distinct knots of the domain, increasing, from a to b: the ends of the polynomial
@@ -142,7 +142,7 @@ impl Axis {
         if !self.closed {
             return (u, 0.0);
         }
-        let (a, b) = self.domain();
+        let ParamRange { start: a, end: b } = self.domain();
         let period = b - a;
         let mut turns = ((u - a) / period).floor();
         let mut w = u - turns * period;
@@ -240,7 +240,7 @@ mod tests {
     fn closed_unrolling_matches_the_convention() {
         let axis = Axis::try_new(vec![0.0, 0.25, 0.5, 1.0], 3, true, "knot").unwrap();
         assert_eq!(axis.ext.len(), 3 + 7);
-        assert_eq!(axis.domain(), (0.0, 1.0));
+        assert_eq!(axis.domain(), ParamRange::UNIT);
         assert_eq!(axis.breakpoints(), vec![0.0, 0.25, 0.5, 1.0]);
         assert_eq!(axis.control_index(0), 2);
         assert_eq!(axis.control_index(1), 0);

@@ -12,7 +12,7 @@ use super::axis::{Axis, DEGREE};
 use super::patches::BezierPatchGrid;
 use hi_mesh::TriangleMesh;
 
-use crate::Error;
+use crate::{Error, ParamRange, ParamWindow};
 
 /// A bicubic tensor-product B-spline surface (§4.4):
 ///
@@ -152,10 +152,10 @@ impl BSplineSurface {
         self.control.chunks(self.v.n_control).map(<[DVec3]>::to_vec).collect()
     }
 
-    /// The parameter domains ([u₀, u₁], [v₀, v₁]).
+    /// The parameter domain [u₀, u₁] × [v₀, v₁].
     #[must_use]
-    pub fn domain(&self) -> ((f64, f64), (f64, f64)) {
-        (self.u.domain(), self.v.domain())
+    pub fn domain(&self) -> ParamWindow {
+        ParamWindow::new(self.u.domain(), self.v.domain())
     }
 
     /// The distinct u knots of the domain, increasing: the u ends of the polynomial pieces
@@ -312,7 +312,10 @@ impl BSplineSurface {
                 expected: "fewer than 2^31",
             });
         }
-        let ((u0, u1), (v0, v1)) = self.domain();
+        let ParamWindow {
+            u: ParamRange { start: u0, end: u1 },
+            v: ParamRange { start: v0, end: v1 },
+        } = self.domain();
         let mut positions = Vec::with_capacity(rows * cols);
         let mut normals = Vec::with_capacity(rows * cols);
         let mut uvs = Vec::with_capacity(rows * cols);
@@ -412,7 +415,7 @@ pub fn insert_knots(
     let closed = curve.is_closed();
     let control = curve.control_points();
     let coarse = Axis::try_new(curve.knots().to_vec(), control.len(), closed, "knot")?;
-    let (a, b) = coarse.domain();
+    let ParamRange { start: a, end: b } = coarse.domain();
     let mut knots = curve.knots().to_vec();
     for &k in new_knots {
         if !k.is_finite() {

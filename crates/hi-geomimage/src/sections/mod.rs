@@ -72,7 +72,7 @@ use std::time::Instant;
 use crate::par::*;
 use glam::{DVec2, DVec3};
 use hi_curve::HarmonicCurve;
-use hi_surface::HarmonicSurface;
+use hi_surface::{HarmonicSurface, ParamRange};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::distance::{Distances, distances_to_surface};
@@ -328,9 +328,9 @@ impl SectionFit {
     /// bridge under the lowest section to the middle of the bridge over the highest, a half
     /// period (the other half is the same surface, reached from the other side).
     #[must_use]
-    pub fn covering_window(&self) -> (f64, f64) {
+    pub fn covering_window(&self) -> ParamRange {
         let quarter_row = 0.25 / self.rows.len() as f64;
-        (-quarter_row, 0.5 - quarter_row)
+        ParamRange::new(-quarter_row, 0.5 - quarter_row)
     }
 }
 
