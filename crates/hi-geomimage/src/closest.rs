@@ -12,8 +12,8 @@
 use crate::par::*;
 use glam::DVec3;
 
-use crate::Error;
 use crate::distance::closest_point_on_triangle;
+use crate::{Error, NonFiniteInput};
 
 /// Triangles per leaf at most.
 const LEAF: usize = 4;
@@ -204,7 +204,7 @@ fn check_mesh(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<(), Error> {
         });
     }
     if let Some(k) = vertices.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: format!("vertex {k}") });
+        return Err(Error::NonFinite { what: NonFiniteInput::Vertex(k) });
     }
     Ok(())
 }

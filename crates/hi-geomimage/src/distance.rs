@@ -16,7 +16,7 @@ use glam::DVec3;
 use hi_surface::HarmonicSurface;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
-use crate::Error;
+use crate::{Error, NonFiniteInput};
 
 /// Distances from a set of points to a surface or mesh, with their summary.
 #[derive(Clone, Debug, PartialEq)]
@@ -104,9 +104,9 @@ pub fn closest_point_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec
     a + ab * (vb / denom) + ac * (vc / denom)
 }
 
-fn check_points(points: &[DVec3], what: &str) -> Result<(), Error> {
+fn check_points(points: &[DVec3], what: fn(usize) -> NonFiniteInput) -> Result<(), Error> {
     if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: format!("{what} {k}") });
+        return Err(Error::NonFinite { what: what(k) });
     }
     Ok(())
 }
@@ -137,7 +137,7 @@ pub fn distances_to_surface(
     points: &[DVec3],
     oversample: usize,
 ) -> Result<Distances, Error> {
-    check_points(points, "point")?;
+    check_points(points, NonFiniteInput::Point)?;
     let grid = SampleGrid::of(surface, oversample)?;
     grid.distances(points)
 }
@@ -209,8 +209,8 @@ impl SampleGrid {
 ///
 /// [`Error::NonFinite`] for a non-finite point; [`Error::TooFewPoints`] for no points.
 pub fn nearest_point_distances(queries: &[DVec3], points: &[DVec3]) -> Result<Vec<f64>, Error> {
-    check_points(points, "point")?;
-    check_points(queries, "query")?;
+    check_points(points, NonFiniteInput::Point)?;
+    check_points(queries, NonFiniteInput::Query)?;
     if points.is_empty() {
         return Err(Error::TooFewPoints { found: 0, needed: 1 });
     }
@@ -243,8 +243,8 @@ pub fn distances_to_mesh(
     vertices: &[DVec3],
     triangles: &[[u32; 3]],
 ) -> Result<Distances, Error> {
-    check_points(points, "point")?;
-    check_points(vertices, "vertex")?;
+    check_points(points, NonFiniteInput::Point)?;
+    check_points(vertices, NonFiniteInput::Vertex)?;
     if triangles.is_empty() {
         return Err(Error::TooFewPoints { found: 0, needed: 1 });
     }
@@ -322,7 +322,7 @@ pub fn hausdorff(
     triangles: &[[u32; 3]],
     oversample: usize,
 ) -> Result<Hausdorff, Error> {
-    check_points(vertices, "vertex")?;
+    check_points(vertices, NonFiniteInput::Vertex)?;
     // One sampling of the surface serves both directions.
     let grid = SampleGrid::of(surface, oversample)?;
     let scan_to_surface = grid.distances(vertices)?;

@@ -21,8 +21,8 @@ pub enum Error {
     },
     /// A point, centre or other input has a NaN or infinite coordinate.
     NonFinite {
-        /// What it is ("point 17", "centre").
-        what: String,
+        /// Which input.
+        what: NonFiniteInput,
     },
     /// An image size is out of range.
     InvalidResolution {
@@ -146,5 +146,53 @@ impl From<hi_mesh::Error> for Error {
 impl From<hi_curve::Error> for Error {
     fn from(e: hi_curve::Error) -> Self {
         Self::Curve(e)
+    }
+}
+
+/// The input of [`Error::NonFinite`]: which point, texel or value has a NaN or infinite
+/// coordinate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NonFiniteInput {
+    /// Point k of the scan.
+    Point(usize),
+    /// A point of one of algorithm 1's sections.
+    SectionPoint {
+        /// The section, from the lowest (0).
+        section: usize,
+        /// The point within it.
+        point: usize,
+    },
+    /// The centre given for a radial geometry image.
+    Centre,
+    /// Vertex k of a mesh.
+    Vertex(usize),
+    /// Query point k of a distance computation.
+    Query(usize),
+    /// A texel of a geometry image.
+    Texel {
+        /// Its row.
+        row: usize,
+        /// Its column.
+        col: usize,
+    },
+    /// The origin of a sampled grid.
+    GridOrigin,
+    /// Value k of a sampled grid.
+    GridValue(usize),
+}
+
+impl fmt::Display for NonFiniteInput {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Point(k) => write!(f, "point {k}"),
+            Self::SectionPoint { section, point } => write!(f, "section {section}, point {point}"),
+            Self::Centre => f.write_str("the centre"),
+            Self::Vertex(k) => write!(f, "vertex {k}"),
+            Self::Query(k) => write!(f, "query {k}"),
+            Self::Texel { row, col } => write!(f, "texel ({row}, {col})"),
+            Self::GridOrigin => f.write_str("the grid's origin"),
+            Self::GridValue(k) => write!(f, "grid value {k}"),
+        }
     }
 }

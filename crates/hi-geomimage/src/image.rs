@@ -5,7 +5,7 @@
 use glam::DVec3;
 use hi_surface::HarmonicSurface;
 
-use crate::Error;
+use crate::{Error, NonFiniteInput};
 
 /// The largest number of texels an image may have (2²⁶, a 8192×8192 image).
 pub const MAX_TEXELS: usize = 1 << 26;
@@ -38,7 +38,9 @@ impl GeometryImage {
             });
         }
         if let Some(k) = texels.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinite { what: format!("texel ({}, {})", k / cols, k % cols) });
+            return Err(Error::NonFinite {
+                what: NonFiniteInput::Texel { row: k / cols, col: k % cols },
+            });
         }
         Ok(Self { rows, cols, texels })
     }

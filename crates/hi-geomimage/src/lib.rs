@@ -63,7 +63,7 @@ pub mod sphereparam;
 pub mod spherical;
 pub mod surfacenets;
 
-pub use error::Error;
+pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;
 pub use fit::{
     ErrorMeasure, Fit, FitErrors, FitOptions, FitReport, MeshSource, Method, RowPoints,

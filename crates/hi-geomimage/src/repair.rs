@@ -26,7 +26,7 @@
 use crate::par::*;
 use glam::DVec3;
 
-use crate::Error;
+use crate::{Error, NonFiniteInput};
 
 /// Marks a vertex of a [`ClosedMesh`] that no scan point gave (the centre of a filled hole).
 pub const ADDED_VERTEX: u32 = u32::MAX;
@@ -147,7 +147,7 @@ const fn edge_key(a: u32, b: u32) -> u64 {
 /// ```
 pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh, Error> {
     if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: format!("point {k}") });
+        return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
     }
     if let Some(&k) = triangles.iter().flatten().find(|&&k| k as usize >= points.len()) {
         return Err(Error::InvalidOption {

@@ -43,7 +43,7 @@ use glam::{DMat3, DVec3};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
-use crate::{Error, GeometryImage};
+use crate::{Error, GeometryImage, NonFiniteInput};
 
 /// The settings of [`shrink_wrap`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -387,7 +387,7 @@ pub fn shrink_wrap(
         });
     }
     if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: format!("point {k}") });
+        return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
     }
     if points.len() < neighbours.max(8) {
         return Err(Error::TooFewPoints { found: points.len(), needed: neighbours.max(8) });

@@ -31,8 +31,8 @@ use glam::DVec3;
 use hi_surface::ParamRange;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
-use crate::Error;
 use crate::image::{GeometryImage, check_resolution};
+use crate::{Error, NonFiniteInput};
 
 /// The settings of [`spherical_image`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -283,11 +283,11 @@ impl Caster {
             });
         }
         if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinite { what: format!("point {k}") });
+            return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
         }
         let centre = match centre {
             Some(c) if !c.is_finite() => {
-                return Err(Error::NonFinite { what: "the centre".into() });
+                return Err(Error::NonFinite { what: NonFiniteInput::Centre });
             }
             Some(c) => c,
             None if points.is_empty() => {

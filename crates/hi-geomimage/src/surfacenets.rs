@@ -15,7 +15,7 @@
 
 use glam::DVec3;
 
-use crate::Error;
+use crate::{Error, NonFiniteInput};
 
 /// Marks a cell with no vertex.
 const NONE: u32 = u32::MAX;
@@ -105,10 +105,10 @@ pub fn surface_nets(grid: &Grid<'_>) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Erro
         });
     }
     if !origin.is_finite() {
-        return Err(Error::NonFinite { what: "the grid's origin".to_owned() });
+        return Err(Error::NonFinite { what: NonFiniteInput::GridOrigin });
     }
     if let Some(k) = values.iter().position(|v| v.is_infinite()) {
-        return Err(Error::NonFinite { what: format!("grid value {k}") });
+        return Err(Error::NonFinite { what: NonFiniteInput::GridValue(k) });
     }
     let node = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
     let values = &resolve_ambiguous_faces(values, dims);

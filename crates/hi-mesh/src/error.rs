@@ -19,12 +19,19 @@ pub enum Error {
         /// The number of vertices of the mesh.
         n_vertices: usize,
     },
-    /// A face has fewer than three corners or names a vertex twice.
-    DegenerateFace {
+    /// A face has fewer than three corners.
+    TooFewCorners {
         /// Index of the face.
         face: usize,
-        /// What is wrong, in words.
-        reason: String,
+        /// Its number of corners.
+        corners: usize,
+    },
+    /// A face names a vertex twice.
+    RepeatedVertex {
+        /// Index of the face.
+        face: usize,
+        /// The vertex it names twice.
+        vertex: u32,
     },
     /// A vertex position has a NaN or infinite coordinate.
     NonFinitePosition {
@@ -124,8 +131,12 @@ impl fmt::Display for Error {
                 f,
                 "face {face} names vertex {index}, but the mesh has {n_vertices} vertices"
             ),
-            Error::DegenerateFace { face, reason } => {
-                write!(f, "face {face} is degenerate: {reason}")
+            Error::TooFewCorners { face, corners } => write!(
+                f,
+                "face {face} is degenerate: it has {corners} corners, at least 3 are needed"
+            ),
+            Error::RepeatedVertex { face, vertex } => {
+                write!(f, "face {face} is degenerate: it names vertex {vertex} twice")
             }
             Error::NonFinitePosition { vertex } => {
                 write!(f, "vertex {vertex} has a non-finite coordinate (NaN or infinity)")

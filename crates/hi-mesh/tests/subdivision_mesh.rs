@@ -20,8 +20,10 @@ fn validation_names_the_offending_element() {
     assert_eq!(err.to_string(), "face 0 names vertex 7, but the mesh has 5 vertices");
 
     let err = PolyMesh::try_new(p(), &[vec![0, 1, 2], vec![0, 1]]).expect_err("two corners");
-    assert!(matches!(err, MeshError::DegenerateFace { face: 1, .. }), "{err}");
+    assert_eq!(err, MeshError::TooFewCorners { face: 1, corners: 2 });
+    assert_eq!(err.to_string(), "face 1 is degenerate: it has 2 corners, at least 3 are needed");
     let err = PolyMesh::try_new(p(), &[vec![0, 1, 2], vec![2, 3, 2]]).expect_err("repeat");
+    assert_eq!(err, MeshError::RepeatedVertex { face: 1, vertex: 2 });
     assert!(err.to_string().starts_with("face 1 is degenerate: it names vertex 2 twice"), "{err}");
 
     let mut q = p();

@@ -77,7 +77,7 @@ use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::distance::{Distances, distances_to_surface};
 use crate::fit::{Stage, StageKind};
-use crate::{Error, MAX_TEXELS};
+use crate::{Error, MAX_TEXELS, NonFiniteInput};
 use slice::{Frame, MIN_SLICE_POINTS, Slab, axis_of, equal_slabs, order_contour, recursive_slabs};
 
 /// A section more than this fraction of whose points have their nearest neighbour elsewhere
@@ -378,7 +378,7 @@ pub fn fit_sections(points: &[DVec3], options: &SectionOptions) -> Result<Sectio
         return Err(Error::TooFewPoints { found: points.len(), needed: 2 * MIN_SLICE_POINTS });
     }
     if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: format!("point {k}") });
+        return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
     }
     if let Some(k) = options.slices
         && !(2..=MAX_SLICES).contains(&k)
@@ -461,7 +461,9 @@ pub fn fit_given_sections(
     }
     for (i, section) in sections.iter().enumerate() {
         if let Some(k) = section.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinite { what: format!("section {i}, point {k}") });
+            return Err(Error::NonFinite {
+                what: NonFiniteInput::SectionPoint { section: i, point: k },
+            });
         }
     }
     let start = Instant::now();

@@ -86,10 +86,7 @@ impl PolyMesh {
         for (face, f) in faces.iter().enumerate() {
             let f = f.as_ref();
             if f.len() < 3 {
-                return Err(Error::DegenerateFace {
-                    face,
-                    reason: format!("it has {} corners, at least 3 are needed", f.len()),
-                });
+                return Err(Error::TooFewCorners { face, corners: f.len() });
             }
             for (i, &k) in f.iter().enumerate() {
                 if k as usize >= positions.len() {
@@ -100,10 +97,7 @@ impl PolyMesh {
                     });
                 }
                 if f[..i].contains(&k) {
-                    return Err(Error::DegenerateFace {
-                        face,
-                        reason: format!("it names vertex {k} twice"),
-                    });
+                    return Err(Error::RepeatedVertex { face, vertex: k });
                 }
             }
             corners.extend_from_slice(f);
