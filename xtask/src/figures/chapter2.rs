@@ -15,8 +15,8 @@ use hi_curve::{ParamCurve, PlaneCurve, SpaceCurve};
 
 use super::data;
 use super::plot::{
-    BLUE, GREEN, GREY, INK, Legend, Marker, Oblique, PALETTE, Pen, Plot, VERMILION, names, sample,
-    sub,
+    BLUE, GREEN, GREY, INK, Legend, Marker, Oblique, PALETTE, Pen, Plot, VERMILION, clear_of_point,
+    names, sample, sub,
 };
 use super::{Figure, Format, Panel};
 
@@ -300,6 +300,7 @@ fn joins(title: &str, s: f64) -> Result<Vec<u8>> {
     let mut plot = Plot::plane(title);
     let mut all_points = Vec::new();
     let mut all_names = Vec::new();
+    let mut join = None;
     for (segment, (letter, color)) in chain.segments().iter().zip([("p", BLUE), ("s", VERMILION)]) {
         let points = segment.control_points().to_vec();
         plot = plot.polygon(&points, false).curve(
@@ -311,17 +312,23 @@ fn joins(title: &str, s: f64) -> Result<Vec<u8>> {
             if letter == "s" && k == 0 {
                 continue;
             }
+            if letter == "p" && k == 3 {
+                // The join: the curve arrives from the upper left and leaves to the lower right,
+                // so its name goes to the right, where neither is.
+                join = Some(p);
+                continue;
+            }
             all_points.push(p);
-            all_names.push(if letter == "p" && k == 3 {
-                "p₃ = s₀".to_owned()
-            } else {
-                sub(letter, k)
-            });
+            all_names.push(sub(letter, k));
         }
     }
-    plot.points(&all_points, Marker::point(INK), None)
-        .labels(&all_points, all_names, false)
-        .render()
+    let mut plot = plot.labels(&all_points, all_names, false);
+    if let Some(p) = join {
+        let name = "p₃ = s₀";
+        let off = clear_of_point(DVec2::X, name.chars().count());
+        plot = plot.points(&[p], Marker::point(INK), None).note(p, name, (off.x, 0.0), INK);
+    }
+    plot.points(&all_points, Marker::point(INK), None).render()
 }
 
 /// Figure 2.6: de Casteljau's construction at t = 0.3.

@@ -122,14 +122,18 @@ fn cube(title: &str, harmonic: bool) -> Result<Vec<u8>> {
 fn stability(title: &str, nudged: bool) -> Result<Vec<u8>> {
     let original = data::plane(&data::QUADRILATERAL);
     let before = HarmonicCurve::try_new(original.clone())?;
-    if !nudged {
-        return data_plot(title, &original)
-            .curve(closed(|t| before.eval(t)), Pen::solid(BLUE), None)
-            .render();
-    }
     let mut moved = original.clone();
     moved[3].x += data::QUADRILATERAL_NUDGE;
     let after = HarmonicCurve::try_new(moved.clone())?;
+    if !nudged {
+        // At the scale of (b), which holds the moved point and its curve too.
+        let mut extent = moved.clone();
+        extent.extend(closed(|t| after.eval(t)));
+        return data_plot(title, &original)
+            .curve(closed(|t| before.eval(t)), Pen::solid(BLUE), None)
+            .include(&extent)
+            .render();
+    }
     data_plot(title, &moved)
         .curve(closed(|t| before.eval(t)), Pen::dashed(GREY).width(1.5), Some("curve of (a)"))
         .curve(closed(|t| after.eval(t)), Pen::solid(BLUE), Some("x₃ moved by 0.25"))

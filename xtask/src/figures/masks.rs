@@ -25,7 +25,8 @@ use glam::{DVec2, DVec3};
 use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 
 use super::plot::{
-    BLUE, GREEN, GREY, INK, Legend, Marker, ORANGE, Pen, Plot, VERMILION, render_row, sub,
+    BLUE, GREEN, GREY, INK, Legend, Marker, ORANGE, Pen, Plot, VERMILION, clear_of_point,
+    render_row, sub,
 };
 use super::{Figure, Format, Panel};
 
@@ -901,9 +902,20 @@ fn draw_mask(title: &str, mask: Result<Mask>) -> Result<Vec<u8>> {
     let centre = mask.at.iter().sum::<DVec2>() / mask.at.len() as f64;
     for (p, &w) in mask.at.iter().zip(&mask.weights) {
         let text = fraction(w);
-        let half = 4.0 + 3.6 * text.chars().count() as f64;
-        let d = (*p - centre).try_normalize().unwrap_or(DVec2::new(0.7, 0.7));
-        let offset = (d.x * (half + 4.0), d.y * 14.0 + 7.0 * (1.0 - d.y.abs()));
+        // Outward from the stencil's centre (up and right for the centre itself), clear of
+        // the vertex's marker (y up here, down on the screen).
+        let size = mask.at.iter().map(|q| q.distance(centre)).fold(0.0, f64::max);
+        let away = *p - centre;
+        let offset = if away.length() > 1e-6 * size {
+            let d = away.normalize();
+            let off = clear_of_point(DVec2::new(d.x, -d.y), text.chars().count());
+            (off.x, -off.y)
+        } else {
+            // The centre: inside the widest angle between its edges, clear of both.
+            let (d, half_angle) = widest_gap(&mask.edges, *p);
+            let off = d * inside_wedge(d, half_angle, text.chars().count());
+            (off.x, off.y)
+        };
         let color = if w.abs() <= TOL {
             GREY
         } else if w < 0.0 {
@@ -914,6 +926,51 @@ fn draw_mask(title: &str, mask: Result<Mask>) -> Result<Vec<u8>> {
         plot = plot.note(*p, &text, offset, color);
     }
     plot.render()
+}
+
+/// The direction from `p` into the widest angle between the edges of `edges` that end at
+/// `p`, and half that angle (up and right, a right angle, if no edge does): where a label at
+/// `p` crosses no edge.
+fn widest_gap(edges: &[[DVec2; 2]], p: DVec2) -> (DVec2, f64) {
+    let mut angles: Vec<f64> = edges
+        .iter()
+        .filter_map(|[a, b]| {
+            let scale = 1e-9 * (1.0 + a.length() + b.length());
+            if a.distance(p) < scale {
+                Some(*b - p)
+            } else if b.distance(p) < scale {
+                Some(*a - p)
+            } else {
+                None
+            }
+        })
+        .map(|d| d.y.atan2(d.x))
+        .collect();
+    angles.sort_by(f64::total_cmp);
+    let Some(&first) = angles.first() else { return (DVec2::new(0.6, 0.8), 0.5 * PI) };
+    let mut best = (0.0, 0.0);
+    for (k, &a) in angles.iter().enumerate() {
+        let next = angles.get(k + 1).copied().unwrap_or(first + 2.0 * PI);
+        if next - a > best.0 {
+            best = (next - a, a + 0.5 * (next - a));
+        }
+    }
+    (DVec2::from_angle(best.1), 0.5 * best.0)
+}
+
+/// How far in pixels along `dir` (y up) a label of `chars` characters goes so that its box
+/// (as in [`clear_of_point`]) lies inside the wedge of half-angle `half_angle` about `dir`.
+fn inside_wedge(dir: DVec2, half_angle: f64, chars: usize) -> f64 {
+    let (half_w, half_h) = (3.75 * chars as f64 + 2.0, 8.0);
+    let tan = half_angle.min(0.49 * PI).tan();
+    let fits = |s: f64| {
+        [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].iter().all(|&(a, b)| {
+            let corner = dir * s + DVec2::new(a * half_w, b * half_h);
+            corner.dot(dir) > 0.0 && corner.perp_dot(dir).abs() <= tan * corner.dot(dir)
+        })
+    };
+    let start = clear_of_point(dir, chars).length();
+    (0..200).map(|k| start + 0.5 * f64::from(k)).find(|&s| fits(s)).unwrap_or(start + 100.0)
 }
 
 /// Figure 4.8: the notation of Loop subdivision, before and after one step on a fan of n = 6
@@ -962,8 +1019,11 @@ fn notation(title: &str) -> Result<Vec<u8>> {
         let e = step.joined_to(&[0, 1 + k])?;
         let p = new[e];
         named.push(p);
-        let d = p.normalize_or_zero();
-        after = after.note(p, &ring_name("x", k, "ᵏ⁺¹"), (28.0 * d.x, 10.0 + 8.0 * d.y), VERMILION);
+        // Between the spoke through the point and the next (the spoke itself runs on outward).
+        let d = DVec2::from_angle(PI / f64::from(N)).rotate(p.normalize_or_zero());
+        let name = ring_name("x", k, "ᵏ⁺¹");
+        let off = clear_of_point(DVec2::new(d.x, -d.y), name.chars().count());
+        after = after.note(p, &name, (off.x, -off.y), VERMILION);
     }
     let others: Vec<DVec2> =
         new.iter().copied().filter(|p| !named.iter().any(|q| q.distance(*p) < 1e-12)).collect();

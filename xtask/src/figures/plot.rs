@@ -16,11 +16,13 @@
 use anyhow::{Result, bail};
 use glam::{DVec2, DVec3};
 use plotters::coord::Shift;
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged, ValueFormatter};
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-/// Drawing units per SVG pixel.
-const SCALE: u32 = 2;
+/// Drawing units per SVG pixel: coordinates are placed to 0.01 px.
+const SCALE: u32 = 100;
 
 /// Size in pixels of a function plot (wide: t runs along x).
 const FUNCTION_SIZE: (u32, u32) = (560, 360);
@@ -186,14 +188,50 @@ enum Kind {
 /// One thing drawn on a plot.
 #[derive(Clone, Debug)]
 enum Mark {
-    Line { points: Vec<DVec2>, pen: Pen, label: Option<String>, layer: u8 },
-    Points { points: Vec<DVec2>, marker: Marker, label: Option<String> },
-    Labels { points: Vec<DVec2>, names: Vec<String>, closed: bool },
-    Guide { vertical: bool, at: f64 },
-    Note { at: DVec2, text: String, offset: (f64, f64), color: RGBColor },
+    Line {
+        points: Vec<DVec2>,
+        pen: Pen,
+        label: Option<String>,
+        layer: u8,
+    },
+    Points {
+        points: Vec<DVec2>,
+        marker: Marker,
+        label: Option<String>,
+    },
+    Labels {
+        points: Vec<DVec2>,
+        names: Vec<String>,
+        closed: bool,
+    },
+    Guide {
+        vertical: bool,
+        at: f64,
+    },
+    Note {
+        at: DVec2,
+        text: String,
+        offset: (f64, f64),
+        color: RGBColor,
+    },
+    /// Points the ranges hold but nothing draws (the extent of a compared panel).
+    Extent {
+        points: Vec<DVec2>,
+    },
 }
 
 impl Mark {
+    /// The points the ranges are fitted to.
+    fn fitted_points(&self) -> &[DVec2] {
+        match self {
+            Mark::Line { points, .. }
+            | Mark::Points { points, .. }
+            | Mark::Labels { points, .. }
+            | Mark::Extent { points } => points,
+            Mark::Guide { .. } | Mark::Note { .. } => &[],
+        }
+    }
+
     /// Marks are drawn in layers, whatever order they were added in: guides and polygons,
     /// then curves, then markers, then text.
     fn layer(&self) -> u8 {
@@ -201,7 +239,7 @@ impl Mark {
             Mark::Guide { .. } => 0,
             Mark::Line { layer, .. } => *layer,
             Mark::Points { .. } => 2,
-            Mark::Labels { .. } | Mark::Note { .. } => 3,
+            Mark::Labels { .. } | Mark::Note { .. } | Mark::Extent { .. } => 3,
         }
     }
 }
@@ -215,6 +253,9 @@ pub(crate) struct Plot {
     y_range: Option<(f64, f64)>,
     marks: Vec<Mark>,
     legend: Option<Legend>,
+    /// Tick positions on the y axis and their labels, instead of plotters' own (an axis whose
+    /// values are transformed, such as a symmetric log).
+    y_ticks: Option<Vec<(f64, String)>>,
 }
 
 impl Plot {
@@ -226,6 +267,7 @@ impl Plot {
             y_range: None,
             marks: Vec::new(),
             legend: None,
+            y_ticks: None,
         }
     }
 
@@ -254,6 +296,31 @@ impl Plot {
     pub(crate) fn y_range(mut self, lo: f64, hi: f64) -> Self {
         self.y_range = Some((lo, hi));
         self
+    }
+
+    /// Ticks at these y positions with these labels instead of the automatic ones.
+    pub(crate) fn y_ticks(mut self, ticks: Vec<(f64, String)>) -> Self {
+        self.y_ticks = Some(ticks);
+        self
+    }
+
+    /// Makes the fitted ranges hold `points` too, without drawing them: two panels that are
+    /// compared get the same extent.
+    pub(crate) fn include(mut self, points: &[DVec2]) -> Self {
+        self.marks.push(Mark::Extent { points: points.to_vec() });
+        self
+    }
+
+    /// The corners of the box of every point the plot's ranges are fitted to (none for a plot
+    /// without data).
+    pub(crate) fn extent(&self) -> Vec<DVec2> {
+        let mut lo = DVec2::splat(f64::INFINITY);
+        let mut hi = DVec2::splat(f64::NEG_INFINITY);
+        for p in self.marks.iter().flat_map(Mark::fitted_points) {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        if lo.is_finite() && hi.is_finite() { vec![lo, hi] } else { Vec::new() }
     }
 
     /// Shows a legend of the labelled marks at `position`.
@@ -351,7 +418,7 @@ impl Plot {
             let root = SVGBackend::with_string(&mut svg, (size.0 * SCALE, size.1 * SCALE))
                 .into_drawing_area();
             root.fill(&WHITE)?;
-            let area = draw_title(&root, &self.title)?;
+            let area = draw_panel_letter(&root, &self.title)?;
             self.draw_chart(&area)?;
             root.present()?;
         }
@@ -373,11 +440,38 @@ impl Plot {
         let plot_w = w.saturating_sub(2 * MARGIN * SCALE + y_area * SCALE);
         let plot_h = h.saturating_sub(2 * MARGIN * SCALE + x_area * SCALE);
         let (xr, yr) = self.ranges(f64::from(plot_w), f64::from(plot_h))?;
-        let mut chart = ChartBuilder::on(area)
+        let mut builder = ChartBuilder::on(area);
+        builder
             .margin(MARGIN * SCALE)
             .x_label_area_size(x_area * SCALE)
-            .y_label_area_size(y_area * SCALE)
-            .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)?;
+            .y_label_area_size(y_area * SCALE);
+        match &self.y_ticks {
+            None => {
+                let chart = builder.build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)?;
+                self.draw_marks(chart, (xr, yr), (plot_w, plot_h), |v| tick_label(*v))
+            }
+            Some(ticks) => {
+                let keys = ticks.iter().map(|t| t.0).collect();
+                let y = KeyedAxis { inner: (yr.0..yr.1).into(), keys };
+                let chart = builder.build_cartesian_2d(xr.0..xr.1, y)?;
+                let label = |v: &f64| {
+                    ticks.iter().find(|t| t.0 == *v).map_or_else(|| tick_label(*v), |t| t.1.clone())
+                };
+                self.draw_marks(chart, (xr, yr), (plot_w, plot_h), label)
+            }
+        }
+    }
+
+    /// Draws the axes, the marks and the legend on `chart`, whose y coordinate is plotters'
+    /// own or one with given key points (labelled by `y_label`).
+    fn draw_marks<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
+        &self,
+        mut chart: ChartContext<'_, SVGBackend<'_>, Cartesian2d<RangedCoordf64, Y>>,
+        (xr, yr): ((f64, f64), (f64, f64)),
+        (plot_w, plot_h): (u32, u32),
+        y_label: impl Fn(&f64) -> String,
+    ) -> Result<()> {
+        let axes = !matches!(self.kind, Kind::Projection);
         if chart.plotting_area().dim_in_pixel() != (plot_w, plot_h) {
             bail!(
                 "plot area is {:?}, expected {:?}",
@@ -396,6 +490,7 @@ impl Plot {
             let tick_font = ("sans-serif", font(12.0)).into_font().color(&AXIS);
             let desc_font = ("serif", font(15.0)).into_font().style(FontStyle::Italic).color(&INK);
             let formatter = |v: &f64| tick_label(*v);
+            let y_formatter = |v: &f64| y_label(v);
             chart
                 .configure_mesh()
                 .x_desc(x_desc)
@@ -409,7 +504,7 @@ impl Plot {
                 .label_style(tick_font)
                 .axis_desc_style(desc_font)
                 .x_label_formatter(&formatter)
-                .y_label_formatter(&formatter)
+                .y_label_formatter(&y_formatter)
                 .draw()?;
         }
 
@@ -417,6 +512,7 @@ impl Plot {
         marks.sort_by_key(|m| m.layer());
         for mark in marks {
             match mark {
+                Mark::Extent { .. } => {}
                 Mark::Guide { vertical, at } => {
                     let line = if *vertical {
                         vec![(*at, yr.0), (*at, yr.1)]
@@ -456,7 +552,7 @@ impl Plot {
                         TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
                             .color(&INK)
                             .pos(Pos::new(HPos::Center, VPos::Center));
-                    let offsets = label_offsets(points, *closed, unit);
+                    let offsets = label_offsets(points, names, *closed, unit);
                     let texts = points.iter().zip(names).zip(offsets).map(|((p, name), off)| {
                         EmptyElement::at((p.x, p.y))
                             + Text::new(name.clone(), (off.0, off.1), style.clone())
@@ -605,15 +701,8 @@ impl Plot {
         let mut hi = DVec2::splat(f64::NEG_INFINITY);
         let mut labelled = false;
         for mark in &self.marks {
-            let points = match mark {
-                Mark::Line { points, .. } | Mark::Points { points, .. } => points,
-                Mark::Labels { points, .. } => {
-                    labelled = true;
-                    points
-                }
-                Mark::Guide { .. } | Mark::Note { .. } => continue,
-            };
-            for p in points {
+            labelled |= matches!(mark, Mark::Labels { .. });
+            for p in mark.fitted_points() {
                 lo = lo.min(*p);
                 hi = hi.max(*p);
             }
@@ -686,8 +775,31 @@ impl Plot {
             }
             Mark::Labels { points, .. } => !points.iter().any(|p| near(p, f64::from(px(24.0)))),
             Mark::Note { at, .. } => !near(at, f64::from(px(16.0))),
-            Mark::Guide { .. } => true,
+            Mark::Guide { .. } | Mark::Extent { .. } => true,
         })
+    }
+}
+
+/// A linear axis whose ticks are given rather than chosen by plotters.
+struct KeyedAxis {
+    inner: RangedCoordf64,
+    keys: Vec<f64>,
+}
+
+impl Ranged for KeyedAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, _hint: Hint) -> Vec<f64> {
+        self.keys.clone()
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
     }
 }
 
@@ -708,7 +820,7 @@ pub(crate) fn render_row(title: &str, plots: &[&Plot]) -> Result<Vec<u8>> {
         let root =
             SVGBackend::with_string(&mut svg, (size.0 * SCALE, size.1 * SCALE)).into_drawing_area();
         root.fill(&WHITE)?;
-        let mut rest = draw_title(&root, title)?;
+        let mut rest = draw_panel_letter(&root, title)?;
         for (plot, own) in plots.iter().zip(&sizes) {
             let (cell, right) = rest.split_horizontally(own.0 * SCALE);
             let chart = draw_title(&cell, &plot.title)?;
@@ -731,6 +843,35 @@ fn unscale(svg: String, size: (u32, u32)) -> Result<Vec<u8>> {
     }
     let svg = svg.replacen(&header, &format!("<svg width=\"{}\" height=\"{}\"", size.0, size.1), 1);
     Ok(svg.into_bytes())
+}
+
+/// The panel letter of a figure's title: "(b)" of "Figure 2.5 (b) G1 with s = 0.6"; none for
+/// a figure of one panel.
+fn panel_letter(title: &str) -> Option<&str> {
+    let mut words = title.strip_prefix("Figure ")?.split(' ');
+    words.next()?;
+    let letter = words.next()?;
+    let inner = letter.strip_prefix('(')?.strip_suffix(')')?;
+    (!inner.is_empty() && inner.chars().all(|c| c.is_ascii_lowercase())).then_some(letter)
+}
+
+/// The figure's panel letter, bold at the top left of `root` (the title itself is the gallery's
+/// caption), and the area below it; all of `root` for a figure of one panel.
+fn draw_panel_letter<'a>(
+    root: &DrawingArea<SVGBackend<'a>, Shift>,
+    title: &str,
+) -> Result<DrawingArea<SVGBackend<'a>, Shift>> {
+    const SIZE: f64 = 16.0;
+    let Some(letter) = panel_letter(title) else {
+        return Ok(root.clone());
+    };
+    let (top, rest) = root.split_vertically(px(8.0 + 1.3 * SIZE));
+    let style = TextStyle::from(("sans-serif", font(SIZE), FontStyle::Bold).into_font())
+        .color(&INK)
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    let at = (px(10.0) as i32, px(4.0 + 0.65 * SIZE) as i32);
+    top.draw(&Text::new(letter.to_owned(), at, style))?;
+    Ok(rest)
 }
 
 /// Writes `title` centred at the top of `root`, wrapped onto more lines if it is too wide,
@@ -840,7 +981,7 @@ fn dash(points: &[DVec2], on: f64, off: f64, unit: DVec2) -> Vec<Vec<DVec2>> {
 }
 
 /// Offsets in drawing units (y down) of the labels of `points`: away from both neighbours.
-fn label_offsets(points: &[DVec2], closed: bool, unit: DVec2) -> Vec<(i32, i32)> {
+fn label_offsets(points: &[DVec2], names: &[String], closed: bool, unit: DVec2) -> Vec<(i32, i32)> {
     let n = points.len();
     let screen = |p: DVec2| DVec2::new(p.x / unit.x, -p.y / unit.y);
     let centroid = points.iter().copied().sum::<DVec2>() / n.max(1) as f64;
@@ -876,11 +1017,22 @@ fn label_offsets(points: &[DVec2], closed: bool, unit: DVec2) -> Vec<(i32, i32)>
                     dir = DVec2::new(0.0, -1.0);
                 }
             }
-            // Text is wider than tall: a slightly wider offset sideways.
-            let off = dir * DVec2::new(f64::from(px(13.0)), f64::from(px(11.0)));
+            let chars = names.get(i).map_or(1, |s| s.chars().count());
+            let off = clear_of_point(dir, chars) * f64::from(SCALE);
             (off.x.round() as i32, off.y.round() as i32)
         })
         .collect()
+}
+
+/// The offset in pixels, along the unit direction `dir` (y down), that puts a label of
+/// `chars` characters of 15-pixel italic text just clear of a data point's marker: its box
+/// (about 7.5 pixels a character by 16) and a disc of 5 pixels about the point do not meet.
+pub(crate) fn clear_of_point(dir: DVec2, chars: usize) -> DVec2 {
+    const CLEAR: f64 = 5.0;
+    let (half_w, half_h) = (3.75 * chars as f64 + 2.0, 8.0);
+    let along_x = if dir.x.abs() > 1e-9 { (half_w + CLEAR) / dir.x.abs() } else { f64::INFINITY };
+    let along_y = if dir.y.abs() > 1e-9 { (half_h + CLEAR) / dir.y.abs() } else { f64::INFINITY };
+    dir * along_x.min(along_y)
 }
 
 #[cfg(test)]
@@ -892,6 +1044,26 @@ mod tests {
         assert_eq!(sub("x", 0), "x₀");
         assert_eq!(sub("p", 12), "p₁₂");
         assert_eq!(names("y", 2), vec!["y₀".to_owned(), "y₁".to_owned()]);
+    }
+
+    #[test]
+    fn panel_letters_come_from_the_title() {
+        assert_eq!(panel_letter("Figure 2.5 (b) G1 with s = 0.6"), Some("(b)"));
+        assert_eq!(panel_letter("Figure 3.17 (a) Harmonic interpolation"), Some("(a)"));
+        assert_eq!(panel_letter("Figure 1.2 A cubic through four points"), None);
+        assert_eq!(panel_letter("Figure 4.8 (σ) notation"), None);
+        assert_eq!(panel_letter("test"), None);
+    }
+
+    #[test]
+    fn labels_clear_their_point() {
+        // Straight up: the half height and the gap; sideways: the half width and the gap.
+        assert_eq!(clear_of_point(DVec2::new(0.0, -1.0), 2), DVec2::new(0.0, -13.0));
+        assert_eq!(clear_of_point(DVec2::new(1.0, 0.0), 2), DVec2::new(14.5, 0.0));
+        // Diagonally, whichever side clears first.
+        let d = DVec2::new(1.0, 1.0).normalize();
+        let off = clear_of_point(d, 7);
+        assert!((off.y - 13.0).abs() < 1e-9 && off.x < 3.75 * 7.0 + 7.0, "{off}");
     }
 
     #[test]
@@ -924,10 +1096,11 @@ mod tests {
             .expect("renders");
         let svg = String::from_utf8(svg).expect("utf-8");
         assert!(
-            svg.starts_with("<svg width=\"480\" height=\"420\" viewBox=\"0 0 960 840\""),
+            svg.starts_with("<svg width=\"480\" height=\"420\" viewBox=\"0 0 48000 42000\""),
             "{}",
             &svg[..80]
         );
+        assert!(!svg.contains(">test<"), "the title is the gallery's caption, not in the picture");
         assert!(svg.contains("x₃"), "labels are written");
     }
 }

@@ -105,14 +105,16 @@ const STAND_IN_OCTAGON: &str = "stand-in: the octagon.";
 
 const METAPOST_DRAWN: &str = "(a) METAPOST's closed curve through the points (`HobbyCurve`, tension 1, \
                               matching `mpost` to 1e-9), its Bézier control polygon faint as in the thesis; \
-                              (b) the harmonic curve. The data polygon is dashed.";
+                              (b) the harmonic curve. The data polygon is dashed; both panels at one scale.";
 const BSPLINE_DRAWN: &str = "(a) periodic cubic B-spline interpolation with uniform parameters (`InterpolatingSpline::try_periodic`, \
                              the cyclic system of §2.11, matching scipy to 1e-9), its B-spline control polygon faint; \
-                             (b) the harmonic curve. The data polygon is dashed.";
+                             (b) the harmonic curve. The data polygon is dashed; both panels at one scale.";
 const CURVATURE_DRAWN: &str = "Each panel: the curve, and its signed curvature κ(t) over one period (positive where it turns left), \
                                with the minimum and maximum written on the plot; (a) harmonic, (b) periodic cubic B-spline \
                                interpolation (uniform parameters). Unlike the thesis the t axis is marked: both curves pass \
-                               through xₖ at t = k/n (faint guides). A ring marks where |κ| is largest.";
+                               through xₖ at t = k/n (faint guides). A ring marks where |κ| is largest. Both panels are drawn at one scale; \
+                               where |κ| spans decades (a near-cusp) the κ axis is a symmetric logarithm, \
+                               sign κ · log₁₀(1 + |κ|/c) with c the median |κ|.";
 
 /// The figures of this module.
 pub(crate) const FIGURES: &[Figure] = &[
@@ -127,12 +129,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) METAPOST",
-                draw: |t| side(t, Polygon::Circle, Method::Metapost),
+                draw: |t| side(t, Polygon::Circle, Method::Metapost, Method::Harmonic),
             },
             Panel {
                 suffix: "b",
                 title: "(b) Harmonic interpolation",
-                draw: |t| side(t, Polygon::Circle, Method::Harmonic),
+                draw: |t| side(t, Polygon::Circle, Method::Harmonic, Method::Metapost),
             },
         ],
     },
@@ -146,12 +148,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) B-spline",
-                draw: |t| side(t, Polygon::Circle, Method::BSpline),
+                draw: |t| side(t, Polygon::Circle, Method::BSpline, Method::Harmonic),
             },
             Panel {
                 suffix: "b",
                 title: "(b) Harmonic interpolation",
-                draw: |t| side(t, Polygon::Circle, Method::Harmonic),
+                draw: |t| side(t, Polygon::Circle, Method::Harmonic, Method::BSpline),
             },
         ],
     },
@@ -165,12 +167,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) METAPOST",
-                draw: |t| side(t, Polygon::Seven, Method::Metapost),
+                draw: |t| side(t, Polygon::Seven, Method::Metapost, Method::Harmonic),
             },
             Panel {
                 suffix: "b",
                 title: "(b) Harmonic interpolation",
-                draw: |t| side(t, Polygon::Seven, Method::Harmonic),
+                draw: |t| side(t, Polygon::Seven, Method::Harmonic, Method::Metapost),
             },
         ],
     },
@@ -184,12 +186,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) B-spline",
-                draw: |t| side(t, Polygon::Seven, Method::BSpline),
+                draw: |t| side(t, Polygon::Seven, Method::BSpline, Method::Harmonic),
             },
             Panel {
                 suffix: "b",
                 title: "(b) Harmonic interpolation",
-                draw: |t| side(t, Polygon::Seven, Method::Harmonic),
+                draw: |t| side(t, Polygon::Seven, Method::Harmonic, Method::BSpline),
             },
         ],
     },
@@ -203,12 +205,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) METAPOST",
-                draw: |t| side(t, Polygon::Five, Method::Metapost),
+                draw: |t| side(t, Polygon::Five, Method::Metapost, Method::Harmonic),
             },
             Panel {
                 suffix: "b",
                 title: "(b) Harmonic interpolation",
-                draw: |t| side(t, Polygon::Five, Method::Harmonic),
+                draw: |t| side(t, Polygon::Five, Method::Harmonic, Method::Metapost),
             },
         ],
     },
@@ -222,12 +224,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) B-spline",
-                draw: |t| side(t, Polygon::Five, Method::BSpline),
+                draw: |t| side(t, Polygon::Five, Method::BSpline, Method::Harmonic),
             },
             Panel {
                 suffix: "b",
                 title: "(b) Harmonic interpolation",
-                draw: |t| side(t, Polygon::Five, Method::Harmonic),
+                draw: |t| side(t, Polygon::Five, Method::Harmonic, Method::BSpline),
             },
         ],
     },
@@ -241,12 +243,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) Harmonic interpolation",
-                draw: |t| curvature(t, Polygon::Circle, Method::Harmonic),
+                draw: |t| curvature(t, Polygon::Circle, Method::Harmonic, Method::BSpline),
             },
             Panel {
                 suffix: "b",
                 title: "(b) B-spline",
-                draw: |t| curvature(t, Polygon::Circle, Method::BSpline),
+                draw: |t| curvature(t, Polygon::Circle, Method::BSpline, Method::Harmonic),
             },
         ],
     },
@@ -260,12 +262,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) Harmonic interpolation",
-                draw: |t| curvature(t, Polygon::Seven, Method::Harmonic),
+                draw: |t| curvature(t, Polygon::Seven, Method::Harmonic, Method::BSpline),
             },
             Panel {
                 suffix: "b",
                 title: "(b) B-spline",
-                draw: |t| curvature(t, Polygon::Seven, Method::BSpline),
+                draw: |t| curvature(t, Polygon::Seven, Method::BSpline, Method::Harmonic),
             },
         ],
     },
@@ -279,12 +281,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) Harmonic interpolation",
-                draw: |t| curvature(t, Polygon::Five, Method::Harmonic),
+                draw: |t| curvature(t, Polygon::Five, Method::Harmonic, Method::BSpline),
             },
             Panel {
                 suffix: "b",
                 title: "(b) B-spline",
-                draw: |t| curvature(t, Polygon::Five, Method::BSpline),
+                draw: |t| curvature(t, Polygon::Five, Method::BSpline, Method::Harmonic),
             },
         ],
     },
@@ -298,12 +300,12 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) Harmonic interpolation",
-                draw: |t| curvature(t, Polygon::Eight, Method::Harmonic),
+                draw: |t| curvature(t, Polygon::Eight, Method::Harmonic, Method::BSpline),
             },
             Panel {
                 suffix: "b",
                 title: "(b) B-spline",
-                draw: |t| curvature(t, Polygon::Eight, Method::BSpline),
+                draw: |t| curvature(t, Polygon::Eight, Method::BSpline, Method::Harmonic),
             },
         ],
     },
@@ -372,26 +374,101 @@ fn curve_plot(title: &str, polygon: Polygon, method: Method) -> Result<Plot> {
     Ok(plot.curve(closed(|t| curve.eval(t)), pen(method), None))
 }
 
-/// Figures 3.7–3.12: one panel, `method`'s curve through `polygon`.
-fn side(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
-    curve_plot(title, polygon, method)?.render()
+/// Figures 3.7–3.12: one panel, `method`'s curve through `polygon`, at the scale of the
+/// figure's other panel (`partner`'s curve) so that the two compare.
+fn side(title: &str, polygon: Polygon, method: Method, partner: Method) -> Result<Vec<u8>> {
+    let other = curve_plot("", polygon, partner)?;
+    curve_plot(title, polygon, method)?.include(&other.extent()).render()
 }
 
-/// Figures 3.15–3.18: `method`'s curve through `polygon` beside its curvature plot, the
-/// minimum and maximum of κ written on the plot.
-fn curvature(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
-    let points = polygon.points();
-    let curve = method.curve(&points)?;
+/// Samples (t, κ(t)) of a curvature plot, `None` where the curve is singular.
+type KappaGraph = Vec<(f64, Option<f64>)>;
+
+/// The signed curvature of `method`'s curve through `polygon` over one period, closed (the
+/// first sample again at t = 1; `None` where it is singular), and its least and largest values.
+fn kappa_graph(polygon: Polygon, method: Method) -> Result<(KappaGraph, f64, f64)> {
+    let curve = method.curve(&polygon.points())?;
     let samples = curvature_plot(curve.as_ref(), CURVATURE_SAMPLES)?;
-    // The plot is closed: the first sample again at t = 1.
     let mut graph: Vec<(f64, Option<f64>)> = samples.iter().map(|s| (s.t, s.curvature)).collect();
     graph.push((1.0, samples[0].curvature));
-    let kappas: Vec<f64> = graph.iter().filter_map(|&(_, k)| k).collect();
-    let lo = kappas.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = kappas.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let kappas = graph.iter().filter_map(|&(_, k)| k);
+    let lo = kappas.clone().fold(f64::INFINITY, f64::min);
+    let hi = kappas.fold(f64::NEG_INFINITY, f64::max);
     if !(lo.is_finite() && hi.is_finite()) {
         anyhow::bail!("{} through the {}: no curvature", method.name(), polygon.name());
     }
+    Ok((graph, lo, hi))
+}
+
+/// The κ axis of a curvature figure: linear, or a symmetric logarithm where the values span
+/// decades (a near-cusp), y = sign κ · log₁₀(1 + |κ|/c) with c the median |κ|.
+#[derive(Clone, Copy, Debug)]
+enum KappaAxis {
+    Linear,
+    SymLog(f64),
+}
+
+impl KappaAxis {
+    /// The axis for curvatures `values` (both panels'): a symmetric log when the largest |κ|
+    /// is over 100 times the median.
+    fn for_values(values: &[f64]) -> Self {
+        let mut abs: Vec<f64> = values.iter().map(|k| k.abs()).collect();
+        abs.sort_by(f64::total_cmp);
+        let median = abs.get(abs.len() / 2).copied().unwrap_or(0.0);
+        let max = abs.last().copied().unwrap_or(0.0);
+        if median > 0.0 && max > 100.0 * median { Self::SymLog(median) } else { Self::Linear }
+    }
+
+    /// The plotted height of κ.
+    fn map(self, k: f64) -> f64 {
+        match self {
+            Self::Linear => k,
+            Self::SymLog(c) => k.signum() * (k.abs() / c).ln_1p() / std::f64::consts::LN_10,
+        }
+    }
+
+    /// For the symmetric log: ticks at 0 and ±10ʲ in `(lo, hi)` (κ values), labelled.
+    fn ticks(self, lo: f64, hi: f64) -> Option<Vec<(f64, String)>> {
+        let Self::SymLog(c) = self else { return None };
+        let mut ticks = vec![(0.0, "0".to_owned())];
+        // Powers of ten from c up: below c the axis is nearly linear and they would crowd 0.
+        let first = c.log10().ceil() as i32;
+        for j in first..=hi.abs().max(lo.abs()).log10().ceil() as i32 {
+            let v = 10f64.powi(j);
+            let label =
+                if (-2..=2).contains(&j) { format!("{v}") } else { format!("10{}", sup(j)) };
+            if v <= hi {
+                ticks.push((self.map(v), label.clone()));
+            }
+            if -v >= lo {
+                ticks.push((self.map(-v), format!("−{label}")));
+            }
+        }
+        ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Some(ticks)
+    }
+}
+
+/// `j` in Unicode superscript digits.
+fn sup(j: i32) -> String {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut s = if j < 0 { "⁻".to_owned() } else { String::new() };
+    for d in j.unsigned_abs().to_string().bytes() {
+        s.push(DIGITS[usize::from(d - b'0')]);
+    }
+    s
+}
+
+/// Figures 3.15–3.18: `method`'s curve through `polygon` beside its curvature plot, the
+/// minimum and maximum of κ written on the plot; both drawn at the scale of the figure's other
+/// panel (`partner`'s), the κ axis a symmetric logarithm where the values span decades.
+fn curvature(title: &str, polygon: Polygon, method: Method, partner: Method) -> Result<Vec<u8>> {
+    let points = polygon.points();
+    let curve = method.curve(&points)?;
+    let (graph, lo, hi) = kappa_graph(polygon, method)?;
+    let (other_graph, other_lo, other_hi) = kappa_graph(polygon, partner)?;
+    let both: Vec<f64> = graph.iter().chain(&other_graph).filter_map(|&(_, k)| k).collect();
+    let axis = KappaAxis::for_values(&both);
     // The largest |κ|, marked on both plots.
     let peak = graph.iter().filter_map(|&(t, k)| k.map(|k| (t, k))).fold(
         (0.0, 0.0),
@@ -399,17 +476,26 @@ fn curvature(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
     );
 
     let constant = hi - lo <= 1e-9 * hi.abs().max(1.0);
-    let mut shape = curve_plot("curve", polygon, method)?;
+    let partner_shape = curve_plot("curve", polygon, partner)?;
+    let mut shape = curve_plot("curve", polygon, method)?.include(&partner_shape.extent());
     if !constant {
         shape = shape.points(&[curve.eval(peak.0)], Marker::ring(INK), None);
     }
 
-    let (y0, y1) = (lo.min(0.0), hi.max(0.0));
-    let pad = 0.1 * (y1 - y0).max(1e-3 * hi.abs().max(1.0));
-    let mut plot = Plot::function("signed curvature κ(t)", "t", "κ")
-        .x_range(0.0, 1.0)
-        .y_range(y0 - pad, y1 + pad)
-        .hguide(0.0);
+    // One κ range for both panels.
+    let (k0, k1) = (lo.min(other_lo).min(0.0), hi.max(other_hi).max(0.0));
+    let (y0, y1) = (axis.map(k0), axis.map(k1));
+    let pad = 0.1 * (y1 - y0).max(1e-3 * y1.abs().max(y0.abs()).max(1.0));
+    let heading = if matches!(axis, KappaAxis::SymLog(_)) {
+        "signed curvature κ(t), symmetric log scale"
+    } else {
+        "signed curvature κ(t)"
+    };
+    let mut plot =
+        Plot::function(heading, "t", "κ").x_range(0.0, 1.0).y_range(y0 - pad, y1 + pad).hguide(0.0);
+    if let Some(ticks) = axis.ticks(k0, k1) {
+        plot = plot.y_ticks(ticks);
+    }
     let n = points.len();
     for k in 1..n {
         plot = plot.vguide(k as f64 / n as f64);
@@ -418,7 +504,7 @@ fn curvature(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
     let mut run = Vec::new();
     for &(t, k) in &graph {
         if let Some(k) = k {
-            run.push(DVec2::new(t, k));
+            run.push(DVec2::new(t, axis.map(k)));
         } else if !run.is_empty() {
             plot = plot.curve(std::mem::take(&mut run), pen(method), None);
         }
@@ -427,31 +513,30 @@ fn curvature(title: &str, polygon: Polygon, method: Method) -> Result<Vec<u8>> {
         plot = plot.curve(run, pen(method), None);
     }
     if !constant {
-        plot = plot.points(&[DVec2::new(peak.0, peak.1)], Marker::ring(INK), None);
+        plot = plot.points(&[DVec2::new(peak.0, axis.map(peak.1))], Marker::ring(INK), None);
     }
     // The extremes, written at the right end of their guide lines (the left end if the
     // curve is there).
     let at_x = |value: f64| {
-        let near_right = graph
-            .iter()
-            .rev()
-            .take(CURVATURE_SAMPLES / 8)
-            .any(|&(_, k)| k.is_some_and(|k| (k - value).abs() < 0.08 * (y1 - y0 + 2.0 * pad)));
+        let near_right = graph.iter().rev().take(CURVATURE_SAMPLES / 8).any(|&(_, k)| {
+            k.is_some_and(|k| (axis.map(k) - value).abs() < 0.08 * (y1 - y0 + 2.0 * pad))
+        });
         if near_right { 0.1 } else { 0.9 }
     };
+    let (hi_y, lo_y) = (axis.map(hi), axis.map(lo));
     if constant {
-        plot = plot.hguide(hi).note(
-            DVec2::new(0.5, hi),
+        plot = plot.hguide(hi_y).note(
+            DVec2::new(0.5, hi_y),
             &format!("κ = {} (constant)", fixed(hi)),
             (0.0, 12.0),
             INK,
         );
     } else {
         plot = plot
-            .hguide(hi)
-            .hguide(lo)
-            .note(DVec2::new(at_x(hi), hi), &format!("max {}", fixed(hi)), (0.0, 11.0), INK)
-            .note(DVec2::new(at_x(lo), lo), &format!("min {}", fixed(lo)), (0.0, -11.0), INK);
+            .hguide(hi_y)
+            .hguide(lo_y)
+            .note(DVec2::new(at_x(hi_y), hi_y), &format!("max {}", fixed(hi)), (0.0, 11.0), INK)
+            .note(DVec2::new(at_x(lo_y), lo_y), &format!("min {}", fixed(lo)), (0.0, -11.0), INK);
     }
     render_row(title, &[&shape, &plot])
 }
