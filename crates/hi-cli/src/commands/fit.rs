@@ -23,7 +23,7 @@ use crate::commands::fit_sections::DistancesOut;
 use crate::commands::surface_bezier;
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 
 /// Above this fraction of rays meeting the scan more than once, `hi fit` warns.
 const NON_STAR_WARNING: f64 = 0.05;
@@ -57,11 +57,18 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         }
         ParamName::Sections => return super::fit_sections::run(args),
     };
+    if args.slices.is_some() {
+        return Err(Failure::input("--slices applies to --param sections only"));
+    }
     let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let as_grid = ext.as_deref() == Some("json");
     if !as_grid {
         MeshFormat::from_path(&args.output)
             .map_err(|e| Failure::input(format!("-o: {e} (or .json for the surface's grid)")))?;
+    }
+    check_writable(&args.output, "-o")?;
+    if let Some(report) = &args.report {
+        check_writable(report, "--report")?;
     }
     let centre = match &args.centre {
         None => None,

@@ -20,7 +20,7 @@ use serde::Serialize;
 use crate::cli::{AxisName, FitArgs, OrderName};
 use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, stderr_line};
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 use hi_surface::{ParamRange, ParamWindow};
 
 /// Fits by algorithm 1, writes the surface and returns the summary (also written to
@@ -38,10 +38,16 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         MeshFormat::from_path(&args.output)
             .map_err(|e| Failure::input(format!("-o: {e} (or .json for the surface's grid)")))?;
     }
+    check_writable(&args.output, "-o")?;
+    if let Some(report) = &args.report {
+        check_writable(report, "--report")?;
+    }
     for (given, name) in [
         (args.smooth.is_some(), "--smooth"),
         (args.reduce.is_some(), "--reduce"),
         (args.centre.is_some(), "--centre"),
+        (args.resolution.is_some(), "--resolution"),
+        (args.regularise.is_some(), "--regularise"),
     ] {
         if given {
             return Err(Failure::input(format!(

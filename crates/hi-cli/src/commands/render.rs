@@ -21,7 +21,7 @@ use serde_json::Value;
 use crate::cli::{ColorBy, PaletteName, RenderArgs, RenderMethod};
 use crate::error::Failure;
 use crate::input::parse_grid;
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 
 /// Default image size and samples per pixel.
 const DEFAULT_SIZE: usize = 512;
@@ -41,6 +41,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<Json, Failure> {
     if ext.as_deref() != Some("png") {
         return Err(Failure::input(format!("-o {}: expected a .png file", args.output.display())));
     }
+    check_writable(&args.output, "-o")?;
     let loaded = match (&args.quick, &args.scene) {
         (Some(file), _) => {
             quick_scene(file, args.method, args.curvature.map(|c| (c, args.palette)))?

@@ -10,7 +10,7 @@ use crate::cli::{LoopBeta, SchemeName, SubdivideMeshArgs};
 use crate::error::Failure;
 use serde::Serialize;
 
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 
 /// The most steps allowed: each multiplies the faces by 3 or 4, so 8 steps make a cube's 6
 /// faces about 400 000.
@@ -42,8 +42,12 @@ pub(crate) fn run(args: &SubdivideMeshArgs) -> Result<Json, Failure> {
             args.output.display()
         )));
     }
-    let mesh = PolyMesh::load(&args.input)
-        .map_err(|e| Failure::input(format!("{}: {e}", args.input.display())))?;
+    check_writable(&args.output, "-o")?;
+    let mesh = PolyMesh::load(&args.input).map_err(|e| match e {
+        // A file error names the file already.
+        hi_mesh::Error::File(_) => Failure::input(e.to_string()),
+        _ => Failure::input(format!("{}: {e}", args.input.display())),
+    })?;
     let scheme = match args.scheme {
         SchemeName::Loop => Scheme::Loop(match args.loop_weights {
             LoopBeta::Loop => LoopWeights::Loop,

@@ -12,7 +12,7 @@ use crate::cli::SurfaceBezierArgs;
 use crate::commands::surface_example::write_file;
 use crate::error::Failure;
 use crate::input::read_surface;
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 
 /// The output kinds, from the extension of `-o`.
 enum Output {
@@ -40,6 +40,7 @@ pub(crate) fn run(args: &SurfaceBezierArgs, pretty: bool) -> Result<Json, Failur
             )));
         }
     };
+    check_writable(&args.output, "-o")?;
     if !(1..=64).contains(&args.samples) {
         return Err(Failure::input(format!("--samples {}: expected 1 to 64", args.samples)));
     }

@@ -17,7 +17,7 @@ use crate::cli::{BsplineEnd, BsplineParams, SurfaceBsplineArgs};
 use crate::commands::surface_example::write_file;
 use crate::error::Failure;
 use crate::input::read_slices;
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 
 /// Fits the surface; without `-o` returns the surface's JSON, with `-o OUT.json` writes it
 /// there, with a mesh extension writes the mesh; then returns `{"files": [...], ...}`.
@@ -35,6 +35,9 @@ pub(crate) fn run(args: &SurfaceBsplineArgs, pretty: bool) -> Result<Json, Failu
         ),
         _ => None,
     };
+    if let Some(path) = &args.output {
+        check_writable(path, "-o")?;
+    }
     let (name, slices) = read_slices(&args.input)?;
     let end = match args.end {
         BsplineEnd::Natural => EndCondition::Natural,

@@ -12,7 +12,7 @@ use crate::cli::SurfaceExampleArgs;
 use crate::error::Failure;
 use serde::Serialize;
 
-use crate::output::{self, Json, file_names, write_json};
+use crate::output::{self, Json, check_writable, file_names, write_json};
 
 /// Radius of the `sphere` example.
 const SPHERE_RADIUS: f64 = 1.0;
@@ -28,6 +28,9 @@ const TORUS_RADII: (f64, f64) = (2.0, 1.0);
 /// [`Failure::Input`] for an unknown name, a sample count too large, or an output file that
 /// cannot be written.
 pub(crate) fn run(args: &SurfaceExampleArgs, pretty: bool) -> Result<Json, Failure> {
+    if let Some(path) = &args.output {
+        check_writable(path, "-o")?;
+    }
     let grid = example_grid(&args.name, args.samples)?;
     let (m, n) = (grid.len(), grid.first().map_or(0, Vec::len));
     let json = grid_json(&grid)?;

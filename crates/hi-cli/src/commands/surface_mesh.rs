@@ -10,7 +10,7 @@ use crate::error::Failure;
 use crate::input::read_surface;
 use serde::Serialize;
 
-use crate::output::{Json, file_names, json};
+use crate::output::{Json, check_writable, file_names, json};
 use hi_surface::{ParamRange, ParamWindow};
 
 /// Writes the mesh and returns `{"files": [...], "vertices": V, "triangles": T}`, with
@@ -23,6 +23,7 @@ use hi_surface::{ParamRange, ParamWindow};
 pub(crate) fn run(args: &SurfaceMeshArgs) -> Result<Json, Failure> {
     // Check the extension before reading and meshing: a typo should fail at once.
     MeshFormat::from_path(&args.output).map_err(|e| Failure::input(format!("-o: {e}")))?;
+    check_writable(&args.output, "-o")?;
     let surface = read_surface(&args.input.input)?;
     let [u0, u1, v0, v1] = args.window.0;
     let quantity = args.color.map(|c| match c {

@@ -75,6 +75,37 @@ pub(crate) struct PointsOutput<'a, P: ControlPoint> {
     pub(crate) points: PointList<'a, P>,
 }
 
+/// Checks, before any work, that `path` (given as `flag`) can be written: its folder exists and
+/// the file can be opened for writing. A file made only by the check is removed again; an
+/// existing file is left untouched.
+///
+/// # Errors
+///
+/// [`Failure::Input`] naming the flag, the path and the reason (no such folder, permission
+/// denied, a folder in the way).
+pub(crate) fn check_writable(
+    path: &std::path::Path,
+    flag: &str,
+) -> Result<(), crate::error::Failure> {
+    let fail = |why: String| {
+        crate::error::Failure::input(format!("{flag} {}: cannot write: {why}", path.display()))
+    };
+    if path.is_dir() {
+        return Err(fail("it is a folder".to_owned()));
+    }
+    let existed = path.exists();
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(path)
+        .map_err(|e| fail(e.to_string()))?;
+    if !existed {
+        std::fs::remove_file(path).map_err(|e| fail(e.to_string()))?;
+    }
+    Ok(())
+}
+
 /// The names of the files a command wrote, as printed in its `"files"` array.
 pub(crate) fn file_names(files: &[std::path::PathBuf]) -> Vec<String> {
     files.iter().map(|f| f.display().to_string()).collect()
