@@ -115,6 +115,12 @@ pub(crate) fn flatten_clap_error(rendered: &str, command: &str) -> String {
     }
 }
 
+/// `message` about the file at `path`, led by the path unless it names the file already.
+pub(crate) fn about_file(path: &std::path::Path, message: &str) -> String {
+    let name = path.display().to_string();
+    if message.contains(&name) { message.to_owned() } else { format!("{name}: {message}") }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -22,7 +22,7 @@ use crate::cli::{FitArgs, MethodName, ParamName};
 use crate::commands::fit_sections::DistancesOut;
 use crate::commands::surface_bezier;
 use crate::commands::surface_example::{grid_json, write_file};
-use crate::error::{Failure, stderr_line};
+use crate::error::{Failure, about_file, stderr_line};
 use crate::output::{Json, check_writable, file_names, json};
 
 /// Above this fraction of rays meeting the scan more than once, `hi fit` warns.
@@ -78,7 +78,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         },
     };
     let scan = read_scan(&args.scan)
-        .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+        .map_err(|e| Failure::input(about_file(&args.scan, &e.to_string())))?;
     // --smooth 0: the thesis's interpolation, with no smoothing or regularisation at all.
     let interpolate = args.smooth == Some(0.0);
     if interpolate && args.regularise.is_some_and(|r| r != Regularisation::Off) {

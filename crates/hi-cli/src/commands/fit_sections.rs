@@ -19,7 +19,7 @@ use serde::Serialize;
 
 use crate::cli::{AxisName, FitArgs, OrderName};
 use crate::commands::surface_example::{grid_json, write_file};
-use crate::error::{Failure, stderr_line};
+use crate::error::{Failure, about_file, stderr_line};
 use crate::output::{Json, check_writable, file_names, json};
 use hi_surface::{ParamRange, ParamWindow};
 
@@ -56,7 +56,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         }
     }
     let scan = read_scan(&args.scan)
-        .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+        .map_err(|e| Failure::input(about_file(&args.scan, &e.to_string())))?;
     let options = SectionOptions {
         axis: match args.axis {
             AxisName::X => SliceAxis::X,

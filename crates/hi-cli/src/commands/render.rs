@@ -309,7 +309,10 @@ fn read_mesh(path: &Path) -> Result<TriangleMesh, String> {
         Err(first) => {
             let is_obj = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"));
             if !is_obj || !path.exists() {
-                return Err(first.to_string());
+                // The caller names the file: the message without the path it may start with.
+                let message = first.to_string();
+                let named = format!("{}: ", path.display());
+                return Err(message.strip_prefix(&named).map_or(message.clone(), str::to_owned));
             }
             let options =
                 tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };

@@ -60,7 +60,13 @@ fn check_glb_header(bytes: &[u8]) -> Result<(), &'static str> {
 }
 
 fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
-    let gltf = ::gltf::Gltf::from_slice(bytes).map_err(|e| format!("glTF: {e}"))?;
+    let gltf = hi_mesh::export::parse_gltf(bytes).map_err(|e| match e {
+        // The scan error names the format already.
+        hi_mesh::Error::File(hi_mesh::export::FileError::Format { message, .. }) => {
+            message.strip_prefix("glTF: ").map_or(message.clone(), str::to_owned)
+        }
+        other => other.to_string(),
+    })?;
     let ::gltf::Gltf { document, blob } = gltf;
     let buffers = ::gltf::import_buffers(&document, base, blob).map_err(|e| match e {
         ::gltf::Error::ExternalReferenceInSliceImport => {

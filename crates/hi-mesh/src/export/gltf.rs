@@ -354,6 +354,70 @@ pub fn write_glb_with_edges<W: Write>(
     writer.flush().map_err(|e| io_error(&e, None))
 }
 
+/// A `.gltf` or `.glb` file's document (and a GLB's binary chunk), read by the `gltf` crate after
+/// a check it lacks: `gltf-json` 1.4 looks up a primitive's `POSITION` accessor before checking
+/// that the index is in range, and panics on a file whose index is not (found by fuzzing the
+/// scan readers; see `docs/reliability.md`). Both readers of the workspace go through here.
+///
+/// # Errors
+///
+/// [`FileError::Format`](super::FileError::Format) for a file the `gltf` crate rejects, or
+/// whose primitive names a `POSITION` accessor the file does not have.
+///
+/// # Examples
+///
+/// ```
+/// // "accessors" misspelt: the POSITION accessor 0 does not exist.
+/// let bad = br#"{"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"accesors":[]}"#;
+/// let err = hi_mesh::export::parse_gltf(bad).unwrap_err();
+/// assert!(err.to_string().contains("POSITION names accessor 0"), "{err}");
+/// ```
+pub fn parse_gltf(bytes: &[u8]) -> Result<::gltf::Gltf, Error> {
+    if let Some(problem) = position_accessor_problem(bytes) {
+        return Err(format_error(format!("glTF: {problem}"), None));
+    }
+    ::gltf::Gltf::from_slice(bytes).map_err(|e| gltf_error(e, None))
+}
+
+/// The JSON of a `.gltf` file, or of a GLB's first chunk (`None` if the container is broken,
+/// which the `gltf` crate then reports).
+fn json_part(bytes: &[u8]) -> Option<&[u8]> {
+    if !bytes.starts_with(b"glTF") {
+        return Some(bytes);
+    }
+    let word = |at: usize| {
+        let w: [u8; 4] = bytes.get(at..at + 4)?.try_into().ok()?;
+        Some(u32::from_le_bytes(w) as usize)
+    };
+    const JSON_CHUNK: usize = 0x4E4F_534A;
+    if word(16)? != JSON_CHUNK {
+        return None;
+    }
+    bytes.get(20..20usize.checked_add(word(12)?)?)
+}
+
+/// A primitive whose `POSITION` is not an index of the file's accessors, named.
+fn position_accessor_problem(bytes: &[u8]) -> Option<String> {
+    use ::gltf::json::Value;
+    let root: Value = ::gltf::json::deserialize::from_slice(json_part(bytes)?).ok()?;
+    let accessors = root.get("accessors").and_then(Value::as_array).map_or(0, Vec::len);
+    let meshes = root.get("meshes").and_then(Value::as_array)?;
+    for (m, mesh) in meshes.iter().enumerate() {
+        let primitives = mesh.get("primitives").and_then(Value::as_array);
+        for (p, primitive) in primitives.into_iter().flatten().enumerate() {
+            let index = primitive.get("attributes").and_then(|a| a.get("POSITION"));
+            if let Some(k) = index.and_then(Value::as_u64)
+                && usize::try_from(k).is_ok_and(|k| k >= accessors)
+            {
+                return Some(format!(
+                    "mesh {m}, primitive {p}: POSITION names accessor {k}, but the file has {accessors}"
+                ));
+            }
+        }
+    }
+    None
+}
+
 fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
     match e {
         ::gltf::Error::Io(e) => io_error(&e, path),
@@ -466,8 +530,11 @@ pub fn primitive_triangles(mode: ::gltf::mesh::Mode, indices: &[u32]) -> Option<
 /// primitive without `TEXCOORD_0` gets UV (0, 0). Vertex colours are kept when every primitive
 /// has them.
 pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
-    let (document, buffers, _images) =
-        ::gltf::import(path).map_err(|e| gltf_error(e, Some(path)))?;
+    let bytes = std::fs::read(path).map_err(|e| io_error(&e, Some(path)))?;
+    let ::gltf::Gltf { document, blob } =
+        parse_gltf(&bytes).map_err(|e| super::at_path(e, path))?;
+    let buffers = ::gltf::import_buffers(&document, path.parent(), blob)
+        .map_err(|e| gltf_error(e, Some(path)))?;
     let (mut positions, mut normals, mut uvs, mut colors, mut triangles) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut all_colored = true;

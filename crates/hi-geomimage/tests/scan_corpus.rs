@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+//! Replays the fuzzing corpus of the scan readers (`fuzz/corpus/scan`, minimised from the
+//! campaigns recorded in `docs/reliability.md`) with the fuzz target's own checks: the first
+//! byte picks the format, the rest is the file; no input may panic, and a scan that is read
+//! has finite points and triangles that index them. Every crash a campaign found is kept in the
+//! corpus, so it stays fixed.
+
+use std::path::Path;
+
+use hi_geomimage::scan::{ScanFormat, parse_scan};
+
+#[test]
+fn the_fuzzing_corpus_replays_without_a_failure() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus/scan");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|entry| entry.expect("a corpus entry").path())
+        .collect();
+    files.sort();
+    let mut read = [0usize; ScanFormat::ALL.len()];
+    for path in &files {
+        let data = std::fs::read(path).expect("a corpus file");
+        let Some((&first, rest)) = data.split_first() else { continue };
+        let k = usize::from(first) % ScanFormat::ALL.len();
+        if let Ok(scan) = parse_scan(rest, ScanFormat::ALL[k]) {
+            let n = scan.points.len();
+            assert!(scan.points.iter().all(|p| p.is_finite()), "{}", path.display());
+            assert!(
+                scan.triangles.iter().flatten().all(|&i| (i as usize) < n),
+                "{}",
+                path.display()
+            );
+            read[k] += 1;
+        }
+    }
+    assert!(files.len() >= ScanFormat::ALL.len(), "a corpus of {} files", files.len());
+    // The corpus reaches a valid file of every format.
+    for (format, count) in ScanFormat::ALL.iter().zip(read) {
+        assert!(count > 0, "no file of the corpus reads as {format:?}");
+    }
+}
