@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 //! Replays the fuzzing corpus of the scan readers (`fuzz/corpus/scan`, minimised from the
 //! campaigns recorded in `docs/reliability.md`) with the fuzz target's own checks: the first
-//! byte picks the format, the rest is the file; no input may panic, and a scan that is read
-//! has finite points and triangles that index them. Every crash a campaign found is kept in the
-//! corpus, so it stays fixed.
+//! byte picks the format, the rest is the file; no input may panic (not even a panic the
+//! glTF reader's safety net would catch: the `gltf` crate's assertions are checked for before
+//! reading), and a scan that is read has finite points and triangles that index them. Every
+//! crash a campaign found is kept in the corpus, so it stays fixed.
 
 use std::path::Path;
+use std::sync::Mutex;
 
 use hi_geomimage::scan::{ScanFormat, parse_scan};
 
@@ -18,6 +20,11 @@ fn the_fuzzing_corpus_replays_without_a_failure() {
         .collect();
     files.sort();
     let mut read = [0usize; ScanFormat::ALL.len()];
+    // Any panic, caught or not, is recorded (this file holds this one test).
+    static PANICS: Mutex<Vec<String>> = Mutex::new(Vec::new());
+    std::panic::set_hook(Box::new(|info| {
+        PANICS.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push(info.to_string());
+    }));
     for path in &files {
         let data = std::fs::read(path).expect("a corpus file");
         let Some((&first, rest)) = data.split_first() else { continue };
@@ -32,7 +39,10 @@ fn the_fuzzing_corpus_replays_without_a_failure() {
             );
             read[k] += 1;
         }
+        let panics = std::mem::take(&mut *PANICS.lock().expect("not poisoned"));
+        assert!(panics.is_empty(), "{}: {panics:?}", path.display());
     }
+    let _ = std::panic::take_hook();
     assert!(files.len() >= ScanFormat::ALL.len(), "a corpus of {} files", files.len());
     // The corpus reaches a valid file of every format.
     for (format, count) in ScanFormat::ALL.iter().zip(read) {

@@ -83,6 +83,9 @@ fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
         let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
         let flips = world.determinant() < 0.0;
         for primitive in mesh.primitives() {
+            if let Some(problem) = hi_mesh::export::accessor_problem(&primitive) {
+                return Err(problem);
+            }
             let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
             let Some(accessor) = primitive.get(&::gltf::Semantic::Positions) else { continue };
             if accessor.count() > limit {

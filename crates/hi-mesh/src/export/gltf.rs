@@ -418,6 +418,57 @@ fn position_accessor_problem(bytes: &[u8]) -> Option<String> {
     None
 }
 
+/// Why the `gltf` crate's reader could not read a primitive's positions, normals, first UV
+/// set, first colour set or indices: an accessor of a type the glTF 2.0 specification does not
+/// allow there (§3.7.2.1), which that reader meets with an assertion or `unreachable!` rather
+/// than an error (found by fuzzing the scan readers). `None` when every one it has is readable.
+#[must_use]
+pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
+    use ::gltf::Semantic;
+    use ::gltf::accessor::{DataType, Dimensions};
+    let allowed =
+        |semantic: &Semantic| -> (&'static str, &'static [Dimensions], &'static [DataType]) {
+            match semantic {
+                Semantic::Positions => ("POSITION", &[Dimensions::Vec3], &[DataType::F32]),
+                Semantic::Normals => ("NORMAL", &[Dimensions::Vec3], &[DataType::F32]),
+                Semantic::TexCoords(_) => {
+                    ("TEXCOORD", &[Dimensions::Vec2], &[DataType::U8, DataType::U16, DataType::F32])
+                }
+                _ => (
+                    "COLOR",
+                    &[Dimensions::Vec3, Dimensions::Vec4],
+                    &[DataType::U8, DataType::U16, DataType::F32],
+                ),
+            }
+        };
+    for semantic in
+        [Semantic::Positions, Semantic::Normals, Semantic::TexCoords(0), Semantic::Colors(0)]
+    {
+        let Some(accessor) = primitive.get(&semantic) else { continue };
+        let (name, dimensions, types) = allowed(&semantic);
+        if !dimensions.contains(&accessor.dimensions()) || !types.contains(&accessor.data_type()) {
+            return Some(format!(
+                "a {name} accessor holds {:?} of {:?}, which glTF does not allow there",
+                accessor.dimensions(),
+                accessor.data_type()
+            ));
+        }
+    }
+    let index_types = [DataType::U8, DataType::U16, DataType::U32];
+    match primitive.indices() {
+        Some(a)
+            if a.dimensions() != Dimensions::Scalar || !index_types.contains(&a.data_type()) =>
+        {
+            Some(format!(
+                "an index accessor holds {:?} of {:?}; indices are unsigned scalars",
+                a.dimensions(),
+                a.data_type()
+            ))
+        }
+        _ => None,
+    }
+}
+
 fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
     match e {
         ::gltf::Error::Io(e) => io_error(&e, path),
@@ -551,6 +602,9 @@ pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
                 Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
             ) {
                 continue;
+            }
+            if let Some(problem) = accessor_problem(&primitive) {
+                return Err(format_error(format!("glTF: {problem}"), Some(path)));
             }
             let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
             let p: Vec<DVec3> = reader

@@ -34,7 +34,8 @@ use std::path::{Path, PathBuf};
 
 #[cfg(feature = "gltf")]
 pub use self::gltf::{
-    parse_gltf, placed_meshes, primitive_triangles, write_glb, write_glb_with_edges, write_gltf,
+    accessor_problem, parse_gltf, placed_meshes, primitive_triangles, write_glb,
+    write_glb_with_edges, write_gltf,
 };
 pub use self::obj::write_obj;
 use crate::{Error, TriangleMesh};
