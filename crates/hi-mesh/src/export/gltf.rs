@@ -396,21 +396,20 @@ fn json_part(bytes: &[u8]) -> Option<&[u8]> {
     bytes.get(20..20usize.checked_add(word(12)?)?)
 }
 
-/// A primitive whose `POSITION` is not an index of the file's accessors, named.
+/// A primitive whose `POSITION` is not an index of the file's accessors, named. The JSON is
+/// read exactly as the `gltf` crate reads it (its `Root`, before its validation).
 fn position_accessor_problem(bytes: &[u8]) -> Option<String> {
-    use ::gltf::json::Value;
-    let root: Value = ::gltf::json::deserialize::from_slice(json_part(bytes)?).ok()?;
-    let accessors = root.get("accessors").and_then(Value::as_array).map_or(0, Vec::len);
-    let meshes = root.get("meshes").and_then(Value::as_array)?;
-    for (m, mesh) in meshes.iter().enumerate() {
-        let primitives = mesh.get("primitives").and_then(Value::as_array);
-        for (p, primitive) in primitives.into_iter().flatten().enumerate() {
-            let index = primitive.get("attributes").and_then(|a| a.get("POSITION"));
-            if let Some(k) = index.and_then(Value::as_u64)
-                && usize::try_from(k).is_ok_and(|k| k >= accessors)
+    let root: json::Root = json::deserialize::from_slice(json_part(bytes)?).ok()?;
+    let accessors = root.accessors.len();
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let position = primitive.attributes.get(&Valid(json::mesh::Semantic::Positions));
+            if let Some(index) = position
+                && index.value() >= accessors
             {
                 return Some(format!(
-                    "mesh {m}, primitive {p}: POSITION names accessor {k}, but the file has {accessors}"
+                    "mesh {m}, primitive {p}: POSITION names accessor {}, but the file has {accessors}",
+                    index.value()
                 ));
             }
         }

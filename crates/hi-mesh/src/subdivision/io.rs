@@ -145,7 +145,9 @@ impl PolyMesh {
         let mut next = |what: &str| {
             toks.next().ok_or_else(|| parse_err(F, last_line, format!("file ends before {what}")))
         };
-        let mut positions = Vec::with_capacity(n_vertices.min(1 << 24));
+        // Reserve no more than the text can hold (a vertex takes at least 6 bytes, a face 8, a
+        // corner 2): the counts come from the file, which may lie.
+        let mut positions = Vec::with_capacity(n_vertices.min(text.len() / 6));
         for _ in 0..n_vertices {
             let mut c = [0.0; 3];
             for x in &mut c {
@@ -154,7 +156,7 @@ impl PolyMesh {
             }
             positions.push(DVec3::from_array(c));
         }
-        let mut faces = Vec::with_capacity(n_faces.min(1 << 24));
+        let mut faces = Vec::with_capacity(n_faces.min(text.len() / 8));
         let mut last_face_line = 0;
         for _ in 0..n_faces {
             let (line, t) = next("all faces are read")?;
@@ -172,7 +174,7 @@ impl PolyMesh {
                     format!("a face needs at least 3 corners, not {k}"),
                 ));
             }
-            let mut face = Vec::with_capacity(k);
+            let mut face = Vec::with_capacity(k.min(text.len() / 2));
             for _ in 0..k {
                 let (l, t) = next("all faces are read")?;
                 if l != line {
