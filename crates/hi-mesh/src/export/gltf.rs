@@ -445,6 +445,14 @@ pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
     {
         let Some(accessor) = primitive.get(&semantic) else { continue };
         let (name, dimensions, types) = allowed(&semantic);
+        if !extent_fits(&accessor) {
+            return Some(format!(
+                "a {name} accessor of {} elements at offset {} has no elements or overflows \
+                 the address space",
+                accessor.count(),
+                accessor.offset()
+            ));
+        }
         if !dimensions.contains(&accessor.dimensions()) || !types.contains(&accessor.data_type()) {
             return Some(format!(
                 "a {name} accessor holds {:?} of {:?}, which glTF does not allow there",
@@ -454,6 +462,16 @@ pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
         }
     }
     let index_types = [DataType::U8, DataType::U16, DataType::U32];
+    if let Some(a) = primitive.indices()
+        && !extent_fits(&a)
+    {
+        return Some(format!(
+            "an index accessor of {} elements at offset {} has no elements or overflows the \
+             address space",
+            a.count(),
+            a.offset()
+        ));
+    }
     match primitive.indices() {
         Some(a)
             if a.dimensions() != Dimensions::Scalar || !index_types.contains(&a.data_type()) =>
@@ -466,6 +484,27 @@ pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
         }
         _ => None,
     }
+}
+
+/// Whether the byte ranges the `gltf` crate's reader computes for `accessor` (and for its sparse
+/// indices and values) exist: at least one element (glTF 2.0 asks `count ≥ 1`), and
+/// offset + stride·(count − 1) + size without overflow, which that reader computes unchecked.
+fn extent_fits(accessor: &::gltf::Accessor<'_>) -> bool {
+    let end = |offset: usize, stride: Option<usize>, count: usize, size: usize| {
+        let last = count.checked_sub(1)?;
+        offset.checked_add(stride.unwrap_or(size).checked_mul(last)?)?.checked_add(size)
+    };
+    let size = accessor.size();
+    let stride = accessor.view().and_then(|v| v.stride());
+    if end(accessor.offset(), stride, accessor.count(), size).is_none() {
+        return false;
+    }
+    accessor.sparse().is_none_or(|sparse| {
+        let (indices, values) = (sparse.indices(), sparse.values());
+        let index_size = indices.index_type().size();
+        end(indices.offset(), indices.view().stride(), sparse.count(), index_size).is_some()
+            && end(values.offset(), values.view().stride(), sparse.count(), size).is_some()
+    })
 }
 
 fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
