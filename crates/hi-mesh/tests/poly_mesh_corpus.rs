@@ -21,7 +21,13 @@ const SCHEMES: [Scheme; 6] = [
 
 #[test]
 fn the_fuzzing_corpus_replays_without_a_failure() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus/poly_mesh");
+    let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz");
+    if !fuzz.exists() {
+        // A packaged crate leaves the fuzzing folder out (it is a package of its own).
+        eprintln!("no fuzz folder beside this crate: the corpus is replayed in the repository");
+        return;
+    }
+    let dir = fuzz.join("corpus/poly_mesh");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|entry| entry.expect("a corpus entry").path())

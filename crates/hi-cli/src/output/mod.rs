@@ -81,8 +81,8 @@ pub(crate) struct PointsOutput<'a, P: ControlPoint> {
 ///
 /// # Errors
 ///
-/// [`Failure::Input`] naming the flag, the path and the reason (no such folder, permission
-/// denied, a folder in the way).
+/// [`Failure::Input`](crate::error::Failure::Input) naming the flag, the path and the reason
+/// (no such folder, permission denied, a folder in the way).
 pub(crate) fn check_writable(
     path: &std::path::Path,
     flag: &str,

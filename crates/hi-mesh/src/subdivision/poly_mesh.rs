@@ -71,7 +71,8 @@ impl PolyMesh {
     /// # Errors
     ///
     /// [`Error::NonFinitePosition`], [`Error::IndexOutOfRange`],
-    /// [`Error::DegenerateFace`] (fewer than 3 corners or a repeated vertex),
+    /// [`Error::TooFewCorners`] or [`Error::RepeatedVertex`] for a face with fewer than 3 corners or
+    /// a vertex named twice,
     /// [`Error::NonManifoldEdge`], [`Error::InconsistentOrientation`],
     /// [`Error::NonManifoldVertex`], [`Error::TooLarge`]; each names the first
     /// offending vertex, face or edge.
