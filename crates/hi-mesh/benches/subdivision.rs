@@ -28,14 +28,7 @@ fn subdivision_benches(c: &mut Criterion) {
     assert!(tri.n_faces() >= 100_000 && quad.n_faces() >= 100_000, "inputs are large enough");
     let mut group = c.benchmark_group("subdivision step");
     group.sample_size(10);
-    for scheme in [
-        Scheme::Loop(LoopWeights::Loop),
-        Scheme::Butterfly,
-        Scheme::Sqrt3,
-        Scheme::InterpolatingSqrt3,
-        Scheme::CatmullClark,
-        Scheme::DooSabin,
-    ] {
+    for scheme in Scheme::ALL {
         let inputs: &[(&str, &PolyMesh)] = match scheme {
             Scheme::CatmullClark | Scheme::DooSabin => &[("triangles", &tri), ("quads", &quad)],
             _ => &[("triangles", &tri)],

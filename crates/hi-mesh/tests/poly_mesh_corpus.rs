@@ -8,16 +8,7 @@
 use std::path::Path;
 
 use hi_mesh::PolyMesh;
-use hi_mesh::subdivision::{LoopWeights, Scheme};
-
-const SCHEMES: [Scheme; 6] = [
-    Scheme::Loop(LoopWeights::Loop),
-    Scheme::Butterfly,
-    Scheme::Sqrt3,
-    Scheme::InterpolatingSqrt3,
-    Scheme::CatmullClark,
-    Scheme::DooSabin,
-];
+use hi_mesh::subdivision::Scheme;
 
 #[test]
 fn the_fuzzing_corpus_replays_without_a_failure() {
@@ -55,7 +46,7 @@ fn the_fuzzing_corpus_replays_without_a_failure() {
         if mesh.n_faces() > 256 {
             continue;
         }
-        let scheme = SCHEMES[usize::from(first >> 1) % SCHEMES.len()];
+        let scheme = Scheme::ALL[usize::from(first >> 1) % Scheme::ALL.len()];
         if let Ok(out) = scheme.step(&mesh) {
             refined += 1;
             let m = out.n_vertices();

@@ -4,7 +4,7 @@
 //! which rebuilds its spectrum.
 
 use serde::de::{Deserialize, DeserializeOwned, Deserializer, Error as _};
-use serde::ser::{Serialize, SerializeSeq, Serializer};
+use serde::ser::{Serialize, Serializer};
 use serde::{Deserialize as DeriveDeserialize, Serialize as DeriveSerialize};
 
 use hi_curve::ControlPoint;
@@ -16,12 +16,7 @@ struct Rows<'a, P>(&'a [P], usize);
 
 impl<P: Serialize> Serialize for Rows<'_, P> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let rows = self.0.chunks(self.1.max(1));
-        let mut seq = serializer.serialize_seq(Some(rows.len()))?;
-        for row in rows {
-            seq.serialize_element(row)?;
-        }
-        seq.end()
+        serializer.collect_seq(self.0.chunks(self.1.max(1)))
     }
 }
 

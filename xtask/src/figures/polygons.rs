@@ -384,11 +384,14 @@ fn side(title: &str, polygon: Polygon, method: Method, partner: Method) -> Resul
 /// Samples (t, κ(t)) of a curvature plot, `None` where the curve is singular.
 type KappaGraph = Vec<(f64, Option<f64>)>;
 
-/// The signed curvature of `method`'s curve through `polygon` over one period, closed (the
+/// The signed curvature of `curve` (`method`'s through `polygon`) over one period, closed (the
 /// first sample again at t = 1; `None` where it is singular), and its least and largest values.
-fn kappa_graph(polygon: Polygon, method: Method) -> Result<(KappaGraph, f64, f64)> {
-    let curve = method.curve(&polygon.points())?;
-    let samples = curvature_plot(curve.as_ref(), CURVATURE_SAMPLES)?;
+fn kappa_graph(
+    curve: &dyn ParamCurve<DVec2>,
+    polygon: Polygon,
+    method: Method,
+) -> Result<(KappaGraph, f64, f64)> {
+    let samples = curvature_plot(curve, CURVATURE_SAMPLES)?;
     let mut graph: Vec<(f64, Option<f64>)> = samples.iter().map(|s| (s.t, s.curvature)).collect();
     graph.push((1.0, samples[0].curvature));
     let kappas = graph.iter().filter_map(|&(_, k)| k);
@@ -465,8 +468,9 @@ fn sup(j: i32) -> String {
 fn curvature(title: &str, polygon: Polygon, method: Method, partner: Method) -> Result<Vec<u8>> {
     let points = polygon.points();
     let curve = method.curve(&points)?;
-    let (graph, lo, hi) = kappa_graph(polygon, method)?;
-    let (other_graph, other_lo, other_hi) = kappa_graph(polygon, partner)?;
+    let (graph, lo, hi) = kappa_graph(curve.as_ref(), polygon, method)?;
+    let other = partner.curve(&points)?;
+    let (other_graph, other_lo, other_hi) = kappa_graph(other.as_ref(), polygon, partner)?;
     let both: Vec<f64> = graph.iter().chain(&other_graph).filter_map(|&(_, k)| k).collect();
     let axis = KappaAxis::for_values(&both);
     // The largest |κ|, marked on both plots.

@@ -7,7 +7,7 @@ use hi_mesh::export;
 use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 
 use crate::cli::{LoopBeta, SchemeName, SubdivideMeshArgs};
-use crate::error::Failure;
+use crate::error::{Failure, about_file};
 use serde::Serialize;
 
 use crate::output::{Json, check_writable, file_names, json};
@@ -43,11 +43,8 @@ pub(crate) fn run(args: &SubdivideMeshArgs) -> Result<Json, Failure> {
         )));
     }
     check_writable(&args.output, "-o")?;
-    let mesh = PolyMesh::load(&args.input).map_err(|e| match e {
-        // A file error names the file already.
-        hi_mesh::Error::File(_) => Failure::input(e.to_string()),
-        _ => Failure::input(format!("{}: {e}", args.input.display())),
-    })?;
+    let mesh = PolyMesh::load(&args.input)
+        .map_err(|e| Failure::input(about_file(&args.input, &e.to_string())))?;
     let scheme = match args.scheme {
         SchemeName::Loop => Scheme::Loop(match args.loop_weights {
             LoopBeta::Loop => LoopWeights::Loop,

@@ -5,17 +5,8 @@
 #![no_main]
 
 use hi_mesh::PolyMesh;
-use hi_mesh::subdivision::{LoopWeights, Scheme};
+use hi_mesh::subdivision::Scheme;
 use libfuzzer_sys::fuzz_target;
-
-const SCHEMES: [Scheme; 6] = [
-    Scheme::Loop(LoopWeights::Loop),
-    Scheme::Butterfly,
-    Scheme::Sqrt3,
-    Scheme::InterpolatingSqrt3,
-    Scheme::CatmullClark,
-    Scheme::DooSabin,
-];
 
 fuzz_target!(|data: &[u8]| {
     let Some((&first, rest)) = data.split_first() else { return };
@@ -29,7 +20,7 @@ fuzz_target!(|data: &[u8]| {
     if mesh.n_faces() > 256 {
         return;
     }
-    let scheme = SCHEMES[usize::from(first >> 1) % SCHEMES.len()];
+    let scheme = Scheme::ALL[usize::from(first >> 1) % Scheme::ALL.len()];
     if let Ok(refined) = scheme.step(&mesh) {
         let m = refined.n_vertices();
         assert!(refined.positions().iter().all(|p| p.is_finite()));

@@ -354,10 +354,11 @@ pub fn write_glb_with_edges<W: Write>(
     writer.flush().map_err(|e| io_error(&e, None))
 }
 
-/// A `.gltf` or `.glb` file's document (and a GLB's binary chunk), read by the `gltf` crate after
-/// a check it lacks: `gltf-json` 1.4 looks up a primitive's `POSITION` accessor before checking
-/// that the index is in range, and panics on a file whose index is not (found by fuzzing the
-/// scan readers; see `docs/reliability.md`). Both readers of the workspace go through here.
+/// A `.gltf` or `.glb` file's document (and a GLB's binary chunk), read by the `gltf` crate with
+/// a check added before its validation: `gltf-json` 1.4 validates by looking up a primitive's
+/// `POSITION` accessor before checking that the index is in range, and panics on a file whose
+/// index is not (found by fuzzing the scan readers; see `docs/reliability.md`). The JSON is
+/// parsed once. Both readers of the workspace go through here.
 ///
 /// # Errors
 ///
@@ -373,33 +374,18 @@ pub fn write_glb_with_edges<W: Write>(
 /// assert!(err.to_string().contains("POSITION names accessor 0"), "{err}");
 /// ```
 pub fn parse_gltf(bytes: &[u8]) -> Result<::gltf::Gltf, Error> {
-    if let Some(problem) = position_accessor_problem(bytes) {
+    let ::gltf::Gltf { document, blob } =
+        ::gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| gltf_error(e, None))?;
+    let root = document.into_json();
+    if let Some(problem) = position_accessor_problem(&root) {
         return Err(format_error(format!("glTF: {problem}"), None));
     }
-    ::gltf::Gltf::from_slice(bytes).map_err(|e| gltf_error(e, None))
+    let document = ::gltf::Document::from_json(root).map_err(|e| gltf_error(e, None))?;
+    Ok(::gltf::Gltf { document, blob })
 }
 
-/// The JSON of a `.gltf` file, or of a GLB's first chunk (`None` if the container is broken,
-/// which the `gltf` crate then reports).
-fn json_part(bytes: &[u8]) -> Option<&[u8]> {
-    if !bytes.starts_with(b"glTF") {
-        return Some(bytes);
-    }
-    let word = |at: usize| {
-        let w: [u8; 4] = bytes.get(at..at + 4)?.try_into().ok()?;
-        Some(u32::from_le_bytes(w) as usize)
-    };
-    const JSON_CHUNK: usize = 0x4E4F_534A;
-    if word(16)? != JSON_CHUNK {
-        return None;
-    }
-    bytes.get(20..20usize.checked_add(word(12)?)?)
-}
-
-/// A primitive whose `POSITION` is not an index of the file's accessors, named. The JSON is
-/// read exactly as the `gltf` crate reads it (its `Root`, before its validation).
-fn position_accessor_problem(bytes: &[u8]) -> Option<String> {
-    let root: json::Root = json::deserialize::from_slice(json_part(bytes)?).ok()?;
+/// A primitive whose `POSITION` is not an index of the document's accessors, named.
+fn position_accessor_problem(root: &json::Root) -> Option<String> {
     let accessors = root.accessors.len();
     for (m, mesh) in root.meshes.iter().enumerate() {
         for (p, primitive) in mesh.primitives.iter().enumerate() {
