@@ -13,8 +13,8 @@ use std::time::Duration;
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
-use obvhs::bvh2::Bvh2;
-use obvhs::bvh2::builder::build_bvh2;
+use obvhs::cwbvh::CwBvh;
+use obvhs::cwbvh::builder::build_cwbvh;
 use obvhs::ray::{Ray as BvhRay, RayHit};
 
 use crate::ray::Ray;
@@ -26,7 +26,7 @@ const PAD: f64 = 1e-6;
 /// A BVH over f64 boxes of primitives.
 #[derive(Clone)]
 pub(crate) struct Bvh {
-    bvh: Bvh2,
+    bvh: CwBvh,
     /// The box of all primitives (f64, padded).
     lo: DVec3,
     hi: DVec3,
@@ -74,7 +74,7 @@ impl Bvh {
                 )
             })
             .collect();
-        let bvh = build_bvh2(&f32_boxes, BvhBuildParams::fast_build(), &mut Duration::default());
+        let bvh = build_cwbvh(&f32_boxes, BvhBuildParams::fast_build(), &mut Duration::default());
         Bvh { bvh, lo: lo - 2.0 * pad, hi: hi + 2.0 * pad }
     }
 
@@ -120,16 +120,10 @@ impl Bvh {
         };
         let bray = f32_ray(ray, t0, t1);
         let indices = &self.bvh.primitive_indices;
-        let mut hit = RayHit::none();
-        let mut found = false;
-        self.bvh.ray_traverse(bray, &mut hit, |_, id| {
-            if !found && test(indices[id] as usize) {
-                found = true;
-            }
-            // Once found, a distance of 0 culls every box still on the traversal's stack.
-            if found { 0.0 } else { f32::INFINITY }
-        });
-        found
+        // The traversal stops at the first primitive given a distance inside the ray.
+        !self.bvh.ray_traverse_miss(bray, |_, id| {
+            if test(indices[id] as usize) { 0.0 } else { f32::INFINITY }
+        })
     }
 }
 

@@ -168,10 +168,11 @@ impl MeshObject {
     pub fn intersect(&self, ray: &Ray) -> Option<(usize, TriangleHit)> {
         let p = self.mesh.positions();
         let tris = self.mesh.triangles();
+        let sheared = ShearedRay::new(ray)?;
         self.bvh
             .traverse(ray, |i, t_max| {
                 let [a, b, c] = tris[i].map(|k| p[k as usize]);
-                intersect_triangle(ray, a, b, c, t_max).map(|h| (h.t, (i, h)))
+                sheared.intersect(a, b, c, t_max).map(|h| (h.t, (i, h)))
             })
             .map(|(_, hit)| hit)
     }
@@ -182,9 +183,12 @@ impl MeshObject {
     pub fn occluded(&self, ray: &Ray) -> bool {
         let p = self.mesh.positions();
         let tris = self.mesh.triangles();
+        let Some(sheared) = ShearedRay::new(ray) else {
+            return false;
+        };
         self.bvh.any(ray, |i| {
             let [a, b, c] = tris[i].map(|k| p[k as usize]);
-            intersect_triangle(ray, a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max)
+            sheared.intersect(a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max)
         })
     }
 
@@ -219,12 +223,117 @@ impl MeshObject {
     }
 }
 
-/// a·b − c·d with one rounding error less (Kahan's algorithm, pbrt-v4 `DifferenceOfProducts`).
+/// a·b − c·d with one rounding error less (Kahan's algorithm, pbrt-v4 `DifferenceOfProducts`),
+/// where it matters: the plain difference is kept when it exceeds its own rounding error bound
+/// (3 ulp of the larger product) by a wide margin, so that its sign and value agree with the
+/// compensated one to an ulp, and the compensated form is computed only near cancellation.
 fn difference_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
-    let cd = c * d;
+    let (ab, cd) = (a * b, c * d);
+    let plain = ab - cd;
+    if plain.abs() > 1e-12 * ab.abs().max(cd.abs()) {
+        return plain;
+    }
     let err = (-c).mul_add(d, cd);
     let dop = a.mul_add(b, -cd);
     dop + err
+}
+
+/// The per-ray part of the watertight test (pbrt-v4 §6.5.3): the axis permutation that makes
+/// the direction's largest component z, and the shear that maps the direction onto +z. A
+/// mesh computes it once per ray instead of once per triangle.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ShearedRay {
+    origin: DVec3,
+    t_min: f64,
+    /// The axes taken as x, y, z.
+    k: [usize; 3],
+    /// −d_x/d_z, −d_y/d_z, 1/d_z in the permuted axes.
+    s: DVec3,
+}
+
+impl ShearedRay {
+    /// The permutation and shear of `ray`; `None` for a zero direction.
+    pub(crate) fn new(ray: &Ray) -> Option<Self> {
+        let ad = ray.dir.abs();
+        let kz = if ad.x > ad.y {
+            if ad.x > ad.z { 0 } else { 2 }
+        } else if ad.y > ad.z {
+            1
+        } else {
+            2
+        };
+        let kx = if kz == 2 { 0 } else { kz + 1 };
+        let ky = if kx == 2 { 0 } else { kx + 1 };
+        let d = DVec3::new(ray.dir[kx], ray.dir[ky], ray.dir[kz]);
+        if d.z == 0.0 {
+            return None;
+        }
+        Some(ShearedRay {
+            origin: ray.origin,
+            t_min: ray.t_min,
+            k: [kx, ky, kz],
+            s: DVec3::new(-d.x / d.z, -d.y / d.z, 1.0 / d.z),
+        })
+    }
+
+    /// The hit on triangle (`p0`, `p1`, `p2`) with t in (`t_min`, `t_max`), if any.
+    pub(crate) fn intersect(
+        &self,
+        p0: DVec3,
+        p1: DVec3,
+        p2: DVec3,
+        t_max: f64,
+    ) -> Option<TriangleHit> {
+        if (p2 - p0).cross(p1 - p0).length_squared() == 0.0 {
+            return None;
+        }
+        let [kx, ky, kz] = self.k;
+        let to_ray = |p: DVec3| {
+            let v = p - self.origin;
+            let z = v[kz];
+            DVec3::new(v[kx] + self.s.x * z, v[ky] + self.s.y * z, z)
+        };
+        let (mut p0t, mut p1t, mut p2t) = (to_ray(p0), to_ray(p1), to_ray(p2));
+        let e0 = difference_of_products(p1t.x, p2t.y, p1t.y, p2t.x);
+        let e1 = difference_of_products(p2t.x, p0t.y, p2t.y, p0t.x);
+        let e2 = difference_of_products(p0t.x, p1t.y, p0t.y, p1t.x);
+        if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
+            return None;
+        }
+        let det = e0 + e1 + e2;
+        if det == 0.0 {
+            return None;
+        }
+        let sz = self.s.z;
+        p0t.z *= sz;
+        p1t.z *= sz;
+        p2t.z *= sz;
+        let t_scaled = e0 * p0t.z + e1 * p1t.z + e2 * p2t.z;
+        if det < 0.0 && (t_scaled >= self.t_min * det || t_scaled < t_max * det) {
+            return None;
+        }
+        if det > 0.0 && (t_scaled <= self.t_min * det || t_scaled > t_max * det) {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let (b0, b1, b2) = (e0 * inv_det, e1 * inv_det, e2 * inv_det);
+        let t = t_scaled * inv_det;
+        // pbrt-v4: make sure t is provably greater than zero.
+        let max_zt = DVec3::new(p0t.z, p1t.z, p2t.z).abs().max_element();
+        let delta_z = gamma(3) * max_zt;
+        let max_xt = DVec3::new(p0t.x, p1t.x, p2t.x).abs().max_element();
+        let max_yt = DVec3::new(p0t.y, p1t.y, p2t.y).abs().max_element();
+        let delta_x = gamma(5) * (max_xt + max_zt);
+        let delta_y = gamma(5) * (max_yt + max_zt);
+        let delta_e = 2.0 * (gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+        let max_e = DVec3::new(e0, e1, e2).abs().max_element();
+        let delta_t =
+            3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
+        if t <= delta_t.max(self.t_min) {
+            return None;
+        }
+        Some(TriangleHit { t, b: [b0, b1, b2] })
+    }
 }
 
 /// The watertight ray–triangle test of pbrt-v4 (§6.5.3) in f64: the hit with t in
@@ -248,70 +357,5 @@ pub fn intersect_triangle(
     p2: DVec3,
     t_max: f64,
 ) -> Option<TriangleHit> {
-    let d = ray.dir;
-    if (p2 - p0).cross(p1 - p0).length_squared() == 0.0 {
-        return None;
-    }
-    let (mut p0t, mut p1t, mut p2t) = (p0 - ray.origin, p1 - ray.origin, p2 - ray.origin);
-    let ad = d.abs();
-    let kz = if ad.x > ad.y {
-        if ad.x > ad.z { 0 } else { 2 }
-    } else if ad.y > ad.z {
-        1
-    } else {
-        2
-    };
-    let kx = if kz == 2 { 0 } else { kz + 1 };
-    let ky = if kx == 2 { 0 } else { kx + 1 };
-    let perm = |v: DVec3| DVec3::new(v[kx], v[ky], v[kz]);
-    let d = perm(d);
-    p0t = perm(p0t);
-    p1t = perm(p1t);
-    p2t = perm(p2t);
-    if d.z == 0.0 {
-        return None;
-    }
-    let (sx, sy, sz) = (-d.x / d.z, -d.y / d.z, 1.0 / d.z);
-    for p in [&mut p0t, &mut p1t, &mut p2t] {
-        p.x += sx * p.z;
-        p.y += sy * p.z;
-    }
-    let e0 = difference_of_products(p1t.x, p2t.y, p1t.y, p2t.x);
-    let e1 = difference_of_products(p2t.x, p0t.y, p2t.y, p0t.x);
-    let e2 = difference_of_products(p0t.x, p1t.y, p0t.y, p1t.x);
-    if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
-        return None;
-    }
-    let det = e0 + e1 + e2;
-    if det == 0.0 {
-        return None;
-    }
-    p0t.z *= sz;
-    p1t.z *= sz;
-    p2t.z *= sz;
-    let t_scaled = e0 * p0t.z + e1 * p1t.z + e2 * p2t.z;
-    if det < 0.0 && (t_scaled >= ray.t_min * det || t_scaled < t_max * det) {
-        return None;
-    }
-    if det > 0.0 && (t_scaled <= ray.t_min * det || t_scaled > t_max * det) {
-        return None;
-    }
-    let inv_det = 1.0 / det;
-    let (b0, b1, b2) = (e0 * inv_det, e1 * inv_det, e2 * inv_det);
-    let t = t_scaled * inv_det;
-    // pbrt-v4: make sure t is provably greater than zero.
-    let max_zt = DVec3::new(p0t.z, p1t.z, p2t.z).abs().max_element();
-    let delta_z = gamma(3) * max_zt;
-    let max_xt = DVec3::new(p0t.x, p1t.x, p2t.x).abs().max_element();
-    let max_yt = DVec3::new(p0t.y, p1t.y, p2t.y).abs().max_element();
-    let delta_x = gamma(5) * (max_xt + max_zt);
-    let delta_y = gamma(5) * (max_yt + max_zt);
-    let delta_e = 2.0 * (gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-    let max_e = DVec3::new(e0, e1, e2).abs().max_element();
-    let delta_t =
-        3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
-    if t <= delta_t.max(ray.t_min) {
-        return None;
-    }
-    Some(TriangleHit { t, b: [b0, b1, b2] })
+    ShearedRay::new(ray)?.intersect(p0, p1, p2, t_max)
 }

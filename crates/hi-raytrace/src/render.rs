@@ -41,8 +41,8 @@ pub struct RenderOptions {
     /// in a channel, or their mean differs that much from a neighbouring pixel's (an edge, a
     /// shadow's border, a highlight, a feature thinner than a pixel), is it rendered again with
     /// all `samples_per_pixel` (the same samples a plain render takes there, so edges come out
-    /// exactly as in one); elsewhere the first samples' mean is the pixel. 0: every pixel
-    /// takes `samples_per_pixel`.
+    /// exactly as in one: the first samples are kept and the rest added); elsewhere the first
+    /// samples' mean is the pixel. 0: every pixel takes `samples_per_pixel`.
     pub first_pass: u32,
 }
 
@@ -170,12 +170,30 @@ fn mix(mut z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// The base-2 radical inverse of `i` (van der Corput).
+/// The base-2 radical inverse of `i` (van der Corput): the first dimension of Sobol's sequence.
 fn radical_inverse(i: u32) -> f64 {
     f64::from(i.reverse_bits()) / 4_294_967_296.0
 }
 
-/// Sample `s` of `n` in pixel (`x`, `y`), as an offset in [0, 1)² within the pixel.
+/// The second dimension of Sobol's sequence (generator matrix: Pascal's triangle mod 2), in
+/// [0, 1). With [`radical_inverse`] it makes the (0, 2)-sequence in base 2: its first 2ᵏ points
+/// are a (0, k, 2)-net, one point in every elementary box of area 2⁻ᵏ.
+fn sobol_second(mut i: u32) -> f64 {
+    let (mut v, mut r) = (1u32 << 31, 0u32);
+    while i != 0 {
+        if i & 1 == 1 {
+            r ^= v;
+        }
+        i >>= 1;
+        v ^= v >> 1;
+    }
+    f64::from(r) / 4_294_967_296.0
+}
+
+/// Sample `s` of `n` in pixel (`x`, `y`), as an offset in [0, 1)² within the pixel: the pixel
+/// centre for one sample, otherwise point `s` of the (0, 2)-sequence shifted (Cranley–Patterson)
+/// by a hash of the pixel. Any first 4 or 16 samples are stratified on their own, so a pixel
+/// refined from 4 samples to 16 keeps the first 4 ([`RenderOptions::first_pass`]).
 fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
     if n == 1 {
         return (0.5, 0.5);
@@ -183,9 +201,7 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
     let h = mix((u64::from(x) << 32) ^ u64::from(y) ^ 0x5EED_2005);
     let (rx, ry) =
         ((h >> 11) as f64 / (1u64 << 53) as f64, (mix(h) >> 11) as f64 / (1u64 << 53) as f64);
-    let a = ((f64::from(s) + 0.5) / f64::from(n) + rx).fract();
-    let b = (radical_inverse(s) + ry).fract();
-    (a, b)
+    ((radical_inverse(s) + rx).fract(), (sobol_second(s) + ry).fract())
 }
 
 /// Renders `scene` through `camera`. `progress`, if given, is called after each tile with the
@@ -242,12 +258,11 @@ pub fn render(
             let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
             let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
             let mut counts = RayCounts::default();
-            // The mean colour of `n` samples of pixel (x, y) (stratified for `n`), and the
-            // spread of the samples in their widest channel.
-            let mut pixel = |x: u32, y: u32, n: u32| {
-                let mut sum = [0.0f64; 3];
+            // Samples `from..to` of the `n` of pixel (x, y), added to `sum`; returns the spread
+            // of these samples in their widest channel.
+            let mut samples = |x: u32, y: u32, from: u32, to: u32, n: u32, sum: &mut [f64; 3]| {
                 let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-                for s in 0..n {
+                for s in from..to {
                     let (ox, oy) = sample_offset(x, y, s, n);
                     let ray = camera.ray(
                         (f64::from(x) + ox) / f64::from(w),
@@ -271,20 +286,24 @@ pub fn render(
                         hi[k] = hi[k].max(color[k]);
                     }
                 }
-                let spread = (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max);
-                (sum.map(|c| c / f64::from(n)), spread)
+                (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max)
             };
             let first = settings.first_pass;
             let adaptive = first > 0 && first < spp;
             // The first pass over the tile and a one-pixel border around it (a pixel whose
-            // few samples all miss a thin edge shows it by differing from a neighbour).
+            // few samples all miss a thin edge shows it by differing from a neighbour): the
+            // sum of each pixel's first samples, their mean and their spread.
             let (bx0, by0) = (x0.saturating_sub(1), y0.saturating_sub(1));
             let (bx1, by1) = ((x1 + 1).min(w), (y1 + 1).min(h));
             let bw = (bx1 - bx0) as usize;
-            let coarse: Vec<([f64; 3], f32)> = if adaptive {
+            let coarse: Vec<([f64; 3], [f64; 3], f32)> = if adaptive {
                 (by0..by1)
                     .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))
-                    .map(|(x, y)| pixel(x, y, first))
+                    .map(|(x, y)| {
+                        let mut sum = [0.0; 3];
+                        let spread = samples(x, y, 0, first, spp, &mut sum);
+                        (sum, sum.map(|c| c / f64::from(first)), spread)
+                    })
                     .collect()
             } else {
                 Vec::new()
@@ -293,19 +312,28 @@ pub fn render(
             for y in y0..y1 {
                 for x in x0..x1 {
                     let mean = if adaptive {
-                        let (mean, spread) = *at(x, y);
+                        let (sum, mean, spread) = *at(x, y);
                         let smooth = spread <= ADAPTIVE_SPREAD
                             && (y.saturating_sub(1)..(y + 2).min(h)).all(|ny| {
                                 (x.saturating_sub(1)..(x + 2).min(w)).all(|nx| {
-                                    let other = at(nx, ny).0;
+                                    let other = at(nx, ny).1;
                                     (0..3).all(|k| {
                                         ((other[k] - mean[k]).abs() as f32) <= ADAPTIVE_SPREAD
                                     })
                                 })
                             });
-                        if smooth { mean } else { pixel(x, y, spp).0 }
+                        if smooth {
+                            mean
+                        } else {
+                            // The rest of the samples, after the first pass's.
+                            let mut sum = sum;
+                            samples(x, y, first, spp, spp, &mut sum);
+                            sum.map(|c| c / f64::from(spp))
+                        }
                     } else {
-                        pixel(x, y, spp).0
+                        let mut sum = [0.0; 3];
+                        samples(x, y, 0, spp, spp, &mut sum);
+                        sum.map(|c| c / f64::from(spp))
                     };
                     let px = mean.map(|c| {
                         let linear = c.clamp(0.0, 1.0) as f32;
@@ -335,4 +363,72 @@ pub fn render(
         counts.shadowed += c.shadowed;
     }
     Ok(Rendering { width: w, height: h, pixels: image_pixels, counts, elapsed: start.elapsed() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The first 4 and the first 16 samples of a pixel are (0, k, 2)-nets: one sample in every
+    /// elementary box of area 1/4 (resp. 1/16) of the pixel, for every shape of box, so a
+    /// refined pixel's 16 samples are as well spread as a fresh set (checked before the
+    /// per-pixel shift, which moves every box alike modulo 1).
+    #[test]
+    fn first_samples_are_nets() {
+        for k in [2u32, 4] {
+            let n = 1u32 << k;
+            let points: Vec<(f64, f64)> =
+                (0..n).map(|s| (radical_inverse(s), sobol_second(s))).collect();
+            for a in 0..=k {
+                let (cols, rows) = (1u32 << a, 1u32 << (k - a));
+                let mut seen = vec![0u32; n as usize];
+                for &(x, y) in &points {
+                    let (i, j) = ((x * f64::from(cols)) as u32, (y * f64::from(rows)) as u32);
+                    seen[(j * cols + i) as usize] += 1;
+                }
+                assert!(seen.iter().all(|&c| c == 1), "{n} samples, boxes {cols}×{rows}: {seen:?}");
+            }
+        }
+    }
+
+    /// An adaptive render equals a plain one wherever it refines, and the refined pixels keep
+    /// their first samples: rendering with `first_pass` costs fewer camera rays than the first
+    /// pass plus a fresh full set.
+    #[test]
+    fn refined_pixels_keep_their_first_samples() {
+        use crate::{Geometry, HarmonicObject, HarmonicOptions, Light, SceneObject};
+        use glam::DVec3;
+        let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicOptions::default())
+            .expect("sphere");
+        let light = Light::Directional { direction: DVec3::new(1.0, 1.0, 2.0), intensity: [1.0; 3] };
+        let scene =
+            Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(sphere))], vec![light], [0.0; 3])
+                .expect("scene");
+        let camera =
+            Camera::try_new(DVec3::new(0.0, -4.0, 1.0), DVec3::ZERO, DVec3::Z, 0.7).expect("camera");
+        let plain =
+            RenderOptions { width: 24, height: 18, samples_per_pixel: 16, tile_size: 8, first_pass: 0 };
+        let adaptive = RenderOptions { first_pass: 4, ..plain };
+        let a = render(&scene, &camera, &plain, None).expect("renders");
+        let b = render(&scene, &camera, &adaptive, None).expect("renders");
+        let pixels = (plain.width * plain.height) as usize;
+        // The first pass: 4 samples in each tile and the one-pixel border around it.
+        let (w, h, t) = (plain.width, plain.height, plain.tile_size);
+        let mut first = 0;
+        for ty in 0..h.div_ceil(t) {
+            for tx in 0..w.div_ceil(t) {
+                let (x0, y0) = ((tx * t).saturating_sub(1), (ty * t).saturating_sub(1));
+                let (x1, y1) = ((tx * t + t + 1).min(w), (ty * t + t + 1).min(h));
+                first += 4 * ((x1 - x0) * (y1 - y0)) as usize;
+            }
+        }
+        // Each refined pixel takes 12 more samples, not 16, and comes out as in the plain
+        // render, bit for bit.
+        let extra = b.counts.camera - first;
+        assert_eq!(extra % 12, 0, "{} camera rays", b.counts.camera);
+        let refined = extra / 12;
+        let same = a.pixels.iter().zip(&b.pixels).filter(|(p, q)| p == q).count();
+        assert!(refined > 0 && refined < pixels, "{refined} of {pixels} pixels refined");
+        assert!(same >= refined, "{same} pixels as in the plain render, {refined} refined");
+    }
 }

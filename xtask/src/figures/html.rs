@@ -223,7 +223,7 @@ pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String 
             let file = f.file(p);
             let title = escape(&f.title(p));
             match f.format {
-                Format::Svg | Format::Png => {
+                Format::Svg | Format::Png | Format::Webp => {
                     let _ = writeln!(
                         s,
                         "<figure><a href=\"{file}\"><img src=\"{file}\" alt=\"{title}\"></a>\

@@ -31,8 +31,10 @@
 //! check follow from the registry.
 //!
 //! Every file is a pure function of the code: `--check` regenerates everything in memory and
-//! fails, naming the files, if anything committed differs, is missing or is left over; so does
-//! the test `committed_figures_are_current`.
+//! fails, naming the files, if anything committed differs, is missing or is left over. The test
+//! `committed_figures_are_current` and `cargo xtask crosscheck` do the same for every file but
+//! the renders (1200×900, most of the work: minutes in a release build), whose presence they
+//! check; CI runs `--check` as well.
 
 mod basis;
 mod bezier;
@@ -94,10 +96,12 @@ pub(crate) enum Format {
     /// A plot: SVG, shown inline on the index page.
     Svg,
     /// A 3-D model: binary glTF (`.glb`), linked from the index page, with a render of it beside
-    /// it (`.png`, the same stem, drawn by [`renders`] from the model's bytes) shown inline.
+    /// it (`.webp`, the same stem, drawn by [`renders`] from the model's bytes) shown inline.
     Glb,
     /// An image: PNG (geometry images), shown inline on the index page.
     Png,
+    /// A render: lossless WebP, shown inline on the index page.
+    Webp,
 }
 
 impl Format {
@@ -107,6 +111,7 @@ impl Format {
             Self::Svg => "svg",
             Self::Glb => "glb",
             Self::Png => "png",
+            Self::Webp => "webp",
         }
     }
 }
@@ -147,12 +152,12 @@ impl Figure {
         format!("fig-{chapter}-{number:02}{}.{}", panel.suffix, self.format.extension())
     }
 
-    /// The file name of the render of a `.glb` panel: `fig-5-10.png`, or an SVG for a
+    /// The file name of the render of a `.glb` panel: `fig-5-10.webp`, or an SVG for a
     /// curvature picture, which has its colour bar beside the render.
     fn render_file(&self, panel: &Panel) -> String {
         let (chapter, number) = self.number;
         let extension =
-            if surfaces::has_colour_bar(self.number, panel.suffix) { "svg" } else { "png" };
+            if surfaces::has_colour_bar(self.number, panel.suffix) { "svg" } else { "webp" };
         format!("fig-{chapter}-{number:02}{}.{extension}", panel.suffix)
     }
 
@@ -207,9 +212,27 @@ fn tables() -> Vec<Table> {
 /// A generated file: its name inside [`OUT_DIR`] and its bytes.
 pub(crate) type Output = (String, Vec<u8>);
 
+/// Whether [`generate`] renders the models.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Renders {
+    /// Render every model (and the two rendered figures 5.25, 5.26).
+    Draw,
+    /// Leave the renders out: their names are listed, not drawn.
+    Skip,
+}
+
+/// The files [`generate`] made, and the names of the renders it left out ([`Renders::Skip`]).
+#[derive(Debug, Default)]
+pub(crate) struct Generated {
+    /// The files drawn.
+    pub(crate) files: Vec<Output>,
+    /// The renders not drawn.
+    pub(crate) skipped: Vec<String>,
+}
+
 /// Draws every figure and the index page, in memory, with a progress bar if `progress` and
-/// standard error is a terminal.
-pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
+/// standard error is a terminal; the renders only with [`Renders::Draw`].
+pub(crate) fn generate(progress: bool, renders: Renders) -> Result<Generated> {
     let figures = registry();
     let count: usize = figures.iter().map(|f| f.panels.len()).sum();
     let bar = if progress && std::io::stderr().is_terminal() {
@@ -220,28 +243,37 @@ pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
         ProgressBar::hidden()
     };
     let mut outputs = Vec::with_capacity(count + 1);
+    let mut skipped = Vec::new();
     for figure in &figures {
         let mut drawn = Vec::with_capacity(figure.panels.len());
         for panel in figure.panels {
             let file = figure.file(panel);
+            if renders == Renders::Skip && figure.format == Format::Webp {
+                skipped.push(file);
+                bar.inc(1);
+                continue;
+            }
             bar.set_message(file.clone());
             let bytes =
                 (panel.draw)(&figure.title(panel)).with_context(|| format!("drawing {file}"))?;
             drawn.push((file, bytes));
             bar.inc(1);
         }
-        if figure.format == Format::Glb {
+        if figure.format == Format::Glb && renders == Renders::Skip {
+            skipped.extend(figure.panels.iter().map(|p| figure.render_file(p)));
+        } else if figure.format == Format::Glb {
             // The panels' renders, framed together when they show one object.
+            bar.set_message(format!("rendering figure {}", figure.label()));
             let glbs: Vec<&[u8]> = drawn.iter().map(|(_, b)| b.as_slice()).collect();
-            let pngs = renders::render_models(figure.number, &glbs)
+            let images = renders::render_models(figure.number, &glbs)
                 .with_context(|| format!("rendering figure {}", figure.label()))?;
-            for (panel, png) in figure.panels.iter().zip(pngs) {
+            for (panel, image) in figure.panels.iter().zip(images) {
                 let picture = if surfaces::has_colour_bar(figure.number, panel.suffix) {
                     let (legend, symbol) = surfaces::colour_bar(figure.number, panel.suffix)?;
                     let size = (renders::WIDTH, renders::HEIGHT);
-                    surfaces::colour_bar_svg(&png, size, &legend, symbol).into_bytes()
+                    surfaces::colour_bar_svg(&image, size, &legend, symbol).into_bytes()
                 } else {
-                    png
+                    image
                 };
                 outputs.push((figure.render_file(panel), picture));
             }
@@ -258,7 +290,7 @@ pub(crate) fn generate(progress: bool) -> Result<Vec<Output>> {
     outputs.push((INDEX.to_owned(), index(&figures, &computed).into_bytes()));
     outputs.push((html::GALLERY.to_owned(), html::gallery(&figures, &computed).into_bytes()));
     outputs.push((html::VIEWER.to_owned(), html::VIEWER_PAGE.as_bytes().to_vec()));
-    Ok(outputs)
+    Ok(Generated { files: outputs, skipped })
 }
 
 /// The index page: every figure with its files, caption and notes, the tables, then the
@@ -320,7 +352,7 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
                 let _ = writeln!(s, "{}: `{file}`\n", p.title);
             }
             match f.format {
-                Format::Svg | Format::Png => {
+                Format::Svg | Format::Png | Format::Webp => {
                     let _ = writeln!(s, "![{}]({file})\n", f.title(p));
                 }
                 Format::Glb => {
@@ -369,32 +401,40 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
     s
 }
 
-/// The names of the files in `dir` that differ from `outputs`, are missing, or are figures
-/// (`fig-*`) that nothing generates any more.
-pub(crate) fn stale_files(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
+/// The names of the files in `dir` that differ from the files `generated`, are missing (a
+/// skipped render included), or are figures (`fig-*`) that nothing generates any more.
+pub(crate) fn stale_files(dir: &Path, generated: &Generated) -> Result<Vec<String>> {
     let mut stale = Vec::new();
-    for (name, bytes) in outputs {
+    for (name, bytes) in &generated.files {
         match std::fs::read(dir.join(name)) {
             Ok(on_disk) if on_disk == *bytes => {}
             Ok(_) => stale.push(format!("{name} (differs)")),
             Err(_) => stale.push(format!("{name} (missing)")),
         }
     }
-    for name in orphans(dir, outputs)? {
+    for name in &generated.skipped {
+        if !dir.join(name).is_file() {
+            stale.push(format!("{name} (missing)"));
+        }
+    }
+    for name in orphans(dir, generated)? {
         stale.push(format!("{name} (no longer generated)"));
     }
     Ok(stale)
 }
 
-/// The `fig-*` files in `dir` that are not among `outputs`, sorted.
-fn orphans(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
+/// The `fig-*` files in `dir` that are neither among the files `generated` nor its skipped
+/// renders, sorted.
+fn orphans(dir: &Path, generated: &Generated) -> Result<Vec<String>> {
     if !dir.exists() {
         return Ok(Vec::new());
     }
     let mut found = Vec::new();
     for entry in std::fs::read_dir(dir).with_context(|| format!("reading {}", dir.display()))? {
         let name = entry?.file_name().to_string_lossy().into_owned();
-        if name.starts_with("fig-") && !outputs.iter().any(|(n, _)| *n == name) {
+        let known = generated.files.iter().any(|(n, _)| *n == name)
+            || generated.skipped.iter().any(|n| *n == name);
+        if name.starts_with("fig-") && !known {
             found.push(name);
         }
     }
@@ -411,9 +451,9 @@ fn orphans(dir: &Path, outputs: &[Output]) -> Result<Vec<String>> {
 /// stale; the error names the stale files.
 pub(crate) fn run(root: &Path, check: bool) -> Result<()> {
     let dir = root.join(OUT_DIR);
-    let outputs = generate(true)?;
+    let generated = generate(true, Renders::Draw)?;
     if check {
-        let stale = stale_files(&dir, &outputs)?;
+        let stale = stale_files(&dir, &generated)?;
         if !stale.is_empty() {
             bail!(
                 "{} file(s) in {OUT_DIR} are stale; run `cargo xtask figures`:\n  {}",
@@ -421,23 +461,23 @@ pub(crate) fn run(root: &Path, check: bool) -> Result<()> {
                 stale.join("\n  ")
             );
         }
-        println!("figures: {} files in {OUT_DIR} are current", outputs.len());
+        println!("figures: {} files in {OUT_DIR} are current", generated.files.len());
         return Ok(());
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let mut written = 0;
-    for (name, bytes) in &outputs {
+    for (name, bytes) in &generated.files {
         let path = dir.join(name);
         if std::fs::read(&path).ok().as_deref() != Some(bytes.as_slice()) {
             std::fs::write(&path, bytes).with_context(|| format!("writing {}", path.display()))?;
             written += 1;
         }
     }
-    for name in orphans(&dir, &outputs)? {
+    for name in orphans(&dir, &generated)? {
         std::fs::remove_file(dir.join(&name)).with_context(|| format!("removing {name}"))?;
         println!("figures: removed {name}, which nothing generates any more");
     }
-    println!("figures: {} files in {OUT_DIR}, {written} rewritten", outputs.len());
+    println!("figures: {} files in {OUT_DIR}, {written} rewritten", generated.files.len());
     Ok(())
 }
 
@@ -447,9 +487,11 @@ mod tests {
 
     #[test]
     fn committed_figures_are_current() {
+        // Every file but the renders, which `cargo xtask figures --check` compares.
         let dir = crate::project_root().join(OUT_DIR);
-        let outputs = generate(false).expect("every figure draws");
-        let stale = stale_files(&dir, &outputs).expect("docs/figures is readable");
+        let generated = generate(false, Renders::Skip).expect("every figure draws");
+        assert!(generated.skipped.len() > 100, "{} renders skipped", generated.skipped.len());
+        let stale = stale_files(&dir, &generated).expect("docs/figures is readable");
         assert!(stale.is_empty(), "stale figures, run `cargo xtask figures`: {stale:?}");
     }
 

@@ -657,26 +657,30 @@ fn superscript(e: i32) -> String {
         .collect()
 }
 
-/// The render `png` (`width`×`height` pixels) with a colour bar of `legend` at its right: the
+/// The render `image` (lossless WebP, `width`×`height` pixels) with a colour bar of `legend` at
+/// its right, laid out in units of a third of a pixel so that its text keeps its size beside a
+/// 400×300 picture and the render shows at full resolution: the
 /// palette from the legend's low end (bottom) to its high end (top), ticks at −a, −a/2, 0, a/2
 /// and a labelled with their values, the quantity's `symbol` above, and below it how many
 /// values the ends of the bar stand in for and how many were undefined.
 pub(crate) fn colour_bar_svg(
-    png: &[u8],
-    (width, height): (u32, u32),
+    image: &[u8],
+    (pixels_x, pixels_y): (u32, u32),
     legend: &ColorLegend,
     symbol: &str,
 ) -> String {
+    let (width, height) = (pixels_x / 3, pixels_y / 3);
     let bar_x = width + 16;
     let (top, bottom) = (40.0, f64::from(height) - 50.0);
     let total = width + 140;
     let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{total}\" height=\"{height}\" \
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{pixels_y}\" \
          viewBox=\"0 0 {total} {height}\" font-family=\"sans-serif\" font-size=\"13\">\n\
          <rect width=\"{total}\" height=\"{height}\" fill=\"#fff\"/>\n\
-         <image width=\"{width}\" height=\"{height}\" href=\"data:image/png;base64,{}\"/>\n\
+         <image width=\"{width}\" height=\"{height}\" href=\"data:image/webp;base64,{}\"/>\n\
          <defs><linearGradient id=\"bar\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">\n",
-        base64::encode(png)
+        3 * total,
+        base64::encode(image)
     );
     let colour = |c: [f32; 3]| {
         let [r, g, b] = c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8);
