@@ -3,8 +3,9 @@
 //! (see <https://github.com/matklad/cargo-xtask/>).
 //!
 //! Commands:
-//! - `figures [--check]`: regenerate the thesis figures into `docs/figures/` (with `--check`,
-//!   fail instead if a committed file is stale);
+//! - `figures [--check] [--no-renders]`: regenerate the thesis figures into `docs/figures/`
+//!   (with `--check`, fail instead if a committed file is stale; with `--no-renders`, leave the
+//!   renders, most of the work, as they are: for drafting, as the figure test checks);
 //! - `bench [topic]`: time our code and the peer programs side by side and write
 //!   `docs/performance.md`: every topic (`bench` or `bench all`) or one topic's section
 //!   (`curves`, `subdivision`, `fit`, `render`);
@@ -25,7 +26,14 @@ fn main() -> Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let root = project_root();
     match args.first().map(String::as_str) {
-        Some("figures") => figures::run(&root, args.iter().any(|a| a == "--check")),
+        Some("figures") => {
+            let renders = if args.iter().any(|a| a == "--no-renders") {
+                figures::Renders::Skip
+            } else {
+                figures::Renders::Draw
+            };
+            figures::run(&root, args.iter().any(|a| a == "--check"), renders)
+        }
         Some("bench") => bench::run(&root, args.get(1).map(String::as_str)),
         Some("crosscheck") => crosscheck::run(&root),
         Some("layers") => {
@@ -34,7 +42,7 @@ fn main() -> Result<()> {
             Ok(())
         }
         _ => bail!(
-            "usage: cargo xtask <figures [--check] | bench [all|curves|subdivision|fit|render] | crosscheck | layers>"
+            "usage: cargo xtask <figures [--check] [--no-renders] | bench [all|curves|subdivision|fit|render] | crosscheck | layers>"
         ),
     }
 }

@@ -264,6 +264,54 @@ fn json_error(e: &serde_json::Error) -> String {
 mod tests {
     use super::*;
 
+    /// Replays the fuzzing corpus of the JSON inputs (`fuzz/corpus/json_inputs`, from the
+    /// campaign recorded in `docs/reliability.md`) as the fuzz target runs it: nothing may
+    /// panic, what is read is finite, and the curve or surface the commands build from it
+    /// evaluates to finite points.
+    #[test]
+    fn the_fuzzing_corpus_replays_without_a_failure() {
+        use hi_curve::HarmonicCurve;
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus/json_inputs");
+        if !dir.exists() {
+            // A packaged crate leaves the fuzzing folder out (it is a package of its own).
+            eprintln!("no fuzz corpus beside this crate: it is replayed in the repository");
+            return;
+        }
+        let mut files: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+            .map(|entry| entry.expect("a corpus entry").path())
+            .collect();
+        files.sort();
+        let (mut curves, mut surfaces) = (0, 0);
+        for path in &files {
+            let data = std::fs::read(path).expect("a corpus file");
+            let Ok(text) = std::str::from_utf8(&data) else { continue };
+            let name = path.display();
+            if let Ok(points) = parse_points(text) {
+                let finite = match points {
+                    Points::One(p) => HarmonicCurve::try_new(p).map(|c| c.eval(0.37).is_finite()),
+                    Points::Two(p) => HarmonicCurve::try_new(p).map(|c| c.eval(0.37).is_finite()),
+                    Points::Three(p) => HarmonicCurve::try_new(p).map(|c| c.eval(0.37).is_finite()),
+                };
+                if let Ok(finite) = finite {
+                    curves += 1;
+                    assert!(finite, "{name}: a curve evaluates to a non-finite point");
+                }
+            }
+            if let Ok(grid) = parse_grid(text) {
+                assert!(grid.iter().flatten().all(|p| p.is_finite()), "{name}: non-finite texel");
+                if let Ok(s) = HarmonicSurface::try_new(grid) {
+                    surfaces += 1;
+                    assert!(s.eval(0.37, 0.61).is_finite(), "{name}: non-finite surface point");
+                }
+            }
+        }
+        assert!(
+            curves >= 3 && surfaces >= 2,
+            "the corpus builds {curves} curves, {surfaces} surfaces"
+        );
+    }
+
     #[test]
     fn shapes() {
         assert_eq!(parse_points("[1, [2], 3.5]"), Ok(Points::One(vec![1.0, 2.0, 3.5])));

@@ -93,8 +93,7 @@ impl Bvh {
         mut test: impl FnMut(usize, f64) -> Option<(f64, T)>,
     ) -> Option<(f64, T)> {
         let (t0, t1) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max)?;
-        let shift = t0;
-        let bray = f32_ray(ray, t0, t1);
+        let (bray, shift) = f32_ray(ray, t0, t1);
         let mut best: Option<(f64, T)> = None;
         let indices = &self.bvh.primitive_indices;
         let mut hit = RayHit::none();
@@ -118,7 +117,7 @@ impl Bvh {
         let Some((t0, t1)) = slab(ray, self.lo, self.hi, ray.t_min, ray.t_max) else {
             return false;
         };
-        let bray = f32_ray(ray, t0, t1);
+        let (bray, _) = f32_ray(ray, t0, t1);
         let indices = &self.bvh.primitive_indices;
         // The traversal stops at the first primitive given a distance inside the ray.
         !self.bvh.ray_traverse_miss(bray, |_, id| {
@@ -127,16 +126,30 @@ impl Bvh {
     }
 }
 
-/// The f32 ray of the traversal over [t0, t1] of `ray`, started where it enters the object's
-/// box (at t0), so that f32 rounding scales with the object, not with the camera distance.
-fn f32_ray(ray: &Ray, t0: f64, t1: f64) -> BvhRay {
-    let (o, d) = (ray.point_at(t0), ray.dir);
-    BvhRay::new(
+/// How far (in the ray's parameter) before the object's box the f32 ray starts: obvhs's wide
+/// BVH culls a box that the ray leaves before the parameter 10⁻⁴ (its `EPSILON`), so the
+/// traversal must start well before anything it has to find.
+const LEAD: f64 = 1e-3;
+
+/// The f32 ray of the traversal over [t0, t1] of `ray`, started [`LEAD`] before it enters the
+/// object's box (at t0), so that f32 rounding scales with the object, not with the camera
+/// distance; and the parameter of `ray` where the f32 ray starts (its t = 0).
+fn f32_ray(ray: &Ray, t0: f64, t1: f64) -> (BvhRay, f64) {
+    let start = t0 - LEAD;
+    let (o, d) = (ray.point_at(start), ray.dir);
+    // obvhs's wide BVH misses every box for a direction with a component exactly 0 (a ray
+    // along an axis); 10⁻³⁰ in its place moves the ray by 10⁻³⁰·t, far inside the boxes' pad.
+    let component = |x: f64| {
+        let x = x as f32;
+        if x == 0.0 { 1e-30f32.copysign(x) } else { x }
+    };
+    let f32_ray = BvhRay::new(
         Vec3A::new(o.x as f32, o.y as f32, o.z as f32),
-        Vec3A::new(d.x as f32, d.y as f32, d.z as f32),
+        Vec3A::new(component(d.x), component(d.y), component(d.z)),
         0.0,
-        up(t1 - t0),
-    )
+        up(t1 - start),
+    );
+    (f32_ray, start)
 }
 
 /// The parameter range [t0, t1] ∩ [`t_min`, `t_max`] where the ray is inside the box, by the

@@ -247,7 +247,7 @@ pub(crate) struct ShearedRay {
     t_min: f64,
     /// The axes taken as x, y, z.
     k: [usize; 3],
-    /// −d_x/d_z, −d_y/d_z, 1/d_z in the permuted axes.
+    /// `-d.x / d.z`, `-d.y / d.z` and `1 / d.z` for the direction d in the permuted axes.
     s: DVec3,
 }
 

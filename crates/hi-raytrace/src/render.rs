@@ -390,45 +390,4 @@ mod tests {
             }
         }
     }
-
-    /// An adaptive render equals a plain one wherever it refines, and the refined pixels keep
-    /// their first samples: rendering with `first_pass` costs fewer camera rays than the first
-    /// pass plus a fresh full set.
-    #[test]
-    fn refined_pixels_keep_their_first_samples() {
-        use crate::{Geometry, HarmonicObject, HarmonicOptions, Light, SceneObject};
-        use glam::DVec3;
-        let sphere = HarmonicObject::try_new(hi_surface::sphere(1.0), &HarmonicOptions::default())
-            .expect("sphere");
-        let light = Light::Directional { direction: DVec3::new(1.0, 1.0, 2.0), intensity: [1.0; 3] };
-        let scene =
-            Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(sphere))], vec![light], [0.0; 3])
-                .expect("scene");
-        let camera =
-            Camera::try_new(DVec3::new(0.0, -4.0, 1.0), DVec3::ZERO, DVec3::Z, 0.7).expect("camera");
-        let plain =
-            RenderOptions { width: 24, height: 18, samples_per_pixel: 16, tile_size: 8, first_pass: 0 };
-        let adaptive = RenderOptions { first_pass: 4, ..plain };
-        let a = render(&scene, &camera, &plain, None).expect("renders");
-        let b = render(&scene, &camera, &adaptive, None).expect("renders");
-        let pixels = (plain.width * plain.height) as usize;
-        // The first pass: 4 samples in each tile and the one-pixel border around it.
-        let (w, h, t) = (plain.width, plain.height, plain.tile_size);
-        let mut first = 0;
-        for ty in 0..h.div_ceil(t) {
-            for tx in 0..w.div_ceil(t) {
-                let (x0, y0) = ((tx * t).saturating_sub(1), (ty * t).saturating_sub(1));
-                let (x1, y1) = ((tx * t + t + 1).min(w), (ty * t + t + 1).min(h));
-                first += 4 * ((x1 - x0) * (y1 - y0)) as usize;
-            }
-        }
-        // Each refined pixel takes 12 more samples, not 16, and comes out as in the plain
-        // render, bit for bit.
-        let extra = b.counts.camera - first;
-        assert_eq!(extra % 12, 0, "{} camera rays", b.counts.camera);
-        let refined = extra / 12;
-        let same = a.pixels.iter().zip(&b.pixels).filter(|(p, q)| p == q).count();
-        assert!(refined > 0 && refined < pixels, "{refined} of {pixels} pixels refined");
-        assert!(same >= refined, "{same} pixels as in the plain render, {refined} refined");
-    }
 }

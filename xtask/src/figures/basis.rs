@@ -24,6 +24,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "σ³(t) = sin 3πt / (3 sin πt) over t ∈ [0, 1]; dots at the nodes t = j/3 where it is 1 or 0.",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 3) }],
     },
     Figure {
@@ -32,6 +33,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "σ₀, σ₁, σ₂ for n = 3 over t ∈ [0, 1], each labelled at its peak; σₖ(j/3) = δⱼₖ.",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| family(t, 3) }],
     },
     Figure {
@@ -40,6 +42,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "σ⁴(t) = cos πt · sin 4πt / (4 sin πt) over t ∈ [0, 1] (the even kernel).",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 4) }],
     },
     Figure {
@@ -48,6 +51,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "σ₀, …, σ₃ for n = 4 over t ∈ [0, 1], each labelled at its peak.",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| family(t, 4) }],
     },
     Figure {
@@ -56,6 +60,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "σ⁷(t) over t ∈ [0, 1].",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 7) }],
     },
     Figure {
@@ -64,6 +69,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "σ¹⁶(t) over t ∈ [0, 1].",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| kernel(t, 16) }],
     },
 ];

@@ -132,6 +132,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 normals jump at the patch edges.",
         data: "the exact 4×4 torus grid of docs/math.md §3 (`hi_surface::torus(2, 1)`).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Harmonic surface", draw: |_| harmonic_torus() },
             Panel {
@@ -149,6 +150,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 is below 6e-3 (1e-3 of the torus's width; the report of each conversion is in the table below).",
         data: "the exact 4×4 torus grid of docs/math.md §3.",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -167,8 +169,9 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Final rendering of mannequin head formed from Bézier patches",
         drawn: HEAD_DRAWN,
         data: "stand-in for the thesis's mannequin scan (not available): the scan of figure 5.10 (60 000 points on the \
-               head of figure 4.35, ±0.3% noise).",
+               head stand-in, ±0.3% noise).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a", title: "(a) Bézier patches", draw: |_| head_figure(false, false)
@@ -181,8 +184,9 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Final rendering of Spock formed from Bézier patches",
         drawn: HEAD_DRAWN,
         data: "stand-in for the thesis's Spock scan (not available): the scan of figure 5.11 (60 000 points on the head \
-               of figure 4.35 with pointed ears, ±0.3% noise).",
+               stand-in with pointed ears, ±0.3% noise).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Bézier patches", draw: |_| head_figure(true, false) },
             Panel { suffix: "b", title: "(b) Colour coded", draw: |_| head_figure(true, true) },

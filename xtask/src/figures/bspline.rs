@@ -29,6 +29,7 @@ pub(crate) const FIGURES: &[Figure] = &[Figure {
             network lies on one tensor-product surface through every data point; (e) the final curve network.",
     data: "stand-in: five slices of 5 to 8 unevenly spaced points on z = 0.6 sin(1.3x) cos(0.9y) + 0.1x, built in code.",
     format: Format::Svg,
+    views: &[],
     panels: &[
         Panel {
             suffix: "a",

@@ -36,6 +36,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "L₀, …, L₃ on the nodes 0, 1, 2, 3 (`LagrangeBasis`), u ∈ [0, 3]; they are cardinal and sum to 1 but go negative.",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: lagrange_basis }],
     },
     Figure {
@@ -44,6 +45,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The cubic through x₀, …, x₃ at the nodes 0, 1, 2, 3 (`LagrangeCurve`, Neville's algorithm); the faint dashed line is the polygon.",
         data: "stand-in: the Lagrange quadrilateral (x₀, x₁, x₂ from example 2.1, x₃ chosen).",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: lagrange_curve }],
     },
     Figure {
@@ -52,6 +54,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The Bernstein polynomials B³₀, …, B³₃ over t ∈ [0, 1] (`hi_bezier::Bernstein`).",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: bernstein }],
     },
     Figure {
@@ -61,6 +64,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (`BezierCurve::control_hull`), which holds the curve.",
         data: "stand-in: the Bézier quadrilateral.",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) The curve", draw: |t| bezier_hull(t, false) },
             Panel { suffix: "b", title: "(b) The convex hull", draw: |t| bezier_hull(t, true) },
@@ -73,6 +77,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (b) p₃ − p₂ = s(s₁ − s₀) with s = 0.6, the same direction and a longer second arm.",
         data: "stand-in: control points chosen here (p₀ = (0, 0), p₁ = (1, 2), p₂ = (2.5, 2), p₃ = (3, 0.5), s₂ = (5.5, −1.5), s₃ = (6.5, 1)).",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) C1", draw: |t| joins(t, 1.0) },
             Panel { suffix: "b", title: "(b) G1 with s = 0.6", draw: |t| joins(t, 0.6) },
@@ -85,6 +90,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 the repeated linear interpolations darker, and the point q(0.3) on the curve.",
         data: "stand-in: the Bézier quadrilateral.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: de_casteljau }],
     },
     Figure {
@@ -94,6 +100,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 p⁰₀, p¹₀, p²₀, p³₀ and p³₀, p²₁, p¹₂, p⁰₃ (pʳᵢ of eq. 2.6).",
         data: "stand-in: the Bézier quadrilateral.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: split }],
     },
     Figure {
@@ -103,6 +110,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (`RationalBezierCurve`): exactly the right half of the unit circle (the full circle faint for comparison).",
         data: "exact: the thesis's control points and weights.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: rational_arc }],
     },
     Figure {
@@ -112,6 +120,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 N₀, …, N₃ on the span [3, 4] of the uniform basis (`BSplineBasis`).",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: bspline_pieces }],
     },
     Figure {
@@ -121,6 +130,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 one another, each with support of four intervals; they sum to 1 on the domain [3, 8] (faint guides).",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: blending }],
     },
     Figure {
@@ -129,6 +139,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The Bézier curve of the nine control points (`BezierCurve` of degree 8): it follows the polygon only loosely.",
         data: "stand-in: the zigzag.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: degree_eight }],
     },
     Figure {
@@ -138,6 +149,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 six segments); as in the thesis's uniform construction it does not reach x₀ and x₈.",
         data: "stand-in: the zigzag.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: uniform_bspline }],
     },
     Figure {
@@ -147,6 +159,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 end control points x₀ = x₁, xₙ = xₙ₋₁ as eq. 2.9), its B-spline control polygon faint.",
         data: "stand-in: the zigzag.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: open_interpolation }],
     },
     Figure {
@@ -156,6 +169,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 system of §2.11, checked against scipy), its B-spline control polygon faint.",
         data: "stand-in: the peer pentagon.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: periodic_interpolation }],
     },
     Figure {
@@ -165,6 +179,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 its Bézier control polygon faint.",
         data: "stand-in: the zigzag (the points of figure 2.13, as in the thesis).",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| metapost(t, false) }],
     },
     Figure {
@@ -173,6 +188,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "METAPOST's closed path x₀..x₁..….x₄..cycle (`HobbyCurve`), its Bézier control polygon faint.",
         data: "stand-in: the peer pentagon (the points of figure 2.14, as in the thesis).",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| metapost(t, true) }],
     },
     Figure {
@@ -183,6 +199,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 parameter is illegible in the extracted text: t = 0.5 is chosen here.",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Catenary", draw: catenary },
             Panel { suffix: "b", title: "(b) Curvature", draw: catenary_curvature },
@@ -195,6 +212,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 from 20° above) with the axes faint; `SpaceCurve` gives κ = a/(a² + b²) and τ = b/(a² + b²), written on the plot.",
         data: EXACT,
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: helix }],
     },
 ];

@@ -25,6 +25,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (b) the harmonic curve, which for this square is exactly its circumcircle.",
         data: "stand-in: the square (the thesis's labels match it).",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -41,6 +42,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 in a fixed oblique projection (turned 30° about z, seen from 20° above) with the cube's edges faint.",
         data: "stand-in: the cube tour in Gray-code order 000, 100, 110, 010, 011, 111, 101, 001 (xyz).",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -57,6 +59,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 with the curve of (a) dashed for comparison.",
         data: "stand-in: the irregular quadrilateral.",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) four points", draw: |t| stability(t, false) },
             Panel {

@@ -47,9 +47,14 @@ pub(crate) const FIGURES: &[Figure] = &[Figure {
             points on the unit sphere, meshed over u ∈ [0, ½] with 32×64 quads. As in the thesis the result \
             has no visible blemish: every texel lies on the sphere (checked to 1e-12 when the figure is \
             generated), and the texels of a latitude–longitude grid on a sphere make the harmonic surface the \
-            sphere itself. Panel (a), the points, is left out of the models to keep them small.",
+            sphere itself. (a) The points, each drawn as a small ball.",
     data: "built-in: a Fibonacci lattice of 5000 points on the unit sphere (not on the image's rays).",
     format: Format::Glb,
+    views: &[Panel {
+        suffix: "a",
+        title: "(a) Data points",
+        draw: |_| super::renders::render_points((5, 12), &fibonacci(SCAN_POINTS), 0.004),
+    }],
     panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| sphere_fit() }],
 }];
 

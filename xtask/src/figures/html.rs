@@ -11,7 +11,7 @@
 
 use std::fmt::Write as _;
 
-use super::{Figure, Format, Table};
+use super::{Figure, Table};
 
 /// The file name of the gallery inside `docs/figures/`.
 pub(crate) const GALLERY: &str = "index.html";
@@ -219,27 +219,22 @@ pub(crate) fn gallery(figures: &[Figure], tables: &[(Table, String)]) -> String 
         // The panels in a grid (a figure of one panel spans it), each image linked to itself
         // at full size.
         let _ = writeln!(s, "<div class=\"panels\">");
-        for p in f.panels {
-            let file = f.file(p);
+        for (p, file, render, model) in f.entries() {
             let title = escape(&f.title(p));
-            match f.format {
-                Format::Svg | Format::Png | Format::Webp => {
-                    let _ = writeln!(
-                        s,
-                        "<figure><a href=\"{file}\"><img src=\"{file}\" alt=\"{title}\"></a>\
-                         <figcaption>{title}</figcaption></figure>"
-                    );
-                }
-                Format::Glb => {
-                    let render = f.render_file(p);
-                    let viewer = viewer_link(f.number, &file);
-                    let _ = writeln!(
-                        s,
-                        "<figure><a href=\"{viewer}\"><img src=\"{render}\" alt=\"{title}\"></a>\
-                         <figcaption>{title}: glTF model <a href=\"{file}\">{file}</a> \
-                         (<a href=\"{viewer}\">turn it</a>, <a href=\"{render}\">render</a>)</figcaption></figure>"
-                    );
-                }
+            if model {
+                let viewer = viewer_link(f.number, &file);
+                let _ = writeln!(
+                    s,
+                    "<figure><a href=\"{viewer}\"><img src=\"{render}\" alt=\"{title}\"></a>\
+                     <figcaption>{title}: glTF model <a href=\"{file}\">{file}</a> \
+                     (<a href=\"{viewer}\">turn it</a>, <a href=\"{render}\">render</a>)</figcaption></figure>"
+                );
+            } else {
+                let _ = writeln!(
+                    s,
+                    "<figure><a href=\"{file}\"><img src=\"{file}\" alt=\"{title}\"></a>\
+                     <figcaption>{title}</figcaption></figure>"
+                );
             }
         }
         let _ = writeln!(s, "</div>\n</section>");
@@ -331,7 +326,8 @@ mod tests {
         let page = crate::project_root().join(super::super::OUT_DIR).join(GALLERY);
         let html = std::fs::read_to_string(&page).expect("the gallery is committed");
         let images = html.matches("<img ").count();
-        let panels: usize = super::super::registry().iter().map(|f| f.panels.len()).sum();
+        let panels: usize =
+            super::super::registry().iter().map(|f| f.panels.len() + f.views.len()).sum();
         let in_tables: usize =
             super::super::tables().iter().map(|t| t.about.matches("![").count()).sum();
         assert_eq!(images, panels + in_tables, "one image per panel (a model's is its render)");

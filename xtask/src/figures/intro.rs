@@ -311,6 +311,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 second primitive of lines.",
         data: "stand-in for the thesis's polygonal object (not available): the head control mesh of figure 4.35.",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| polygonal_object() }],
     },
     Figure {
@@ -320,6 +321,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 and control points x₀ … x₃, labelled as in the thesis: it passes through x₀ and x₃ only.",
         data: "four control points chosen for the figure (exact).",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: bezier_curve }],
     },
     Figure {
@@ -327,9 +329,10 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "An unorganised set of points provided by Hoppe [35]",
         drawn: "Every 20th of the 60 000 points of the head's scan (3 000 points), projected orthographically, the \
                 half nearer the viewer blue and the farther half grey.",
-        data: "stand-in for Hoppe's point set (not available): the scan of figure 5.10 (points on the head of \
-               figure 4.35, ±0.3% noise).",
+        data: "stand-in for Hoppe's point set (not available): the scan of figure 5.10 (points on the head \
+               stand-in, ±0.3% noise).",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: point_set }],
     },
     Figure {
@@ -339,6 +342,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 grid with normals from the partial derivatives.",
         data: "control points chosen for the figure (exact).",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| example_patches() }],
     },
     Figure {
@@ -348,6 +352,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 converted by the thesis's cubic scheme of §5.7), one colour per patch, each sampled 9×9.",
         data: "stand-in for the surface of [13] (not available): the 4×4 torus grid `hi_surface::torus(2.5, 1)`.",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| piecewise_patches() }],
     },
     Figure {
@@ -358,6 +363,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 24 steps a side.",
         data: "control points chosen for the figure (exact).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Control mesh", draw: |_| triangle_net() },
             Panel { suffix: "b", title: "(b) Bézier triangle", draw: |_| triangle_surface() },
@@ -370,6 +376,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 cutting (the ¼ and ¾ points of every edge): the old points are cut away.",
         data: "stand-in for the thesis's polygon: the heptagon of figure 3.9.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| stages(t, chaikin) }],
     },
     Figure {
@@ -379,6 +386,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 scheme with w = 1/16: every step keeps the old points and adds one in every edge.",
         data: "stand-in for the thesis's polygon: the heptagon of figure 3.9.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |t| stages(t, four_point) }],
     },
 ];

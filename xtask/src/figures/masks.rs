@@ -50,6 +50,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 boundary rules).",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: notation }],
     },
     Figure {
@@ -60,6 +61,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 library; vertices drawn at the old vertices and the edge midpoints).",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) the mesh", draw: |t| split(t, SplitKind::Loop, 0) },
             Panel {
@@ -85,6 +87,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 checked to 1e-12 against the formulas; the boundary masks on a flat open patch.",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -126,6 +129,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 1e-12 against the formulas.",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -159,6 +163,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 the formulas.",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -183,6 +188,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 at the old vertices and the face centroids.",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) the mesh", draw: |t| split(t, SplitKind::Sqrt3, 0) },
             Panel {
@@ -214,6 +220,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 that vertex's weights) and checked to 1e-12 against the formulas.",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -249,6 +256,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 vertex's weights) and checked to 1e-12 against the formulas.",
         data: "exact",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",

@@ -61,6 +61,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 uniform harmonic curve (grey, dashed) for comparison.",
         data: "stand-in: the heptagon.",
         format: Format::Svg,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: overlay }],
     },
     Figure {
@@ -69,6 +70,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: DRAWN,
         data: "stand-in: the heptagon.",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a-thesis",
@@ -93,6 +95,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: DRAWN,
         data: "stand-in: the pentagon.",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a-thesis",
@@ -117,6 +120,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: DRAWN,
         data: "stand-in: the octagon.",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a-thesis",

@@ -125,6 +125,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 four cubic pieces, close to the circle but not a circle; (b) the harmonic curve, exactly the circumcircle.",
         data: STAND_IN_SQUARE,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -144,6 +145,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: BSPLINE_DRAWN,
         data: STAND_IN_SQUARE,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -163,6 +165,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: METAPOST_DRAWN,
         data: STAND_IN_HEPTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -182,6 +185,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: BSPLINE_DRAWN,
         data: STAND_IN_HEPTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -201,6 +205,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: METAPOST_DRAWN,
         data: STAND_IN_PENTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -220,6 +225,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: BSPLINE_DRAWN,
         data: STAND_IN_PENTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -239,6 +245,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: CURVATURE_DRAWN,
         data: STAND_IN_SQUARE,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -258,6 +265,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: CURVATURE_DRAWN,
         data: STAND_IN_HEPTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -277,6 +285,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: CURVATURE_DRAWN,
         data: STAND_IN_PENTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -296,6 +305,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: CURVATURE_DRAWN,
         data: STAND_IN_OCTAGON,
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",

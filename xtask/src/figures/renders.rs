@@ -143,11 +143,6 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
         .all(|m| diagonal(m) >= 0.5 * (hi - lo).length())
         .then(|| Camera::fitting(&all, from, DVec3::Z, FOV, aspect, FILL))
         .transpose()?;
-    // Edges [`EDGE_PIXELS`] wide, as seen.
-    let style = EdgeStyle {
-        color: EDGE_COLOR,
-        width: EDGE_PIXELS * 2.0 * (0.5 * FOV).tan() / f64::from(HEIGHT),
-    };
     meshes
         .into_iter()
         .zip(edges)
@@ -159,16 +154,105 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
                     (mesh.bounds().min, mesh.bounds().max),
                 ),
             };
-            let mut object = MeshObject::new(mesh);
-            if !edges.is_empty() {
-                object = object.with_edges(&edges, style)?;
-            }
-            let mut object = SceneObject::new(Geometry::Mesh(object));
-            object.material.color = [0.72, 0.74, 0.78];
-            let scene = Scene::try_new(vec![object, floor(lo, hi)?], lights(from), [1.0; 3])?;
-            webp(&scene, &camera, FIRST_PASS)
+            render_mesh(mesh, &edges, &camera, Some((lo, hi)), from, MODEL_COLOR)
         })
         .collect()
+}
+
+/// The colour of the models (linear RGB).
+const MODEL_COLOR: [f32; 3] = [0.72, 0.74, 0.78];
+
+/// The render of `mesh` with its `edges` drawn, through `camera`, on a floor under the box
+/// (`lo`, `hi`) (none for `None`), lit from `from` as [`render_models`] lights every model.
+fn render_mesh(
+    mesh: TriangleMesh,
+    edges: &[[u32; 2]],
+    camera: &Camera,
+    floor_under: Option<(DVec3, DVec3)>,
+    from: DVec3,
+    color: [f32; 3],
+) -> Result<Vec<u8>> {
+    // Edges [`EDGE_PIXELS`] wide, as seen.
+    let style = EdgeStyle {
+        color: EDGE_COLOR,
+        width: EDGE_PIXELS * 2.0 * (0.5 * FOV).tan() / f64::from(HEIGHT),
+    };
+    let mut object = MeshObject::new(mesh);
+    if !edges.is_empty() {
+        object = object.with_edges(edges, style)?;
+    }
+    let mut object = SceneObject::new(Geometry::Mesh(object));
+    object.material.color = color;
+    let mut objects = vec![object];
+    if let Some((lo, hi)) = floor_under {
+        objects.push(floor(lo, hi)?);
+    }
+    let scene = Scene::try_new(objects, lights(from), [1.0; 3])?;
+    webp(&scene, camera, FIRST_PASS)
+}
+
+/// A close-up of the model `glb` of figure `number`: the camera of [`render_models`] framing
+/// only the vertices for which `keep` holds (the face of a head), the whole model in the scene.
+pub(crate) fn render_close_up(
+    number: (u32, u32),
+    glb: &[u8],
+    keep: fn(DVec3) -> bool,
+) -> Result<Vec<u8>> {
+    let (mesh, edges) = mesh_from_glb(glb)?;
+    let part: Vec<DVec3> = mesh.positions().iter().copied().filter(|p| keep(*p)).collect();
+    ensure!(part.len() >= 3, "the close-up frames {} vertices", part.len());
+    let from = view(number);
+    let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
+    let camera = Camera::fitting(&part, from, DVec3::Z, FOV, aspect, FILL)?;
+    let b = mesh.bounds();
+    render_mesh(mesh, &edges, &camera, Some((b.min, b.max)), from, MODEL_COLOR)
+}
+
+/// A render of the point set `points` of figure `number`, each point a small smooth ball
+/// (an octahedron with its normals from its centre) of radius `size` times the points'
+/// bounding-box diagonal, framed and lit as [`render_models`] frames a model, on white with no
+/// floor (the speckled shadow of thousands of balls says nothing and triples the file).
+pub(crate) fn render_points(number: (u32, u32), points: &[DVec3], size: f64) -> Result<Vec<u8>> {
+    ensure!(!points.is_empty(), "no points to draw");
+    let (lo, hi) = points
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let r = size * (hi - lo).length();
+    let axes = [DVec3::X, -DVec3::X, DVec3::Y, -DVec3::Y, DVec3::Z, -DVec3::Z];
+    // The eight faces of the octahedron as indices into `axes`, wound outwards.
+    let faces: [[u32; 3]; 8] =
+        [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]];
+    let mut positions = Vec::with_capacity(6 * points.len());
+    let mut normals = Vec::with_capacity(6 * points.len());
+    let mut triangles = Vec::with_capacity(8 * points.len());
+    for (k, p) in points.iter().enumerate() {
+        let base = u32::try_from(6 * k)?;
+        positions.extend(axes.iter().map(|a| *p + *a * r));
+        normals.extend(axes);
+        triangles.extend(faces.iter().map(|f| f.map(|i| base + i)));
+    }
+    let uvs = vec![DVec2::ZERO; positions.len()];
+    let mesh = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
+    let from = view(number);
+    let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
+    let camera = Camera::fitting(points, from, DVec3::Z, FOV, aspect, FILL)?;
+    render_mesh(mesh, &[], &camera, None, from, POINT_COLOR)
+}
+
+/// The colour of data points (linear RGB): a blue, as the point sets of the plots.
+const POINT_COLOR: [f32; 3] = [0.12, 0.25, 0.62];
+
+/// The JPEG quality of the renders embedded in the curvature pictures' SVGs.
+const JPEG_QUALITY: u8 = 92;
+
+/// The render `webp` (lossless) as a JPEG of quality [`JPEG_QUALITY`]: a fifth of the size
+/// on the curvature maps' smooth colours, which a colour-bar SVG carries in base64.
+pub(crate) fn to_jpeg(webp: &[u8]) -> Result<Vec<u8>> {
+    let image = image::load_from_memory(webp)?.to_rgb8();
+    let mut bytes = Vec::new();
+    image::codecs::jpeg::JpegEncoder::new_with_quality(&mut bytes, JPEG_QUALITY)
+        .encode_image(&image)?;
+    Ok(bytes)
 }
 
 /// The render of one model `glb` of figure `number`, as [`render_models`] makes it.
@@ -267,6 +351,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 methods.",
         data: "the exact 4×4 torus grid of docs/math.md §3 (`hi_surface::torus(2, 1)`).",
         format: Format::Webp,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| scanline_torus() }],
     },
     Figure {
@@ -280,6 +365,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 and a point light. The thesis took several hours for its torus; this takes seconds.",
         data: "exact: `hi_surface::torus(2, 1)` and `hi_surface::sphere(1)` moved to (2.6, 2.4, 0).",
         format: Format::Webp,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| raytraced_torus() }],
     },
 ];

@@ -5,9 +5,10 @@
 //! octahedral and flattened-octahedral layouts — and a table of how well each fits its scan.
 //!
 //! The thesis's scans (Hoppe's mannequin head, Spock, and the public models of figures
-//! 5.21–5.23) are not available, so the scans are made in code: the closed head of figure 4.35
-//! (three Loop steps) and the same head with pointed ears stand in for the mannequin and Spock,
-//! three star-shaped solids for the public models, each sampled with 60 000 points and given
+//! 5.21–5.23) are not available, so the scans are made in code: a head ([`head_point`]: skull,
+//! jaw and neck, nose, eye sockets, brow, cheekbones, lips, chin and ears) and the same head with
+//! Spock's pointed ears stand in for the mannequin and Spock, three star-shaped solids for the
+//! public models, each sampled with 60 000 points and given
 //! a deterministic noise of ±0.3% of its size along the direction from its centre, as a scanner
 //! would. Figure 5.24 fits the head's coarse control mesh (146 vertices), whose points are too
 //! few for the rays, once as it is and once resampled on its triangles as the thesis did. The
@@ -22,7 +23,7 @@ use glam::{DVec2, DVec3};
 use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
 use hi_mesh::TriangleMesh;
-use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
+use hi_mesh::subdivision::PolyMesh;
 use hi_surface::{HarmonicSurface, MeshOptions};
 
 use super::glb::glb;
@@ -44,7 +45,7 @@ const PIXELS_PER_TEXEL: u32 = 4;
 /// The stand-in scans.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Model {
-    /// The head of figure 4.35 (the mannequin).
+    /// The head stand-in (the mannequin), [`head_point`].
     Head,
     /// The head with pointed ears (Spock).
     Pointed,
@@ -110,11 +111,8 @@ fn scan(model: Model) -> Result<Scan> {
     };
     let points = match model {
         Model::Head | Model::Pointed => {
-            let mesh =
-                Scheme::Loop(LoopWeights::Loop).steps(&head_with(model == Model::Pointed)?, 3)?;
-            let triangles = mesh_triangles(&mesh)?;
-            let scan = Scan { points: mesh.positions().to_vec(), triangles, ..Scan::default() };
-            hi_geomimage::sampling::densify(&scan, SCAN_POINTS)
+            let pointed = model == Model::Pointed;
+            directions(SCAN_POINTS).map(|d| head_point(d, pointed)).collect()
         }
         Model::Bumpy => radial(&|d| {
             let (theta, phi) = (d.z.acos(), d.y.atan2(d.x));
@@ -124,6 +122,62 @@ fn scan(model: Model) -> Result<Scan> {
         Model::Peanut => radial(&|d| 0.7 + 0.5 * d.z * d.z),
     };
     Ok(Scan { points: with_noise(points), ..Scan::default() })
+}
+
+/// A bump of height `h` on the unit sphere about the unit direction `centre`, `across` wide
+/// horizontally and `along` high (both in radians, roughly: the tangent components of `dir` are
+/// taken for the angles), falling off as exp(−ρ^(2·`flat`)) with ρ the scaled distance: `flat`
+/// 1 is a Gaussian, more is flatter on top with a steeper edge. Zero on the far hemisphere.
+fn bump(dir: DVec3, centre: DVec3, (across, along): (f64, f64), h: f64, flat: i32) -> f64 {
+    let c = centre.normalize();
+    if dir.dot(c) <= 0.0 {
+        return 0.0;
+    }
+    let east = DVec3::Z.cross(c).try_normalize().unwrap_or(DVec3::X);
+    let north = c.cross(east);
+    let (a, b) = (dir.dot(east) / across, dir.dot(north) / along);
+    h * (-(a * a + b * b).powi(flat)).exp()
+}
+
+/// The head stand-in: the point of its surface in the unit direction `dir` (it is star-shaped
+/// about the origin, as the thesis's algorithm 2 needs), facing +y with +z up, about 1.6 wide,
+/// 1.8 deep and 2.4 high. A radius 1 + Σ bumps ([`bump`]: nose bridge, tip and wings, eye
+/// sockets, brow, cheekbones, lips and the mouth's line between them, chin, ears with a hollow
+/// inside the rim, `pointed` ears rising to a tip for Spock) on an egg-shaped skull, narrowed
+/// to a jaw and a neck below.
+pub(crate) fn head_point(dir: DVec3, pointed: bool) -> DVec3 {
+    let v = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+    let mut r = 1.0;
+    // The nose: a ridge from the bridge down to a rounded tip, and its wings.
+    r += bump(dir, v(0.0, 0.99, 0.0), (0.075, 0.17), 0.1, 2);
+    r += bump(dir, v(0.0, 0.95, -0.2), (0.09, 0.08), 0.2, 1);
+    for side in [-1.0, 1.0] {
+        r += bump(dir, v(0.1 * side, 0.95, -0.21), (0.05, 0.045), 0.07, 1);
+        // Eye sockets under the brow with the eyes in them, cheekbones below and outside.
+        r -= bump(dir, v(0.3 * side, 0.92, 0.12), (0.13, 0.08), 0.08, 2);
+        r += bump(dir, v(0.3 * side, 0.93, 0.11), (0.07, 0.045), 0.05, 1);
+        r += bump(dir, v(0.5 * side, 0.82, -0.08), (0.13, 0.09), 0.05, 1);
+        // The ears: a flat oval with a hollow inside its rim.
+        r += bump(dir, v(side, -0.08, 0.05), (0.1, 0.2), 0.2, 2);
+        r -= bump(dir, v(side, -0.05, 0.06), (0.05, 0.12), 0.07, 2);
+        if pointed {
+            // Spock's: the rim drawn up and back to a point well above the ear.
+            r += bump(dir, v(side, -0.13, 0.32), (0.07, 0.14), 0.21, 1);
+            r += bump(dir, v(side, -0.19, 0.5), (0.04, 0.09), 0.2, 1);
+        }
+    }
+    r += bump(dir, v(0.0, 0.92, 0.3), (0.42, 0.06), 0.05, 2); // brow
+    // Lips, parted by the line of the mouth, and the chin.
+    r += bump(dir, v(0.0, 0.9, -0.37), (0.14, 0.04), 0.045, 2);
+    r += bump(dir, v(0.0, 0.88, -0.45), (0.12, 0.04), 0.04, 2);
+    r -= bump(dir, v(0.0, 0.89, -0.41), (0.14, 0.014), 0.02, 1);
+    r += bump(dir, v(0.0, 0.78, -0.6), (0.15, 0.1), 0.08, 1);
+    // An egg-shaped skull, narrower at the jaw (a smoothed 0.22·max(−z, 0)), and a neck.
+    let down = -dir.z;
+    let jaw = 1.0 - 0.11 * (down + (down * down + 0.02).sqrt());
+    let t = ((down - 0.75) / 0.25).clamp(0.0, 1.0);
+    let neck = 1.0 - 0.3 * t * t * (3.0 - 2.0 * t);
+    DVec3::new(0.78 * jaw * neck * dir.x, 0.9 * jaw * neck * dir.y, 1.1 * dir.z) * r
 }
 
 /// The scan of the head stand-in (mannequin), or of the head with pointed ears (Spock).
@@ -316,6 +370,24 @@ fn fit_png(model: Model, setup: Setup, half: bool) -> Result<Vec<u8>> {
     image_png(image, if half { image.rows() / 2 } else { image.rows() })
 }
 
+/// Every tenth point of the scan of `model`, rendered for figure `number` (its panel (a), "Data
+/// points").
+fn points_view(number: (u32, u32), model: Model) -> Result<Vec<u8>> {
+    let points: Vec<DVec3> = scan(model)?.points.into_iter().step_by(10).collect();
+    super::renders::render_points(number, &points, 0.0022)
+}
+
+/// Whether the point `p` of a head lies on its face: in front of the ears, between the chin
+/// and the brow (the close-ups of figures 5.14–5.17 frame it).
+fn on_face(p: DVec3) -> bool {
+    p.y > 0.35 && p.z > -0.85 && p.z < 0.45 && p.x.abs() < 0.6
+}
+
+/// The close-up of the face of the head model `glb`, for figure `number` (its panel (b)).
+fn close_up(number: (u32, u32), glb: &[u8]) -> Result<Vec<u8>> {
+    super::renders::render_close_up(number, glb, on_face)
+}
+
 /// The render of the harmonic surface of the head's fit, for figure `number`.
 fn surface_png(number: (u32, u32), setup: Setup) -> Result<Vec<u8>> {
     super::renders::render_model(number, &harmonic_glb(Model::Head, setup)?)
@@ -334,26 +406,39 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 10),
         caption: "Surface fitting using harmonic tensor product surfaces (mannequin)",
         drawn: "The harmonic surface through a 64×64 spherical geometry image (algorithm 2) of the head's scan, \
-                smoothed by a Gaussian of σ = 1 texel, meshed with 2×2 quads per texel over u ∈ [0, ½].",
-        data: "stand-in for the thesis's mannequin scan (not available): 60 000 points on the head of figure 4.35 \
-               (three Loop steps), with ±0.3% noise along the rays.",
+                smoothed by a Gaussian of σ = 1 texel, meshed with 2×2 quads per texel over u ∈ [0, ½]; (a) every \
+                tenth point of the scan, each drawn as a small ball.",
+        data: "stand-in for the thesis's mannequin scan (not available): 60 000 points on a head made in code \
+               (`head_point`: skull, jaw and neck, nose, eye sockets and eyes, brow, cheekbones, lips, chin and \
+               ears), with ±0.3% noise along the rays.",
         format: Format::Glb,
+        views: &[Panel {
+            suffix: "a",
+            title: "(a) Data points",
+            draw: |_| points_view((5, 10), Model::Head),
+        }],
         panels: &[Panel {
-            suffix: "",
-            title: "",
+            suffix: "b",
+            title: "(b) Surface",
             draw: |_| harmonic_glb(Model::Head, SPHERE_SMOOTH),
         }],
     },
     Figure {
         number: (5, 11),
         caption: "Surface fitting using harmonic tensor product surfaces (Spock)",
-        drawn: "As figure 5.10 for the head with pointed ears; its geometry image is figure 5.13.",
-        data: "stand-in for the thesis's Spock scan (not available): 60 000 points on the head of figure 4.35 with \
-               pointed ears (three Loop steps), with ±0.3% noise along the rays.",
+        drawn: "As figure 5.10 for the head with pointed ears, (a) its data points and (b) the surface; its geometry \
+                image is figure 5.13.",
+        data: "stand-in for the thesis's Spock scan (not available): 60 000 points on the head of figure 5.10 with \
+               Spock's ears drawn up to a point, with ±0.3% noise along the rays.",
         format: Format::Glb,
+        views: &[Panel {
+            suffix: "a",
+            title: "(a) Data points",
+            draw: |_| points_view((5, 11), Model::Pointed),
+        }],
         panels: &[Panel {
-            suffix: "",
-            title: "",
+            suffix: "b",
+            title: "(b) Surface",
             draw: |_| harmonic_glb(Model::Pointed, SPHERE_SMOOTH),
         }],
     },
@@ -365,6 +450,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 lower half repeats the upper turned by half a period, so the image is periodic both ways.",
         data: "the Spock stand-in of figure 5.11.",
         format: Format::Png,
+        views: &[],
         panels: &[Panel {
             suffix: "",
             title: "",
@@ -375,37 +461,71 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 14),
         caption: "Surface produced by spherical geometry image (mannequin)",
         drawn: "The texels of the 64×64 spherical geometry image joined directly (one quad per texel, normals from \
-                the faces), no smoothing: the undulations the thesis attributes to the geometry image.",
+                the faces), no smoothing: the undulations the thesis attributes to the geometry image. (b) The same \
+                model framed on the face.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Glb,
-        panels: &[Panel { suffix: "", title: "", draw: |_| texel_glb(Model::Head, SPHERE) }],
+        views: &[Panel {
+            suffix: "b",
+            title: "(b) Close-up",
+            draw: |_| close_up((5, 14), &texel_glb(Model::Head, SPHERE)?),
+        }],
+        panels: &[Panel {
+            suffix: "a",
+            title: "(a) Surface",
+            draw: |_| texel_glb(Model::Head, SPHERE),
+        }],
     },
     Figure {
         number: (5, 15),
         caption: "Surface produced by harmonic interpolation (mannequin)",
         drawn: "The harmonic surface through the image of figure 5.14 (2×2 quads per texel): it passes through \
-                every texel and keeps their undulations.",
+                every texel and keeps their undulations. (b) The same model framed on the face.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Glb,
-        panels: &[Panel { suffix: "", title: "", draw: |_| harmonic_glb(Model::Head, SPHERE) }],
+        views: &[Panel {
+            suffix: "b",
+            title: "(b) Close-up",
+            draw: |_| close_up((5, 15), &harmonic_glb(Model::Head, SPHERE)?),
+        }],
+        panels: &[Panel {
+            suffix: "a",
+            title: "(a) Surface",
+            draw: |_| harmonic_glb(Model::Head, SPHERE),
+        }],
     },
     Figure {
         number: (5, 16),
         caption: "Surface produced by geometry image after smoothing (mannequin)",
-        drawn: "As figure 5.14 after a periodic Gaussian of σ = 1 texel on the image (§5.4).",
+        drawn: "As figure 5.14 after a periodic Gaussian of σ = 1 texel on the image (§5.4), (b) framed on the face.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Glb,
-        panels: &[Panel { suffix: "", title: "", draw: |_| texel_glb(Model::Head, SPHERE_SMOOTH) }],
+        views: &[Panel {
+            suffix: "b",
+            title: "(b) Close-up",
+            draw: |_| close_up((5, 16), &texel_glb(Model::Head, SPHERE_SMOOTH)?),
+        }],
+        panels: &[Panel {
+            suffix: "a",
+            title: "(a) Surface",
+            draw: |_| texel_glb(Model::Head, SPHERE_SMOOTH),
+        }],
     },
     Figure {
         number: (5, 17),
         caption: "Surface produced by harmonic interpolation after smoothing (mannequin)",
-        drawn: "The harmonic surface through the smoothed image of figure 5.16 (the surface of figure 5.10).",
+        drawn: "The harmonic surface through the smoothed image of figure 5.16 (the surface of figure 5.10); (b) the \
+                same model framed on the face.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Glb,
+        views: &[Panel {
+            suffix: "b",
+            title: "(b) Close-up",
+            draw: |_| close_up((5, 17), &harmonic_glb(Model::Head, SPHERE_SMOOTH)?),
+        }],
         panels: &[Panel {
-            suffix: "",
-            title: "",
+            suffix: "a",
+            title: "(a) Surface",
             draw: |_| harmonic_glb(Model::Head, SPHERE_SMOOTH),
         }],
     },
@@ -420,6 +540,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 ripples) and folds at the wrapped edges; figure 5.19 is the same after smoothing.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Png,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -437,6 +558,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 join far-apart texels and leave seams, as in the thesis.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel {
             suffix: "",
             title: "",
@@ -452,6 +574,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 (b) The harmonic surface through the whole image (u ∈ [0, ½] drawn), rendered.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Png,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -470,6 +593,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 are reached, which the thesis's rays from a centre could not.",
         data: "`fixtures/models/spot.obj` (public domain; 2 930 vertices), the thesis's cow among its models.",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("spot.obj") }],
     },
     Figure {
@@ -479,6 +603,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 halves are thinner than a texel of the 160×160 image at their rims, which come out serrated.",
         data: "`fixtures/models/duck.obj` (MIT; 10 093 vertices), the thesis's duck among its models.",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("duck.obj") }],
     },
     Figure {
@@ -489,6 +614,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         data: "`fixtures/models/wuson.off` (BSD-3-Clause; 3 205 vertices), in place of the thesis's bunny (whose \
                licence does not allow it here).",
         format: Format::Glb,
+        views: &[],
         panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("wuson.off") }],
     },
     Figure {
@@ -501,6 +627,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 faceted mesh.",
         data: "the control mesh of the head of figure 4.35.",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Vertices only", draw: |_| coarse_glb(false) },
             Panel { suffix: "b", title: "(b) Resampled", draw: |_| coarse_glb(true) },

@@ -41,6 +41,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         data: "built-in: the unit sphere at polar angles iπ/12 (i = 0…12) and longitudes 2πj/24, poles repeated \
                24 times, as eq. 4.1 gives them.",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -63,6 +64,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 than 0.1 from the sphere. (a) The points, as red beads.",
         data: "built-in: 600 points uniform on the unit sphere (z and the longitude uniform, a fixed 64-bit LCG).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Data points", draw: |_| points_glb(&random_points()) },
             Panel { suffix: "b", title: "(b) Surface", draw: |_| random_sphere_fit() },
@@ -81,6 +83,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                12 equal slabs of z ∈ [−1, 1], scaled by √(1 − 0.8 z²). The thesis's figure is of a scan not \
                named.",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",

@@ -228,6 +228,7 @@ macro_rules! steps {
             drawn: STEPS_DRAWN,
             data: $data,
             format: Format::Glb,
+            views: &[],
             panels: &[
                 Panel {
                     suffix: "a",
@@ -255,9 +256,47 @@ macro_rules! limits {
             drawn: $drawn,
             data: $data,
             format: Format::Glb,
+            views: &[],
             panels: &[
                 Panel { suffix: "a", title: "(a) Cube mesh", draw: |_| limit($scheme, $cube) },
                 Panel { suffix: "b", title: "(b) Star mesh", draw: |_| limit($scheme, $star) },
+            ],
+        }
+    };
+}
+
+/// A "limit surfaces" figure of a scheme for any polygons (Catmull-Clark, Doo-Sabin): the quad
+/// cube and star, then the triangulated ones, as the thesis's four panels.
+macro_rules! limits_both {
+    ($number:literal, $caption:literal, $scheme:expr, $drawn:literal) => {
+        Figure {
+            number: (4, $number),
+            caption: $caption,
+            drawn: $drawn,
+            data: BOTH_DATA,
+            format: Format::Glb,
+            views: &[],
+            panels: &[
+                Panel {
+                    suffix: "a",
+                    title: "(a) Cube mesh (quadrilaterals)",
+                    draw: |_| limit($scheme, Shape::Cube),
+                },
+                Panel {
+                    suffix: "b",
+                    title: "(b) Star mesh (quadrilaterals)",
+                    draw: |_| limit($scheme, Shape::Star),
+                },
+                Panel {
+                    suffix: "c",
+                    title: "(c) Cube mesh (triangles)",
+                    draw: |_| limit($scheme, Shape::TriCube),
+                },
+                Panel {
+                    suffix: "d",
+                    title: "(d) Star mesh (triangles)",
+                    draw: |_| limit($scheme, Shape::TriStar),
+                },
             ],
         }
     };
@@ -370,15 +409,14 @@ pub(crate) const FIGURES: &[Figure] = &[
         Shape::Star,
         STAR_DATA
     ),
-    limits!(
+    limits_both!(
         29,
         "Limit surfaces (Catmull-Clark subdivision)",
         Scheme::CatmullClark,
-        Shape::Cube,
-        Shape::Star,
-        "The quad cube and star after three Catmull-Clark steps with every vertex moved to its limit position and \
-         given its exact limit normal (`catmull_clark_limit`), so every vertex lies on the limit surface.",
-        BOTH_DATA
+        "The cube and star, (a), (b) of quads and (c), (d) triangulated, after three Catmull-Clark steps with every \
+         vertex moved to its limit position and given its exact limit normal (`catmull_clark_limit`), so every \
+         vertex lies on the limit surface. The thesis's two pairs of panels, both lettered (a), (b), are lettered \
+         (a)–(d) here."
     ),
     steps!(
         30,
@@ -408,14 +446,13 @@ pub(crate) const FIGURES: &[Figure] = &[
         Shape::Star,
         STAR_DATA
     ),
-    limits!(
+    limits_both!(
         34,
         "Limit surfaces (Doo-Sabin subdivision)",
         Scheme::DooSabin,
-        Shape::Cube,
-        Shape::Star,
-        "The quad cube and star after four Doo-Sabin steps (no closed-form limit is used).",
-        BOTH_DATA
+        "The cube and star, (a), (b) of quads and (c), (d) triangulated, after four Doo-Sabin steps (no \
+         closed-form limit is used). The thesis's two pairs of panels, both lettered (a), (b), are lettered \
+         (a)–(d) here."
     ),
     Figure {
         number: (4, 35),
@@ -425,6 +462,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         data: "stand-in for Hoppe's mannequin head (not available): a closed head of 288 triangles built in code \
                (16 meridians, 9 rings, with nose, brows, eye sockets, ears and chin; `xtask/src/figures/subdivision.rs`).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Control mesh", draw: |_| head_stage(None) },
             Panel { suffix: "b", title: "(b) Loop", draw: |_| head_stage(Some(LOOP)) },

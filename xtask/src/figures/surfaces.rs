@@ -121,6 +121,7 @@ macro_rules! comparison {
             drawn: COMPARISON_DRAWN,
             data: $data,
             format: Format::Glb,
+            views: &[],
             panels: &[
                 Panel {
                     suffix: "a-parametric",
@@ -178,6 +179,7 @@ macro_rules! subdivision {
                     no colours.",
             data: $data,
             format: Format::Glb,
+            views: &[],
             panels: &[
                 Panel { suffix: "a", title: "(a) Original mesh", draw: |_| stage($which, 0) },
                 Panel { suffix: "b", title: "(b) First subdivision step", draw: |_| stage($which, 1) },
@@ -203,6 +205,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         data: "the sphere of eq. 4.1 and the torus of eq. 4.2 with r₁ = 2, r₂ = 1 (the thesis gives no radii), as \
                defined for §5.9 (`hi_surface::test_surface(\"sphere\")` over its window v ∈ [0, ½], `\"torus\"`).",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel {
                 suffix: "a",
@@ -221,6 +224,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         data: "the exact 4×4 grids of docs/math.md §3 (`hi_surface::sphere(1)`, `hi_surface::torus(2, 1)`): the diamond \
                of four points turned by 90° three times.",
         format: Format::Glb,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Sphere", draw: |_| harmonic_figure(Exact::Sphere) },
             Panel { suffix: "b", title: "(b) Torus", draw: |_| harmonic_figure(Exact::Torus) },
@@ -657,7 +661,7 @@ fn superscript(e: i32) -> String {
         .collect()
 }
 
-/// The render `image` (lossless WebP, `width`×`height` pixels) with a colour bar of `legend` at
+/// The render `image` (JPEG, `width`×`height` pixels) with a colour bar of `legend` at
 /// its right, laid out in units of a third of a pixel so that its text keeps its size beside a
 /// 400×300 picture and the render shows at full resolution: the
 /// palette from the legend's low end (bottom) to its high end (top), ticks at −a, −a/2, 0, a/2
@@ -677,7 +681,7 @@ pub(crate) fn colour_bar_svg(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{pixels_y}\" \
          viewBox=\"0 0 {total} {height}\" font-family=\"sans-serif\" font-size=\"13\">\n\
          <rect width=\"{total}\" height=\"{height}\" fill=\"#fff\"/>\n\
-         <image width=\"{width}\" height=\"{height}\" href=\"data:image/webp;base64,{}\"/>\n\
+         <image width=\"{width}\" height=\"{height}\" href=\"data:image/jpeg;base64,{}\"/>\n\
          <defs><linearGradient id=\"bar\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">\n",
         3 * total,
         base64::encode(image)

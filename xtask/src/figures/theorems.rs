@@ -24,6 +24,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 each with its polygon, over the limit curve, which is the harmonic curve of P₀; the original points are labelled.",
         data: "stand-in: the heptagon.",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) P₀", draw: |t| subdivision(t, 0) },
             Panel { suffix: "b", title: "(b) P₁", draw: |t| subdivision(t, 1) },
@@ -40,6 +41,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 rotated curve (defect c·sin(πno)·sin(πnt)), while the exact `rotate` (7 points) is.",
         data: "stand-ins: the heptagon for (a), (b); the hexagon for (c).",
         format: Format::Svg,
+        views: &[],
         panels: &[
             Panel { suffix: "a", title: "(a) Application of theorem 5.1", draw: rotation },
             Panel { suffix: "b", title: "(b) Application of theorem 5.3", draw: insertion },
