@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-//! Rendered images of the figures (§5.5, §5.6), drawn with `hi-raytrace`: every glTF model of
-//! the figures is rendered to a PNG beside it (read back from the model's own bytes, so the
-//! picture shows what the file holds), and figures 5.25 and 5.26 are renders of the harmonic
-//! torus — the tessellated surface (the thesis's scanline rendering) and the surface itself,
-//! ray traced by interval Newton (Krawczyk) with a sphere and a floor casting shadows.
+//! Rendered images of the figures (§5.5, §5.6), drawn with `hi-raytrace` at 1200×900 and
+//! written as lossless WebP: every glTF model of the figures is rendered beside it (read back
+//! from the model's own bytes, so the picture shows what the file holds); the render-only
+//! panels show a model close up or a scan's points; and figures 5.25 and 5.26 are renders of
+//! the harmonic torus — the tessellated surface (the thesis's scanline rendering) and the
+//! surface itself, ray traced by interval Newton (Krawczyk) with a sphere and a floor casting
+//! shadows.
 //!
 //! Every render is deterministic: the sample positions are fixed and each pixel is computed on
 //! its own, so the bytes are the same on every run and on every number of threads.
