@@ -527,6 +527,29 @@ mod tests {
         assert!(stale.is_empty(), "stale figures, run `cargo xtask figures`: {stale:?}");
     }
 
+    /// Every committed figure file holds what its extension says (a render written into a
+    /// `.png` panel once held WebP bytes).
+    #[test]
+    fn committed_files_are_what_their_extensions_say() {
+        let dir = crate::project_root().join(OUT_DIR);
+        let mut checked = 0;
+        for entry in std::fs::read_dir(&dir).expect("docs/figures is readable") {
+            let path = entry.expect("an entry").path();
+            let Some(ext) = path.extension().and_then(|e| e.to_str()) else { continue };
+            let bytes = std::fs::read(&path).expect("a figure file");
+            let ok = match ext {
+                "png" => bytes.starts_with(b"\x89PNG\r\n\x1a\n"),
+                "webp" => bytes.starts_with(b"RIFF") && bytes.get(8..12) == Some(b"WEBP"),
+                "glb" => bytes.starts_with(b"glTF"),
+                "svg" => bytes.starts_with(b"<svg") || bytes.starts_with(b"<?xml"),
+                _ => continue,
+            };
+            assert!(ok, "{} does not hold a {ext} file", path.display());
+            checked += 1;
+        }
+        assert!(checked > 400, "{checked} files checked");
+    }
+
     #[test]
     fn the_registry_is_ordered_and_names_are_unique() {
         let figures = registry();

@@ -390,7 +390,13 @@ fn close_up(number: (u32, u32), glb: &[u8]) -> Result<Vec<u8>> {
 
 /// The render of the harmonic surface of the head's fit, for figure `number`.
 fn surface_png(number: (u32, u32), setup: Setup) -> Result<Vec<u8>> {
-    super::renders::render_model(number, &harmonic_glb(Model::Head, setup)?)
+    // The render is WebP; this panel sits beside a PNG image in a figure of PNG files.
+    let webp = super::renders::render_model(number, &harmonic_glb(Model::Head, setup)?)?;
+    let mut bytes = Vec::new();
+    image::load_from_memory(&webp)?
+        .to_rgb8()
+        .write_to(&mut Cursor::new(&mut bytes), image::ImageFormat::Png)?;
+    Ok(bytes)
 }
 
 /// Figure 5.24: the coarse head, resampled on its triangles or not.
