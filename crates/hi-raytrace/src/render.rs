@@ -258,12 +258,12 @@ pub fn render(
             let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
             let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
             let mut counts = RayCounts::default();
-            // Samples `from..to` of the `n` of pixel (x, y), added to `sum`; returns the spread
-            // of these samples in their widest channel.
-            let mut samples = |x: u32, y: u32, from: u32, to: u32, n: u32, sum: &mut [f64; 3]| {
+            // Samples `from..to` of the `spp` of pixel (x, y), added to `sum`; returns the
+            // spread of these samples in their widest channel.
+            let mut samples = |x: u32, y: u32, from: u32, to: u32, sum: &mut [f64; 3]| {
                 let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
                 for s in from..to {
-                    let (ox, oy) = sample_offset(x, y, s, n);
+                    let (ox, oy) = sample_offset(x, y, s, spp);
                     let ray = camera.ray(
                         (f64::from(x) + ox) / f64::from(w),
                         (f64::from(y) + oy) / f64::from(h),
@@ -301,7 +301,7 @@ pub fn render(
                     .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))
                     .map(|(x, y)| {
                         let mut sum = [0.0; 3];
-                        let spread = samples(x, y, 0, first, spp, &mut sum);
+                        let spread = samples(x, y, 0, first, &mut sum);
                         (sum, sum.map(|c| c / f64::from(first)), spread)
                     })
                     .collect()
@@ -327,12 +327,12 @@ pub fn render(
                         } else {
                             // The rest of the samples, after the first pass's.
                             let mut sum = sum;
-                            samples(x, y, first, spp, spp, &mut sum);
+                            samples(x, y, first, spp, &mut sum);
                             sum.map(|c| c / f64::from(spp))
                         }
                     } else {
                         let mut sum = [0.0; 3];
-                        samples(x, y, 0, spp, spp, &mut sum);
+                        samples(x, y, 0, spp, &mut sum);
                         sum.map(|c| c / f64::from(spp))
                     };
                     let px = mean.map(|c| {

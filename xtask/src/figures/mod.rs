@@ -263,7 +263,7 @@ pub(crate) struct Generated {
 /// standard error is a terminal; the renders only with [`Renders::Draw`].
 pub(crate) fn generate(progress: bool, renders: Renders) -> Result<Generated> {
     let figures = registry();
-    let count: usize = figures.iter().map(|f| f.panels.len()).sum();
+    let count: usize = figures.iter().map(|f| f.panels.len() + f.views.len()).sum();
     let bar = if progress && std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(count as u64);
         bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
@@ -313,12 +313,13 @@ pub(crate) fn generate(progress: bool, renders: Renders) -> Result<Generated> {
             let file = figure.view_file(view);
             if renders == Renders::Skip {
                 skipped.push(file);
-                continue;
+            } else {
+                bar.set_message(file.clone());
+                let bytes =
+                    (view.draw)(&figure.title(view)).with_context(|| format!("drawing {file}"))?;
+                outputs.push((file, bytes));
             }
-            bar.set_message(file.clone());
-            let bytes =
-                (view.draw)(&figure.title(view)).with_context(|| format!("drawing {file}"))?;
-            outputs.push((file, bytes));
+            bar.inc(1);
         }
     }
     let mut computed = Vec::new();
