@@ -357,8 +357,9 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         "## Subdivision (§4.5, Table 4.1)\n\n\
          One step of each scheme on a closed mesh of at least 100 000 faces: the star \
          (`PolyMesh::star`) after five Loop and two √3 steps, and after seven Catmull-Clark steps. \
-         Ours: `hi_mesh::subdivision`, one step in memory, the new half-edge mesh built and \
-         validated, one thread, median of {OUR_RUNS} runs. Peers, median of {PEER_RUNS} runs of \
+         Ours: `hi_mesh::subdivision`, one step in memory, the new half-edge mesh built (its \
+         adjacency derived from the old mesh's by index arithmetic, no sort; a test checks it \
+         against the general builder, which pairs half-edges by sorting and validates), one thread, median of {OUR_RUNS} runs. Peers, median of {PEER_RUNS} runs of \
          the time they print for the subdivision call alone: `OpenMesh-commandlineSubdivider` \
          (OpenMesh {}), CGAL `Subdivision_method_3` (CGAL {}) through \
          `fixtures/subdivision/cgal_subdiv.cpp` built with `g++ -O2 -DNDEBUG`. \"–\": the peer \

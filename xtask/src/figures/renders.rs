@@ -27,14 +27,9 @@ use super::{Figure, Format, Panel};
 /// The size of the renders.
 pub(crate) const WIDTH: u32 = 1200;
 pub(crate) const HEIGHT: u32 = 900;
-/// Samples per pixel (anti-aliasing).
+/// Samples per pixel (anti-aliasing), in every pixel: the first points of a (0, 2)-sequence,
+/// shifted per pixel.
 const SPP: u32 = 16;
-/// Samples a pixel takes first; it takes all [`SPP`] where they or a neighbour's differ (an
-/// edge, a line, a shadow's border, a highlight), keeping these first ones.
-const FIRST_PASS: u32 = 4;
-/// The first pass of figure 5.26, whose every ray is solved by interval Newton: one sample,
-/// the pixel's centre, refined to [`SPP`] wherever it differs from a neighbour's.
-const RAYTRACED_FIRST_PASS: u32 = 1;
 /// The share of the frame's width and height a model fills ([`Camera::fitting`]).
 const FILL: f64 = 0.8;
 /// The width of the edges a model's file draws (its lines), in pixels.
@@ -102,15 +97,15 @@ fn lights(view: DVec3) -> Vec<Light> {
     ]
 }
 
-/// Renders `scene` through `camera` ([`SPP`] samples where the first `first_pass` differ), as
-/// lossless WebP bytes (a third of the PNG's size on these pictures).
-fn webp(scene: &Scene, camera: &Camera, first_pass: u32) -> Result<Vec<u8>> {
+/// Renders `scene` through `camera` ([`SPP`] samples per pixel), as lossless WebP bytes (a
+/// third of the PNG's size on these pictures).
+fn webp(scene: &Scene, camera: &Camera) -> Result<Vec<u8>> {
     let settings = RenderOptions {
         width: WIDTH,
         height: HEIGHT,
         samples_per_pixel: SPP,
         tile_size: 16,
-        first_pass,
+        first_pass: 0,
     };
     let out = render(scene, camera, &settings, None)?;
     ensure!(out.counts.hits > 0, "the render hit nothing");
@@ -190,7 +185,7 @@ fn render_mesh(
         objects.push(floor(lo, hi)?);
     }
     let scene = Scene::try_new(objects, lights(from), [1.0; 3])?;
-    webp(&scene, camera, FIRST_PASS)
+    webp(&scene, camera)
 }
 
 /// A close-up of the model `glb` of figure `number`: the camera of [`render_models`] framing
@@ -286,7 +281,7 @@ fn floor(lo: DVec3, hi: DVec3) -> Result<SceneObject> {
 /// Figure 5.25: the harmonic torus tessellated (128×256 quads) and rendered as triangles.
 fn scanline_torus() -> Result<Vec<u8>> {
     let (scene, camera) = torus_scene(TorusMethod::Mesh)?;
-    webp(&scene, &camera, FIRST_PASS)
+    webp(&scene, &camera)
 }
 
 /// Figure 5.26: the harmonic torus and a harmonic sphere ray traced directly (interval Newton,
@@ -338,7 +333,7 @@ fn raytraced_torus() -> Result<Vec<u8>> {
         DVec3::Z,
         PI / 5.0,
     )?;
-    webp(&scene, &camera, RAYTRACED_FIRST_PASS)
+    webp(&scene, &camera)
 }
 
 /// The figures of this module.
@@ -348,7 +343,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "A scanline-rendered harmonic surface (torus)",
         drawn: "The harmonic torus through the 4×4 torus grid (R = 2, r = 1), tessellated into 128×256 quads with \
                 its exact normals and rendered as triangles (`hi_raytrace::MeshObject` in an obvhs BVH, the \
-                renderer's stand-in for the thesis's scanline rendering), 1200×900, 4 samples per pixel and 16 where they or a neighbour differ (edges, shadows' borders), a \
+                renderer's stand-in for the thesis's scanline rendering), 1200×900, 16 samples per pixel, a \
                 directional and a point light with shadows. `cargo xtask bench render` times it beside the direct \
                 methods.",
         data: "the exact 4×4 torus grid of docs/math.md §3 (`hi_surface::torus(2, 1)`).",
@@ -362,8 +357,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The harmonic torus and the harmonic sphere (each through its exact grid) ray traced directly: every \
                 camera and shadow ray is intersected with the surfaces themselves by interval Newton (Krawczyk) \
                 on p(u, v) − (o + t·d) = 0 in `hi-interval` arithmetic, with bisection where Krawczyk cannot \
-                decide, over a floor of two triangles; 1200×900, the centre of each pixel and 16 samples where it \
-                differs from a neighbour (edges, shadows' borders), shadows from a directional \
+                decide, over a floor of two triangles; 1200×900, 16 samples per pixel, shadows from a directional \
                 and a point light. The thesis took several hours for its torus; this takes seconds.",
         data: "exact: `hi_surface::torus(2, 1)` and `hi_surface::sphere(1)` moved to (2.6, 2.4, 0).",
         format: Format::Webp,

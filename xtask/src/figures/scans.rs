@@ -340,16 +340,20 @@ fn texel_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
 }
 
 /// A geometry image as a PNG: x, y, z scaled from the texels' bounding box to red, green and
-/// blue; `rows` of them (all, or the first half for one side of a doubled layout).
-fn image_png(image: &GeometryImage, rows: usize) -> Result<Vec<u8>> {
+/// blue; `rows` of them (all, or the first half for one side of a doubled layout), repeated
+/// `tiles` times along each axis (1 for the image itself; more for its periodic extension,
+/// which is what the harmonic surface through it interpolates).
+fn image_png(image: &GeometryImage, rows: usize, tiles: u32) -> Result<Vec<u8>> {
     let texels = &image.texels()[..rows * image.cols()];
     let lo = texels.iter().copied().fold(DVec3::INFINITY, DVec3::min);
     let hi = texels.iter().copied().fold(DVec3::NEG_INFINITY, DVec3::max);
     let span = (hi - lo).max(DVec3::splat(1e-300));
     let k = PIXELS_PER_TEXEL;
-    let (w, h) = (u32::try_from(image.cols())? * k, u32::try_from(rows)? * k);
+    let (cols, rows) = (u32::try_from(image.cols())?, u32::try_from(rows)?);
+    let (w, h) = (cols * k * tiles, rows * k * tiles);
     let picture = image::RgbImage::from_fn(w, h, |x, y| {
-        let t = ((y / k) as usize) * image.cols() + (x / k) as usize;
+        let (x, y) = ((x / k) % cols, (y / k) % rows);
+        let t = y as usize * image.cols() + x as usize;
         let c = (texels[t] - lo) / span * 255.0;
         #[expect(
             clippy::cast_possible_truncation,
@@ -367,7 +371,15 @@ fn image_png(image: &GeometryImage, rows: usize) -> Result<Vec<u8>> {
 fn fit_png(model: Model, setup: Setup, half: bool) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
     let image = result.source.image();
-    image_png(image, if half { image.rows() / 2 } else { image.rows() })
+    image_png(image, if half { image.rows() / 2 } else { image.rows() }, 1)
+}
+
+/// The geometry image of a fit (before smoothing) repeated 2×2 as a PNG: one period of it and
+/// the neighbouring copies that harmonic interpolation treats as its continuation.
+fn periodic_png(model: Model, setup: Setup) -> Result<Vec<u8>> {
+    let result = fitted(&scan(model)?, setup, false)?;
+    let image = result.source.image();
+    image_png(image, image.rows(), 2)
 }
 
 /// Every tenth point of the scan of `model`, rendered for figure `number` (its panel (a), "Data
@@ -543,7 +555,9 @@ pub(crate) const FIGURES: &[Figure] = &[
                 the square wraps, neighbouring texels are far apart on the head (figure 5.19). (b) The harmonic \
                 surface through it, before smoothing, rendered (`hi-raytrace`, a mesh of 2×2 quads per texel): \
                 interpolating across the jumps where the square wraps rings over the whole surface (Gibbs \
-                ripples) and folds at the wrapped edges; figure 5.19 is the same after smoothing.",
+                ripples) and folds at the wrapped edges; figure 5.19 is the same after smoothing. (c) The image \
+                repeated 2×2, as harmonic interpolation sees it (periodic in both directions): across each edge \
+                of the square the colours jump, because the texels that meet there are far apart on the head.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Png,
         views: &[],
@@ -554,22 +568,41 @@ pub(crate) const FIGURES: &[Figure] = &[
                 draw: |_| fit_png(Model::Head, OCTAHEDRON_SMOOTH, false),
             },
             Panel { suffix: "b", title: "(b) Render", draw: |_| surface_png((5, 18), OCTAHEDRON) },
+            Panel {
+                suffix: "c",
+                title: "(c) Periodic image",
+                draw: |_| periodic_png(Model::Head, OCTAHEDRON),
+            },
         ],
     },
     Figure {
         number: (5, 19),
         caption: "Harmonic surface produced using octahedron geometry image (mannequin)",
-        drawn: "The harmonic surface through the octahedral image of figure 5.18 after the same smoothing (σ = 1 \
-                texel), over the whole period: smoothing and interpolation across the wrapped edges of the square \
-                join far-apart texels and leave seams, as in the thesis.",
+        drawn: "(a) The texels of the 64×64 octahedral image of figure 5.18 joined directly (one quad per \
+                texel). (b) The same after a periodic Gaussian of σ = 1 texel on the image. (c) The harmonic \
+                surface through the smoothed image, over the whole period. (d) Panel (c) framed on the face. \
+                Smoothing and interpolation across the wrapped edges of the square join far-apart texels and \
+                leave seams, as in the thesis.",
         data: "the mannequin stand-in of figure 5.10.",
         format: Format::Glb,
-        views: &[],
-        panels: &[Panel {
-            suffix: "",
-            title: "",
-            draw: |_| harmonic_glb(Model::Head, OCTAHEDRON_SMOOTH),
+        views: &[Panel {
+            suffix: "d",
+            title: "(d) Close-up",
+            draw: |_| close_up((5, 19), &harmonic_glb(Model::Head, OCTAHEDRON_SMOOTH)?),
         }],
+        panels: &[
+            Panel { suffix: "a", title: "(a) Surface", draw: |_| texel_glb(Model::Head, OCTAHEDRON) },
+            Panel {
+                suffix: "b",
+                title: "(b) Smooth",
+                draw: |_| texel_glb(Model::Head, OCTAHEDRON_SMOOTH),
+            },
+            Panel {
+                suffix: "c",
+                title: "(c) Harmonic interpolation",
+                draw: |_| harmonic_glb(Model::Head, OCTAHEDRON_SMOOTH),
+            },
+        ],
     },
     Figure {
         number: (5, 20),

@@ -42,65 +42,79 @@ use crate::Error;
 pub fn catmull_clark_step(mesh: &PolyMesh) -> Result<PolyMesh, Error> {
     let p = mesh.positions();
     let (nv, ne, nf) = (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+    let n_he = mesh.n_halfedges();
     let centroids: Vec<DVec3> = mesh
         .faces()
         .map(|f| f.iter().map(|&k| p[k as usize]).sum::<DVec3>() / f.len() as f64)
         .collect();
     let mut positions = vec![DVec3::ZERO; nv + ne + nf];
-    for v in 0..nv as u32 {
-        let pv = p[v as usize];
-        let mut n = 0_usize;
-        let mut q = DVec3::ZERO;
-        let mut r = DVec3::ZERO;
-        let mut last = NONE;
-        for h in mesh.fan(v) {
-            n += 1;
-            q += centroids[mesh.he_face(h) as usize];
-            r += p[mesh.to(h) as usize];
-            last = h;
+    // Per old vertex: the sums of its faces' centroids and of its neighbours (over its
+    // outgoing half-edges) and their number.
+    let mut q = vec![DVec3::ZERO; nv];
+    let mut r = vec![DVec3::ZERO; nv];
+    let mut n = vec![0_u32; nv];
+    // Face f, corner h (vertex v): the quad v, e(h), f, e(prev h).
+    let mut corners = Vec::with_capacity(4 * n_he);
+    // Quad h is v → e(h) → f → e(prev h) → v: its first side is the first half of h, whose
+    // twin is the second half of twin(h) (the last side of the quad of next(twin h)); its
+    // inner sides pair with those of the quads of next(h) and prev(h).
+    let mut twin = vec![NONE; 4 * n_he];
+    let (nv32, face0) = (nv as u32, (nv + ne) as u32);
+    for (f, &centroid) in centroids.iter().enumerate() {
+        let (start, end) = mesh.face_range(f);
+        for h in start..end {
+            let next = if h + 1 == end { start } else { h + 1 };
+            let prev = if h == start { end - 1 } else { h - 1 };
+            let (a, b) = (mesh.from(h), mesh.from(next));
+            q[a as usize] += centroid;
+            r[a as usize] += p[b as usize];
+            n[a as usize] += 1;
+            let t = mesh.twin(h);
+            if t == NONE || h < t {
+                let (pa, pb) = (p[a as usize], p[b as usize]);
+                positions[nv + mesh.he_edge(h) as usize] = if t == NONE {
+                    0.5 * (pa + pb)
+                } else {
+                    0.25 * (pa + pb + centroid + centroids[mesh.he_face(t) as usize])
+                };
+            }
+            corners.extend_from_slice(&[
+                a,
+                nv32 + mesh.he_edge(h),
+                face0 + f as u32,
+                nv32 + mesh.he_edge(prev),
+            ]);
+            let k = 4 * h as usize;
+            if t != NONE {
+                twin[k] = 4 * mesh.next(t) + 3;
+            }
+            let t = mesh.twin(prev);
+            if t != NONE {
+                twin[k + 3] = 4 * t;
+            }
+            twin[k + 1] = 4 * next + 2;
+            twin[k + 2] = 4 * prev + 1;
         }
-        positions[v as usize] = if n == 0 {
+    }
+    let mut ring = Vec::new();
+    for v in 0..nv {
+        let pv = p[v];
+        positions[v] = if n[v] == 0 {
             pv
-        } else if mesh.is_boundary_vertex(v as usize) {
-            let first = mesh.to(mesh.fan(v).next().unwrap_or(last));
-            let other = mesh.from(mesh.prev(last));
-            0.75 * pv + 0.125 * (p[first as usize] + p[other as usize])
+        } else if mesh.is_boundary_vertex(v) {
+            mesh.ring_into(v as u32, &mut ring);
+            // On the boundary: the cubic B-spline rule with the two boundary neighbours.
+            0.75 * pv + 0.125 * (p[ring[0] as usize] + p[ring[ring.len() - 1] as usize])
         } else {
-            let nf64 = n as f64;
-            let q = q / nf64;
-            let r = 0.5 * (pv + r / nf64);
+            let nf64 = f64::from(n[v]);
+            let q = q[v] / nf64;
+            let r = 0.5 * (pv + r[v] / nf64);
             (q + 2.0 * r + (nf64 - 3.0) * pv) / nf64
         };
     }
-    for h in 0..mesh.n_halfedges() as u32 {
-        let t = mesh.twin(h);
-        if t != NONE && t < h {
-            continue;
-        }
-        let (a, b) = (p[mesh.from(h) as usize], p[mesh.to(h) as usize]);
-        positions[nv + mesh.he_edge(h) as usize] = if t == NONE {
-            0.5 * (a + b)
-        } else {
-            0.25 * (a
-                + b
-                + centroids[mesh.he_face(h) as usize]
-                + centroids[mesh.he_face(t) as usize])
-        };
-    }
     positions[nv + ne..].copy_from_slice(&centroids);
-    // Face f, corner h (vertex v): the quad v, e(h), f, e(prev h).
-    let n_he = mesh.n_halfedges();
-    let mut corners = Vec::with_capacity(4 * n_he);
-    for h in 0..n_he as u32 {
-        corners.extend_from_slice(&[
-            mesh.from(h),
-            (nv as u32) + mesh.he_edge(h),
-            (nv + ne) as u32 + mesh.he_face(h),
-            (nv as u32) + mesh.he_edge(mesh.prev(h)),
-        ]);
-    }
     let face_start = (0..=n_he as u32).map(|f| 4 * f).collect();
-    PolyMesh::from_parts(positions, face_start, corners)
+    PolyMesh::from_twins(positions, face_start, corners, twin)
 }
 
 /// Limit positions and normals of the vertices of a quad mesh under Catmull-Clark

@@ -68,45 +68,44 @@ pub fn loop_step(mesh: &PolyMesh, weights: LoopWeights) -> Result<PolyMesh, Erro
     mesh.require_triangles("Loop subdivision")?;
     let p = mesh.positions();
     let nv = mesh.n_vertices();
-    let rings = Rings::new(mesh);
+    let (sums, valences) = mesh.neighbour_sums();
     let mut positions = Vec::with_capacity(nv + mesh.n_edges());
-    for v in 0..nv as u32 {
-        positions.push(loop_vertex(p, &rings, v, weights));
+    let mut ring = Vec::new();
+    // β of the common valences, computed once.
+    let betas: Vec<f64> = (0..32).map(|n| if n == 0 { 0.0 } else { weights.beta(n) }).collect();
+    for v in 0..nv {
+        let pv = p[v];
+        positions.push(if valences[v] == 0 {
+            pv
+        } else if mesh.is_boundary_vertex(v) {
+            mesh.ring_into(v as u32, &mut ring);
+            let (a, b) = (p[ring[0] as usize], p[ring[ring.len() - 1] as usize]);
+            0.75 * pv + 0.125 * (a + b)
+        } else {
+            let n = valences[v] as usize;
+            let beta = betas.get(n).copied().unwrap_or_else(|| weights.beta(n));
+            (1.0 - n as f64 * beta) * pv + beta * sums[v]
+        });
     }
     positions.resize(nv + mesh.n_edges(), DVec3::ZERO);
+    // Triangles only: half-edge h = 3f + i, the next one 3f + (i + 1) mod 3.
+    let next = |h: u32| if h % 3 == 2 { h - 2 } else { h + 1 };
     for h in 0..mesh.n_halfedges() as u32 {
         let t = mesh.twin(h);
         if t != NONE && t < h {
             continue;
         }
-        let (a, b) = (p[mesh.from(h) as usize], p[mesh.to(h) as usize]);
+        let (a, b) = (p[mesh.from(h) as usize], p[mesh.from(next(h)) as usize]);
         let e = nv + mesh.he_edge(h) as usize;
         positions[e] = if t == NONE {
             0.5 * (a + b)
         } else {
-            let c = p[mesh.to(mesh.next(h)) as usize];
-            let d = p[mesh.to(mesh.next(t)) as usize];
+            let c = p[mesh.from(next(next(h))) as usize];
+            let d = p[mesh.from(next(next(t))) as usize];
             0.375 * (a + b) + 0.125 * (c + d)
         };
     }
     split_1_to_4(mesh, positions)
-}
-
-/// The new position of old vertex `v` under Loop's vertex rule.
-fn loop_vertex(p: &[DVec3], rings: &Rings, v: u32, weights: LoopWeights) -> DVec3 {
-    let ring = rings.ring(v);
-    let pv = p[v as usize];
-    if ring.is_empty() {
-        return pv;
-    }
-    if rings.is_boundary(v) {
-        let (a, b) = (p[ring[0] as usize], p[ring[ring.len() - 1] as usize]);
-        return 0.75 * pv + 0.125 * (a + b);
-    }
-    let n = ring.len();
-    let beta = weights.beta(n);
-    let sum: DVec3 = ring.iter().map(|&k| p[k as usize]).sum();
-    (1.0 - n as f64 * beta) * pv + beta * sum
 }
 
 /// The 1 → 4 split of every triangle, with edge vertices V + e; shared by Loop and the
@@ -122,8 +121,28 @@ pub(crate) fn split_1_to_4(mesh: &PolyMesh, positions: Vec<DVec3>) -> Result<Pol
         let [ab, bc, ca] = [h0, h1, h2].map(|h| nv + mesh.he_edge(h));
         corners.extend_from_slice(&[a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca]);
     }
+    // Twins: parent half-edge h = 3f + i (a → b) splits into a → ab, corner 3i of the child
+    // faces of f, and ab → b, corner 3(i + 1 mod 3) + 2; each half's twin is the other half
+    // of twin(h). The middle triangle's edges pair with the corner triangles' inner edges.
+    let first = |h: u32| 12 * (h / 3) + 3 * (h % 3);
+    let second = |h: u32| 12 * (h / 3) + 3 * ((h % 3 + 1) % 3) + 2;
+    let mut twin = vec![NONE; 12 * nf];
+    for h in 0..3 * nf as u32 {
+        let t = mesh.twin(h);
+        if t != NONE {
+            twin[first(h) as usize] = second(t);
+            twin[second(h) as usize] = first(t);
+        }
+    }
+    for f in 0..nf {
+        let base = 12 * f as u32;
+        for (x, y) in [(9, 4), (10, 7), (11, 1)] {
+            twin[(base + x) as usize] = base + y;
+            twin[(base + y) as usize] = base + x;
+        }
+    }
     let face_start = (0..=4 * nf as u32).map(|f| 3 * f).collect();
-    PolyMesh::from_parts(positions, face_start, corners)
+    PolyMesh::from_twins(positions, face_start, corners, twin)
 }
 
 /// Where a vertex of a Loop or Catmull-Clark surface ends up after infinitely many steps, and

@@ -241,6 +241,101 @@ impl PolyMesh {
         Ok(mesh)
     }
 
+    /// A mesh whose half-edge twins are already known: what a subdivision step builds from a
+    /// valid mesh, whose new faces and their twins follow from the old ones by index
+    /// arithmetic. Skips the pairing of half-edges by sorting and the manifold checks of
+    /// [`PolyMesh::from_parts`] (a refinement of a valid mesh is valid), and gives the same
+    /// mesh: edges numbered in (lower vertex, higher vertex) order, the same outgoing
+    /// half-edge per vertex. The tests of every scheme check it against
+    /// [`PolyMesh::try_new`] on the same faces.
+    ///
+    /// `twin[h]` is the opposite half-edge of corner `h`, or [`NONE`] on the boundary; the
+    /// caller guarantees that twins are mutual and run in opposite directions.
+    pub(crate) fn from_twins(
+        positions: Vec<DVec3>,
+        face_start: Vec<u32>,
+        corners: Vec<u32>,
+        twin: Vec<u32>,
+    ) -> Result<Self, Error> {
+        if positions.len() >= NONE as usize {
+            return Err(Error::TooLarge { what: "vertices", count: positions.len() });
+        }
+        if corners.len() >= NONE as usize {
+            return Err(Error::TooLarge { what: "face corners", count: corners.len() });
+        }
+        let n_he = corners.len();
+        let n_faces = face_start.len() - 1;
+        debug_assert_eq!(twin.len(), n_he);
+        let mut he_face = vec![0_u32; n_he];
+        // Each edge once, at its canonical half-edge (the one that runs upwards, or the only
+        // one), in buckets by its lower vertex: counted in one pass over the faces, filled
+        // with (higher vertex, half-edge) in a second.
+        let canonical = |h: usize, next: usize| {
+            let (a, b) = (corners[h], corners[next]);
+            (twin[h] == NONE || a < b).then(|| (a.min(b), a.max(b)))
+        };
+        let mut bucket_start = vec![0_u32; positions.len() + 1];
+        for f in 0..n_faces {
+            let (start, end) = (face_start[f] as usize, face_start[f + 1] as usize);
+            for h in start..end {
+                he_face[h] = f as u32;
+                if let Some((lo, _)) = canonical(h, if h + 1 == end { start } else { h + 1 }) {
+                    bucket_start[lo as usize + 1] += 1;
+                }
+            }
+        }
+        for v in 0..positions.len() {
+            bucket_start[v + 1] += bucket_start[v];
+        }
+        let n_edges = bucket_start[positions.len()] as usize;
+        let mut fill = bucket_start[..positions.len()].to_vec();
+        let mut order = vec![(0_u32, 0_u32); n_edges];
+        for f in 0..n_faces {
+            let (start, end) = (face_start[f] as usize, face_start[f + 1] as usize);
+            for h in start..end {
+                if let Some((lo, hi)) = canonical(h, if h + 1 == end { start } else { h + 1 }) {
+                    let slot = &mut fill[lo as usize];
+                    order[*slot as usize] = (hi, h as u32);
+                    *slot += 1;
+                }
+            }
+        }
+        let mut he_edge = vec![NONE; n_he];
+        for v in 0..positions.len() {
+            let bucket = &mut order[bucket_start[v] as usize..bucket_start[v + 1] as usize];
+            if bucket.len() > 1 {
+                bucket.sort_unstable();
+            }
+        }
+        for (e, &(_, h)) in order.iter().enumerate() {
+            he_edge[h as usize] = e as u32;
+            let t = twin[h as usize];
+            if t != NONE {
+                debug_assert_eq!(twin[t as usize], h, "twins are mutual");
+                he_edge[t as usize] = e as u32;
+            }
+        }
+        // One outgoing half-edge per vertex, the boundary one where there is one (as in
+        // `from_parts`).
+        let mut vertex_he = vec![NONE; positions.len()];
+        for (h, (&v, &t)) in corners.iter().zip(&twin).enumerate() {
+            let slot = &mut vertex_he[v as usize];
+            if *slot == NONE || t == NONE {
+                *slot = h as u32;
+            }
+        }
+        Ok(PolyMesh {
+            positions,
+            face_start,
+            corners,
+            he_face,
+            twin,
+            he_edge,
+            n_edges,
+            vertex_he,
+        })
+    }
+
     /// The vertex positions.
     #[must_use]
     pub fn positions(&self) -> &[DVec3] {
@@ -427,6 +522,31 @@ impl PolyMesh {
     #[inline]
     pub(crate) fn to(&self, h: u32) -> u32 {
         self.corners[self.next(h) as usize]
+    }
+
+    /// The half-edges (corners) of face `f`: `start..end`.
+    #[inline]
+    pub(crate) fn face_range(&self, f: usize) -> (u32, u32) {
+        (self.face_start[f], self.face_start[f + 1])
+    }
+
+    /// For every vertex, the sum of the positions at the heads of its outgoing half-edges and
+    /// their number: its neighbours' sum and valence for an interior vertex (one neighbour
+    /// short on the boundary). One pass over the faces, with no walk around the vertices.
+    pub(crate) fn neighbour_sums(&self) -> (Vec<DVec3>, Vec<u32>) {
+        let p = &self.positions;
+        let mut sum = vec![DVec3::ZERO; p.len()];
+        let mut count = vec![0_u32; p.len()];
+        for f in 0..self.n_faces() {
+            let (start, end) = self.face_range(f);
+            for h in start..end {
+                let next = if h + 1 == end { start } else { h + 1 };
+                let v = self.corners[h as usize] as usize;
+                sum[v] += p[self.corners[next as usize] as usize];
+                count[v] += 1;
+            }
+        }
+        (sum, count)
     }
 
     /// The number of corners of the face of `h`.

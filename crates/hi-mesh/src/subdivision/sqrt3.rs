@@ -44,19 +44,18 @@ pub fn sqrt3_step(mesh: &PolyMesh) -> Result<PolyMesh, Error> {
     mesh.require_triangles("√3 subdivision")?;
     mesh.require_closed("√3 subdivision")?;
     let p = mesh.positions();
-    let rings = Rings::new(mesh);
+    // Closed: every vertex with faces is interior, its valence its outgoing half-edges.
+    let (sums, valences) = mesh.neighbour_sums();
+    let alpha = |n: u32| (4.0 - 2.0 * (2.0 * PI / f64::from(n)).cos()) / 9.0;
+    let alphas: Vec<f64> = (0..32).map(|n| if n == 0 { 0.0 } else { alpha(n) }).collect();
     let mut positions = Vec::with_capacity(mesh.n_vertices() + mesh.n_faces());
-    for v in 0..mesh.n_vertices() as u32 {
-        let ring = rings.ring(v);
-        let pv = p[v as usize];
-        if ring.is_empty() {
+    for (v, (&pv, &n)) in p.iter().zip(&valences).enumerate() {
+        if n == 0 {
             positions.push(pv);
             continue;
         }
-        let n = ring.len() as f64;
-        let alpha = (4.0 - 2.0 * (2.0 * PI / n).cos()) / 9.0;
-        let sum: DVec3 = ring.iter().map(|&k| p[k as usize]).sum();
-        positions.push((1.0 - alpha) * pv + alpha / n * sum);
+        let a = alphas.get(n as usize).copied().unwrap_or_else(|| alpha(n));
+        positions.push((1.0 - a) * pv + a / f64::from(n) * sums[v]);
     }
     for f in mesh.faces() {
         positions.push(f.iter().map(|&k| p[k as usize]).sum::<DVec3>() / 3.0);
@@ -179,8 +178,18 @@ fn split_and_flip(mesh: &PolyMesh, positions: Vec<DVec3>) -> Result<PolyMesh, Er
         let g = mesh.he_face(mesh.twin(h));
         corners.extend_from_slice(&[mesh.from(h), nv + g, nv + mesh.he_face(h)]);
     }
+    // Child face h is a → G → F (G, F the centres of the faces of twin(h) and h): its flipped
+    // edge G → F pairs with that of twin(h), F → a with a → F of the child of
+    // twin(prev h), and a → G with G → a of the child of next(twin h).
+    let mut twin = vec![0_u32; 3 * n_he];
+    for h in 0..n_he as u32 {
+        let k = 3 * h as usize;
+        twin[k] = 3 * mesh.next(mesh.twin(h)) + 2;
+        twin[k + 1] = 3 * mesh.twin(h) + 1;
+        twin[k + 2] = 3 * mesh.twin(mesh.prev(h));
+    }
     let face_start = (0..=n_he as u32).map(|f| 3 * f).collect();
-    PolyMesh::from_parts(positions, face_start, corners)
+    PolyMesh::from_twins(positions, face_start, corners, twin)
 }
 
 #[cfg(test)]
