@@ -12,7 +12,7 @@ use crate::curve::{
 };
 use crate::error::check_points;
 use crate::flatten::check_tolerance;
-use crate::subdivide::{split_points, subsegment_points, subsegment_small};
+use crate::subdivide::{split_points, subsegment_on_stack, subsegment_points};
 use crate::{BezierCurve, ControlPoint, Error, ParamWindow};
 
 /// A tensor-product Bézier patch of degree (m, n) with an (m + 1) × (n + 1) control grid xⱼₖ,
@@ -353,22 +353,32 @@ impl<P: ControlPoint> BezierPatch<P> {
     #[must_use]
     pub fn subpatch_bounds(&self, window: ParamWindow) -> Aabb<P> {
         let (n_rows, n_cols) = (self.n_rows, self.n_cols);
-        if n_rows > SMALL || n_cols > SMALL {
-            return self.subpatch(window).control_bounding_box();
+        if n_rows <= 4 && n_cols <= 4 {
+            self.subpatch_bounds_on_stack::<4>(window)
+        } else if n_rows <= SMALL && n_cols <= SMALL {
+            self.subpatch_bounds_on_stack::<SMALL>(window)
+        } else {
+            self.subpatch(window).control_bounding_box()
         }
+    }
+
+    /// [`BezierPatch::subpatch_bounds`] with scratch arrays of `N` × `N` points on the stack
+    /// (both degrees below `N`).
+    fn subpatch_bounds_on_stack<const N: usize>(&self, window: ParamWindow) -> Aabb<P> {
+        let (n_rows, n_cols) = (self.n_rows, self.n_cols);
         let ([u0, u1], [v0, v1]) = ends(window);
         // Each row cut to [v0, v1], then each column of the result to [u0, u1].
-        let mut rows = [[P::ZERO; SMALL]; SMALL];
+        let mut rows = [[P::ZERO; N]; N];
         for (row, r) in rows.iter_mut().zip(self.points.chunks(n_cols)) {
-            subsegment_small(r, v0, v1, &mut row[..n_cols]);
+            subsegment_on_stack::<P, N>(r, v0, v1, &mut row[..n_cols]);
         }
         let mut bounds = Aabb::from_point(self.points[0]);
-        let (mut column, mut cut) = ([P::ZERO; SMALL], [P::ZERO; SMALL]);
+        let (mut column, mut cut) = ([P::ZERO; N], [P::ZERO; N]);
         for k in 0..n_cols {
             for (slot, row) in column.iter_mut().zip(&rows[..n_rows]) {
                 *slot = row[k];
             }
-            subsegment_small(&column[..n_rows], u0, u1, &mut cut[..n_rows]);
+            subsegment_on_stack::<P, N>(&column[..n_rows], u0, u1, &mut cut[..n_rows]);
             let first = if k == 0 { Aabb::from_point(cut[0]) } else { bounds };
             bounds = cut[..n_rows].iter().fold(first, |b, &p| b.including(p));
         }

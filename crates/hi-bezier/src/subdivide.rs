@@ -3,7 +3,7 @@
 //! curve split at t₀ are Bézier curves of the same degree whose control points are the edges of
 //! de Casteljau's triangle; subsegments [t₀, t₁] come from the blossom.
 
-use crate::curve::{SMALL, lerp};
+use crate::curve::lerp;
 use crate::{BezierCurve, ControlPoint, ParamRange};
 
 impl<P: ControlPoint> BezierCurve<P> {
@@ -70,10 +70,16 @@ pub(crate) fn subsegment_points<P: ControlPoint>(control: &[P], t0: f64, t1: f64
 }
 
 /// The control points of [`subsegment_points`] written into `out` (of the length of
-/// `control`, at most [`SMALL`]), with scratch on the stack: no allocation.
-pub(crate) fn subsegment_small<P: ControlPoint>(control: &[P], t0: f64, t1: f64, out: &mut [P]) {
+/// `control`, at most `N`), with scratch arrays of `N` points on the stack: no allocation, and
+/// cubics (`N = 4`) zero and copy no more than they use.
+pub(crate) fn subsegment_on_stack<P: ControlPoint, const N: usize>(
+    control: &[P],
+    t0: f64,
+    t1: f64,
+    out: &mut [P],
+) {
     let len = control.len();
-    let (mut after_t1, mut work) = ([P::ZERO; SMALL], [P::ZERO; SMALL]);
+    let (mut after_t1, mut work) = ([P::ZERO; N], [P::ZERO; N]);
     after_t1[..len].copy_from_slice(control);
     subsegment_with(t0, t1, &mut after_t1[..len], &mut work[..len], &mut out[..len]);
 }

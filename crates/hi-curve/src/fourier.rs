@@ -39,20 +39,22 @@ fn inverse_plan(len: usize) -> Arc<dyn ComplexToReal<f64>> {
 /// of buffers); longer transforms allocate their own.
 const KEEP_BUFFERS_UP_TO: usize = 1 << 20;
 
-/// The work buffers of an inverse real FFT: spectrum, output and scratch.
+/// The work buffers of inverse real FFTs: spectrum, scratch, and one output column per
+/// coordinate.
 #[derive(Default)]
 struct InverseBuffers {
     spectrum: Vec<Complex<f64>>,
+    /// `dim` columns of `plan.len()` samples, one after the other.
     output: Vec<f64>,
     scratch: Vec<Complex<f64>>,
 }
 
 impl InverseBuffers {
-    /// Sized for `plan` (contents unspecified).
-    fn fit(&mut self, plan: &dyn ComplexToReal<f64>) {
+    /// Sized for `plan` and `dim` output columns (contents unspecified).
+    fn fit(&mut self, plan: &dyn ComplexToReal<f64>, dim: usize) {
         let zero = Complex::new(0.0, 0.0);
         self.spectrum.resize(plan.complex_len(), zero);
-        self.output.resize(plan.len(), 0.0);
+        self.output.resize(dim * plan.len(), 0.0);
         self.scratch.resize(plan.get_scratch_len(), zero);
     }
 }
@@ -67,11 +69,12 @@ thread_local! {
 /// so a nested call gets fresh ones), or fresh ones for a long transform.
 fn with_inverse_buffers<R>(
     plan: &dyn ComplexToReal<f64>,
+    dim: usize,
     f: impl FnOnce(&mut InverseBuffers) -> R,
 ) -> R {
     let keep = plan.len() <= KEEP_BUFFERS_UP_TO;
     let mut buffers = if keep { INVERSE_BUFFERS.take() } else { InverseBuffers::default() };
-    buffers.fit(plan);
+    buffers.fit(plan, dim);
     let out = f(&mut buffers);
     if keep {
         INVERSE_BUFFERS.set(buffers);
@@ -277,9 +280,8 @@ impl<P: ControlPoint> Fourier<P> {
         let big_n = n_samples;
         let half = big_n / 2;
         let plan = inverse_plan(big_n);
-        let mut result = vec![P::ZERO; big_n];
-        with_inverse_buffers(plan.as_ref(), |b| {
-            for i in 0..P::DIM {
+        with_inverse_buffers(plan.as_ref(), P::DIM, |b| {
+            for (i, column) in b.output.chunks_exact_mut(big_n).enumerate() {
                 b.spectrum.fill(Complex::new(0.0, 0.0));
                 if order == 0 {
                     b.spectrum[0].re += self.cos[0].coord(i);
@@ -309,14 +311,14 @@ impl<P: ControlPoint> Fourier<P> {
                 if big_n.is_multiple_of(2) {
                     b.spectrum[half].im = 0.0;
                 }
-                plan.process_with_scratch(&mut b.spectrum, &mut b.output, &mut b.scratch)
+                plan.process_with_scratch(&mut b.spectrum, column, &mut b.scratch)
                     .expect("buffer sizes come from the plan, imaginary parts are zeroed");
-                for (r, &x) in result.iter_mut().zip(&b.output) {
-                    *r = P::from_coords(|c| if c == i { x } else { r.coord(c) });
-                }
             }
-        });
-        result
+            // Assembled once from the columns (writing each coordinate into the points in turn
+            // cost as much as the transforms).
+            let columns = &b.output;
+            (0..big_n).map(|l| P::from_coords(|c| columns[c * big_n + l])).collect()
+        })
     }
 
     /// The polynomial t ↦ X(t + offset): aⱼ' = aⱼ cos φ + bⱼ sin φ, bⱼ' = bⱼ cos φ − aⱼ sin φ

@@ -112,6 +112,7 @@ impl Interval {
     /// assert!(Interval::new(f64::NAN, 1.0).is_empty());
     /// ```
     #[must_use]
+    #[inline]
     pub fn new(lo: f64, hi: f64) -> Self {
         if lo <= hi && lo < f64::INFINITY && hi > f64::NEG_INFINITY {
             Self { lo: lo0(lo), hi: hi0(hi) }
@@ -572,6 +573,7 @@ impl Neg for Interval {
 impl Add for Interval {
     type Output = Self;
     /// X + Y = [xₗ + yₗ, xᵤ + yᵤ] (§5.6), rounded outward.
+    #[inline]
     fn add(self, y: Self) -> Self {
         if self.is_empty() || y.is_empty() {
             return Self::EMPTY;
@@ -583,6 +585,7 @@ impl Add for Interval {
 impl Sub for Interval {
     type Output = Self;
     /// X − Y = [xₗ − yᵤ, xᵤ − yₗ] (§5.6), rounded outward.
+    #[inline]
     fn sub(self, y: Self) -> Self {
         if self.is_empty() || y.is_empty() {
             return Self::EMPTY;
@@ -594,6 +597,7 @@ impl Sub for Interval {
 impl Mul for Interval {
     type Output = Self;
     /// X · Y = [min of the four corner products, max of them] (§5.6), rounded outward.
+    #[inline]
     fn mul(self, y: Self) -> Self {
         if self.is_empty() || y.is_empty() {
             return Self::EMPTY;
@@ -673,7 +677,40 @@ macro_rules! scalar_ops {
     )*};
 }
 
-scalar_ops!(Add add AddAssign add_assign, Sub sub SubAssign sub_assign, Mul mul MulAssign mul_assign);
+scalar_ops!(Add add AddAssign add_assign, Sub sub SubAssign sub_assign);
+
+impl Mul<f64> for Interval {
+    type Output = Self;
+    /// The product with the point interval `[x, x]` (empty when `x` is not finite): the same
+    /// bounds as `X · [x, x]`, with the two corner products picked by the sign of `x` alone.
+    #[inline]
+    fn mul(self, x: f64) -> Self {
+        if self.is_empty() || !x.is_finite() {
+            return Self::EMPTY;
+        }
+        if x >= 0.0 {
+            Self::new(mul_down(self.lo, x), mul_up(self.hi, x))
+        } else {
+            Self::new(mul_down(self.hi, x), mul_up(self.lo, x))
+        }
+    }
+}
+
+impl Mul<Interval> for f64 {
+    type Output = Interval;
+    /// The product of the point interval `[self, self]` with `x`.
+    #[inline]
+    fn mul(self, x: Interval) -> Interval {
+        x * self
+    }
+}
+
+impl MulAssign for Interval {
+    #[inline]
+    fn mul_assign(&mut self, x: Self) {
+        *self = *self * x;
+    }
+}
 
 impl Div<f64> for Interval {
     type Output = Self;

@@ -39,7 +39,8 @@ fn open_triangles() -> [PolyMesh; 2] {
 
 #[test]
 fn every_step_builds_the_mesh_the_general_builder_builds() {
-    let closed_triangles = [PolyMesh::octahedron(), PolyMesh::star(), PolyMesh::triangulated_cube()];
+    let closed_triangles =
+        [PolyMesh::octahedron(), PolyMesh::star(), PolyMesh::triangulated_cube()];
     let closed_polygons = [PolyMesh::cube(), PolyMesh::quad_star()];
     let mut checked = 0;
     for scheme in Scheme::ALL.into_iter().chain([Scheme::Loop(LoopWeights::Warren)]) {

@@ -62,6 +62,9 @@ pub struct BezierObject {
     pieces: Vec<Piece>,
     /// Control boxes of the pieces.
     boxes: Vec<(DVec3, DVec3)>,
+    /// Control nets of the pieces of at most [`NET_POINTS`] points (their children's nets, at
+    /// ray time, are split from these).
+    nets: Vec<Option<Net>>,
     /// Normal cones of the pieces (`None` where a normal is undefined or the cone is too wide).
     cones: Vec<Option<Cone>>,
     bvh: Bvh,
@@ -120,12 +123,23 @@ impl BezierObject {
         }
         let mut pieces = Vec::new();
         let mut boxes = Vec::new();
+        let mut nets = Vec::new();
         let mut magnitude: f64 = 0.0;
         for (i, patch) in patches.iter().enumerate() {
             for p in patch.control_points() {
                 magnitude = magnitude.max(p.abs().max_element());
             }
-            split_flat(patch, i, [0.0, 1.0], [0.0, 1.0], 0, settings, &mut pieces, &mut boxes);
+            split_flat(
+                patch,
+                i,
+                [0.0, 1.0],
+                [0.0, 1.0],
+                0,
+                settings,
+                &mut pieces,
+                &mut boxes,
+                &mut nets,
+            );
         }
         let bvh = Bvh::build(&boxes);
         let cones = pieces.iter().map(|p| normal_cone(&patches[p.patch], p.u, p.v)).collect();
@@ -138,6 +152,7 @@ impl BezierObject {
             colors,
             pieces,
             boxes,
+            nets,
             cones,
             bvh,
             settings: *settings,
@@ -178,8 +193,14 @@ impl BezierObject {
         self.bvh
             .traverse(ray, |i, t_max| {
                 let r = ray.with_t_max(t_max);
-                self.intersect_piece(&r, self.pieces[i], Some(self.boxes[i]), self.cones[i], 0)
-                    .map(|h| (h.t, h))
+                self.intersect_piece(
+                    &r,
+                    self.pieces[i],
+                    self.nets[i].as_ref(),
+                    Some((self.boxes[i], self.cones[i])),
+                    0,
+                )
+                .map(|h| (h.t, h))
             })
             .map(|(_, h)| h)
     }
@@ -189,56 +210,84 @@ impl BezierObject {
     #[must_use]
     pub fn occluded(&self, ray: &Ray) -> bool {
         self.bvh.any(ray, |i| {
-            self.intersect_piece(ray, self.pieces[i], Some(self.boxes[i]), self.cones[i], 0)
-                .is_some_and(|h| h.t < ray.t_max)
+            self.intersect_piece(
+                ray,
+                self.pieces[i],
+                self.nets[i].as_ref(),
+                Some((self.boxes[i], self.cones[i])),
+                0,
+            )
+            .is_some_and(|h| h.t < ray.t_max)
         })
     }
 
     /// The nearest hit in `piece`. If the ray is transversal to the piece's normal cone it meets
     /// the piece at most once, and Newton from the centre finds that root; otherwise (a grazing
     /// ray, which may cross the piece twice), or if Newton fails, the sub-pieces are searched.
+    ///
+    /// `net` is the piece's control net, if it has at most [`NET_POINTS`] points. `known` holds
+    /// its control box and normal cone when they were computed at build time; a sub-piece's
+    /// are computed here, the cone only once the ray meets the box and only where it decides
+    /// something (most sub-pieces' boxes are missed, and the cone costs 25 evaluations).
     fn intersect_piece(
         &self,
         ray: &Ray,
         piece: Piece,
-        bounds: Option<(DVec3, DVec3)>,
-        cone: Option<Cone>,
+        net: Option<&Net>,
+        known: Option<((DVec3, DVec3), Option<Cone>)>,
         depth: u32,
     ) -> Option<BezierHit> {
         let patch = &self.patches[piece.patch];
-        let (lo, hi) = bounds.unwrap_or_else(|| {
-            let bb = patch.subpatch_bounds(ParamWindow::new(
-                ParamRange::new(piece.u[0], piece.u[1]),
-                ParamRange::new(piece.v[0], piece.v[1]),
-            ));
-            (bb.min, bb.max)
-        });
+        let (lo, hi) = match (known, net) {
+            (Some(k), _) => k.0,
+            (None, Some(net)) => net.bounds(),
+            (None, None) => {
+                let bb = patch.subpatch_bounds(ParamWindow::new(
+                    ParamRange::new(piece.u[0], piece.u[1]),
+                    ParamRange::new(piece.v[0], piece.v[1]),
+                ));
+                (bb.min, bb.max)
+            }
+        };
         let pad = self.tolerance * 4.0;
         let (t0, t1) = slab(ray, lo - pad, hi + pad, ray.t_min, ray.t_max)?;
-        let dir = ray.dir.normalize();
-        let transversal = cone.is_some_and(|c| c.axis.dot(dir).abs() > c.sin_half);
         let first = self.newton(ray, piece, 0.5 * (t0 + t1));
-        let mut best = match first {
-            Newton::Hit(h) => Some(h),
-            Newton::Outside if transversal => return None,
-            _ => None,
+        let at_bottom = depth >= self.settings.max_ray_depth;
+        // Whether the ray is transversal to the piece's normals: asked only where it decides
+        // something (a root found, or none inside, above the deepest level).
+        let transversal = || {
+            let cone = known.map_or_else(|| normal_cone(patch, piece.u, piece.v), |k| k.1);
+            let dir = ray.dir.normalize();
+            cone.is_some_and(|c| c.axis.dot(dir).abs() > c.sin_half)
         };
-        if (transversal && best.is_some()) || depth >= self.settings.max_ray_depth {
-            return best;
+        let mut best = None;
+        match first {
+            Newton::Hit(h) if at_bottom || transversal() => return Some(h),
+            Newton::Hit(h) => best = Some(h),
+            Newton::Outside if at_bottom || transversal() => return None,
+            Newton::Failed if at_bottom => return None,
+            Newton::Outside | Newton::Failed => {}
         }
         let (um, vm) = (0.5 * (piece.u[0] + piece.u[1]), 0.5 * (piece.v[0] + piece.v[1]));
-        for (u, v) in [
+        let nets = net.map(Net::quarters);
+        for (i, (u, v)) in [
             ([piece.u[0], um], [piece.v[0], vm]),
             ([um, piece.u[1]], [piece.v[0], vm]),
             ([piece.u[0], um], [vm, piece.v[1]]),
             ([um, piece.u[1]], [vm, piece.v[1]]),
-        ] {
+        ]
+        .into_iter()
+        .enumerate()
+        {
             let t_max = best.map_or(ray.t_max, |b| b.t);
             let sub = Piece { patch: piece.patch, u, v };
-            let cone = normal_cone(patch, u, v);
-            if let Some(h) =
-                self.intersect_piece(&ray.with_t_max(t_max), sub, None, cone, depth + 1)
-            {
+            if let Some(h) = self.intersect_piece(
+                &ray.with_t_max(t_max),
+                sub,
+                nets.as_ref().map(|n| &n[i]),
+                None,
+                depth + 1,
+            ) {
                 best = Some(h);
             }
         }
@@ -359,7 +408,9 @@ fn normal_cone(patch: &BezierPatch<DVec3>, u: [f64; 2], v: [f64; 2]) -> Option<C
         *n = su.cross(sv).try_normalize()?;
     }
     let axis = normals.iter().copied().sum::<DVec3>().try_normalize()?;
-    let half = normals.iter().map(|n| n.dot(axis).clamp(-1.0, 1.0).acos()).fold(0.0, f64::max);
+    // The widest angle from the axis: acos of the smallest cosine (acos decreases).
+    let cos = normals.iter().map(|n| n.dot(axis).clamp(-1.0, 1.0)).fold(1.0, f64::min);
+    let half = cos.acos();
     let widened = 1.5 * half + 0.05;
     (widened < 80f64.to_radians()).then(|| Cone { axis, sin_half: widened.sin() })
 }
@@ -385,7 +436,7 @@ pub struct BezierHit {
 }
 
 /// Splits `patch` over the window (`u`, `v`) until flat, collecting the pieces and their control
-/// boxes.
+/// nets.
 #[expect(clippy::too_many_arguments, reason = "a private recursive helper")]
 fn split_flat(
     patch: &BezierPatch<DVec3>,
@@ -396,13 +447,15 @@ fn split_flat(
     settings: &BezierOptions,
     pieces: &mut Vec<Piece>,
     boxes: &mut Vec<(DVec3, DVec3)>,
+    nets: &mut Vec<Option<Net>>,
 ) {
     let sub =
         patch.subpatch(ParamWindow::new(ParamRange::new(u[0], u[1]), ParamRange::new(v[0], v[1])));
-    let bb = sub.control_bounding_box();
     if depth >= settings.max_depth || is_flat(&sub, settings.flatness) {
         pieces.push(Piece { patch: index, u, v });
+        let bb = sub.control_bounding_box();
         boxes.push((bb.min, bb.max));
+        nets.push(Net::of(&sub));
         return;
     }
     let (um, vm) = (0.5 * (u[0] + u[1]), 0.5 * (v[0] + v[1]));
@@ -412,7 +465,86 @@ fn split_flat(
         ([u[0], um], [vm, v[1]]),
         ([um, u[1]], [vm, v[1]]),
     ] {
-        split_flat(patch, index, a, b, depth + 1, settings, pieces, boxes);
+        split_flat(patch, index, a, b, depth + 1, settings, pieces, boxes, nets);
+    }
+}
+
+/// Most control points a [`Net`] holds: a bicubic patch's 4 × 4 (larger patches take their
+/// boxes from `hi-bezier` at ray time).
+const NET_POINTS: usize = 16;
+
+/// The control net of a piece: (m + 1) × (n + 1) ≤ [`NET_POINTS`] points, row j (of u) after
+/// row j − 1, on the stack.
+#[derive(Clone, Copy, Debug)]
+struct Net {
+    points: [DVec3; NET_POINTS],
+    m: usize,
+    n: usize,
+}
+
+impl Net {
+    /// The net of `patch`, if it has at most [`NET_POINTS`] control points.
+    fn of(patch: &BezierPatch<DVec3>) -> Option<Net> {
+        let p = patch.control_points();
+        (p.len() <= NET_POINTS).then(|| {
+            let mut points = [DVec3::ZERO; NET_POINTS];
+            points[..p.len()].copy_from_slice(p);
+            Net { points, m: patch.degree_u(), n: patch.degree_v() }
+        })
+    }
+
+    /// The box of the control points, which holds the piece (convex hull property).
+    fn bounds(&self) -> (DVec3, DVec3) {
+        let p = &self.points[..(self.m + 1) * (self.n + 1)];
+        p.iter().fold((p[0], p[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)))
+    }
+
+    /// The nets of the four quarters of the piece, split at the middle of u and v by de
+    /// Casteljau (u low and v low, u high and v low, u low and v high, u high and v high).
+    fn quarters(&self) -> [Net; 4] {
+        let (rows, cols) = (self.m + 1, self.n + 1);
+        let empty = Net { points: [DVec3::ZERO; NET_POINTS], m: self.m, n: self.n };
+        // Each row halved in v, then each column of each half halved in u.
+        let (mut v_low, mut v_high) = (empty, empty);
+        let mut work = [DVec3::ZERO; NET_POINTS];
+        for j in 0..rows {
+            let row = &self.points[j * cols..(j + 1) * cols];
+            halve(row, &mut work, |i, a, b| {
+                v_low.points[j * cols + i] = a;
+                v_high.points[j * cols + cols - 1 - i] = b;
+            });
+        }
+        let mut quarter = |half: &Net| {
+            let (mut low, mut high) = (empty, empty);
+            let mut column = [DVec3::ZERO; NET_POINTS];
+            for k in 0..cols {
+                for (j, c) in column[..rows].iter_mut().enumerate() {
+                    *c = half.points[j * cols + k];
+                }
+                halve(&column[..rows], &mut work, |i, a, b| {
+                    low.points[i * cols + k] = a;
+                    high.points[(rows - 1 - i) * cols + k] = b;
+                });
+            }
+            (low, high)
+        };
+        let (a, b) = quarter(&v_low);
+        let (c, d) = quarter(&v_high);
+        [a, b, c, d]
+    }
+}
+
+/// De Casteljau at ½ on the polygon `c`: calls `out(i, first, last)` with the first and last
+/// point after i steps, which are point i of the first half and point i from the end of the
+/// second. `work` holds at least `c.len()` points.
+fn halve(c: &[DVec3], work: &mut [DVec3], mut out: impl FnMut(usize, DVec3, DVec3)) {
+    let len = c.len();
+    work[..len].copy_from_slice(c);
+    for i in 0..len {
+        out(i, work[0], work[len - 1 - i]);
+        for j in 0..len - 1 - i {
+            work[j] = 0.5 * (work[j] + work[j + 1]);
+        }
     }
 }
 
@@ -444,6 +576,9 @@ fn is_flat(p: &BezierPatch<DVec3>, flatness: f64) -> bool {
 /// arrays up to degree [`MAX_FAST_DEGREE`] (no allocation), de Casteljau beyond.
 pub(crate) fn eval(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
     let (m, n) = (p.degree_u(), p.degree_v());
+    if m == 3 && n == 3 {
+        return eval_square::<4>(p, u, v);
+    }
     let (Some((bu, dbu)), Some((bv, dbv))) = (
         Bernstein::new(m).values_with_derivatives::<{ MAX_FAST_DEGREE + 1 }>(u),
         Bernstein::new(n).values_with_derivatives::<{ MAX_FAST_DEGREE + 1 }>(v),
@@ -466,23 +601,79 @@ pub(crate) fn eval(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVe
     (s, su, sv)
 }
 
+/// [`eval`] for a patch of degree `N − 1` in both directions (the bicubic patches of §5.7 take
+/// `N = 4`): the same sums in the same order, with loops the compiler unrolls.
+fn eval_square<const N: usize>(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
+    let basis = Bernstein::new(N - 1);
+    let (Some((bu, dbu)), Some((bv, dbv))) =
+        (basis.values_with_derivatives::<N>(u), basis.values_with_derivatives::<N>(v))
+    else {
+        return p.eval_with_partials(u, v);
+    };
+    let pts = p.control_points();
+    let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+    for j in 0..N {
+        let row = &pts[j * N..(j + 1) * N];
+        let (mut r, mut rv) = (DVec3::ZERO, DVec3::ZERO);
+        for k in 0..N {
+            r += row[k] * bv[k];
+            rv += row[k] * dbv[k];
+        }
+        s += r * bu[j];
+        su += r * dbu[j];
+        sv += rv * bu[j];
+    }
+    (s, su, sv)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn fast_evaluation_matches_hi_bezier() {
+        // A 4 × 3 net (the general path) and a bicubic one (the unrolled path).
+        for cols in [3, 4] {
+            let rows: Vec<Vec<DVec3>> = (0..4)
+                .map(|j| {
+                    (0..cols)
+                        .map(|k| DVec3::new(j as f64, k as f64, ((j * cols + k) as f64).sin()))
+                        .collect()
+                })
+                .collect();
+            let p = BezierPatch::new(rows);
+            for (u, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 0.5), (0.9, 1.0)] {
+                let (a, b, c) = eval(&p, u, v);
+                let (x, y, z) = p.eval_with_partials(u, v);
+                assert!((a - x).length() < 1e-13 && (b - y).length() < 1e-13, "{u} {v}");
+                assert!((c - z).length() < 1e-13, "{u} {v}");
+            }
+        }
+    }
+
+    #[test]
+    fn quarter_nets_are_the_subpatches() {
         let rows: Vec<Vec<DVec3>> = (0..4)
             .map(|j| {
-                (0..3).map(|k| DVec3::new(j as f64, k as f64, ((j * 3 + k) as f64).sin())).collect()
+                (0..4)
+                    .map(|k| DVec3::new(j as f64, (k * k) as f64, ((j * 4 + k) as f64).cos()))
+                    .collect()
             })
             .collect();
         let p = BezierPatch::new(rows);
-        for (u, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 0.5), (0.9, 1.0)] {
-            let (a, b, c) = eval(&p, u, v);
-            let (x, y, z) = p.eval_with_partials(u, v);
-            assert!((a - x).length() < 1e-13 && (b - y).length() < 1e-13, "{u} {v}");
-            assert!((c - z).length() < 1e-13, "{u} {v}");
+        let net = Net::of(&p).expect("a bicubic net fits");
+        let windows = [
+            ((0.0, 0.5), (0.0, 0.5)),
+            ((0.5, 1.0), (0.0, 0.5)),
+            ((0.0, 0.5), (0.5, 1.0)),
+            ((0.5, 1.0), (0.5, 1.0)),
+        ];
+        for (quarter, ((u0, u1), (v0, v1))) in net.quarters().iter().zip(windows) {
+            let sub =
+                p.subpatch(ParamWindow::new(ParamRange::new(u0, u1), ParamRange::new(v0, v1)));
+            for (a, b) in quarter.points.iter().zip(sub.control_points()) {
+                assert!((*a - *b).length() < 1e-14, "{a} {b}");
+            }
         }
     }
 }

@@ -591,7 +591,11 @@ pub(crate) const FIGURES: &[Figure] = &[
             draw: |_| close_up((5, 19), &harmonic_glb(Model::Head, OCTAHEDRON_SMOOTH)?),
         }],
         panels: &[
-            Panel { suffix: "a", title: "(a) Surface", draw: |_| texel_glb(Model::Head, OCTAHEDRON) },
+            Panel {
+                suffix: "a",
+                title: "(a) Surface",
+                draw: |_| texel_glb(Model::Head, OCTAHEDRON),
+            },
             Panel {
                 suffix: "b",
                 title: "(b) Smooth",

@@ -265,7 +265,7 @@ impl PolyMesh {
         }
         let n_he = corners.len();
         let n_faces = face_start.len() - 1;
-        debug_assert_eq!(twin.len(), n_he);
+        debug_assert_eq!(twin.len(), n_he, "one twin per half-edge");
         let mut he_face = vec![0_u32; n_he];
         // Each edge once, at its canonical half-edge (the one that runs upwards, or the only
         // one), in buckets by its lower vertex: counted in one pass over the faces, filled
@@ -277,8 +277,8 @@ impl PolyMesh {
         let mut bucket_start = vec![0_u32; positions.len() + 1];
         for f in 0..n_faces {
             let (start, end) = (face_start[f] as usize, face_start[f + 1] as usize);
+            he_face[start..end].fill(f as u32);
             for h in start..end {
-                he_face[h] = f as u32;
                 if let Some((lo, _)) = canonical(h, if h + 1 == end { start } else { h + 1 }) {
                     bucket_start[lo as usize + 1] += 1;
                 }
@@ -324,16 +324,7 @@ impl PolyMesh {
                 *slot = h as u32;
             }
         }
-        Ok(PolyMesh {
-            positions,
-            face_start,
-            corners,
-            he_face,
-            twin,
-            he_edge,
-            n_edges,
-            vertex_he,
-        })
+        Ok(PolyMesh { positions, face_start, corners, he_face, twin, he_edge, n_edges, vertex_he })
     }
 
     /// The vertex positions.
