@@ -362,8 +362,9 @@ pub fn write_glb_with_edges<W: Write>(
 ///
 /// # Errors
 ///
-/// [`FileError::Format`](super::FileError::Format) for a file the `gltf` crate rejects, or
-/// whose primitive names a `POSITION` accessor the file does not have.
+/// [`FileError::Format`](super::FileError::Format) for a file the `gltf` crate rejects, whose
+/// primitive names a `POSITION` accessor the file does not have, or whose buffer has a relative
+/// URI that is not UTF-8 once percent-decoded (the `gltf` crate's import panics on it).
 ///
 /// # Examples
 ///
@@ -372,12 +373,18 @@ pub fn write_glb_with_edges<W: Write>(
 /// let bad = br#"{"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"accesors":[]}"#;
 /// let err = hi_mesh::export::parse_gltf(bad).unwrap_err();
 /// assert!(err.to_string().contains("POSITION names accessor 0"), "{err}");
+/// // "%AA" alone decodes to a byte that is not UTF-8; "%C3%A9" (é) is fine.
+/// let bad = br#"{"asset":{"version":"2.0"},"buffers":[{"uri":"a%AA.bin","byteLength":4}]}"#;
+/// let err = hi_mesh::export::parse_gltf(bad).unwrap_err();
+/// assert!(err.to_string().contains("buffer 0: its URI is not UTF-8"), "{err}");
+/// let good = br#"{"asset":{"version":"2.0"},"buffers":[{"uri":"caf%C3%A9.bin","byteLength":4}]}"#;
+/// assert!(hi_mesh::export::parse_gltf(good).is_ok());
 /// ```
 pub fn parse_gltf(bytes: &[u8]) -> Result<::gltf::Gltf, Error> {
     let ::gltf::Gltf { document, blob } =
         ::gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| gltf_error(e, None))?;
     let root = document.into_json();
-    if let Some(problem) = position_accessor_problem(&root) {
+    if let Some(problem) = position_accessor_problem(&root).or_else(|| buffer_uri_problem(&root)) {
         return Err(format_error(format!("glTF: {problem}"), None));
     }
     let document = ::gltf::Document::from_json(root).map_err(|e| gltf_error(e, None))?;
@@ -401,6 +408,39 @@ fn position_accessor_problem(root: &json::Root) -> Option<String> {
         }
     }
     None
+}
+
+/// A buffer whose URI is a relative path (no `:`) that is not UTF-8 once percent-decoded
+/// (`%AA` on its own, say), named: the `gltf` crate's buffer import decodes such a URI with an
+/// `unwrap` and panics (found by fuzzing the scan readers). URIs with a scheme (`data:`,
+/// `file:`) are not decoded there.
+fn buffer_uri_problem(root: &json::Root) -> Option<String> {
+    root.buffers.iter().enumerate().find_map(|(b, buffer)| {
+        let uri = buffer.uri.as_deref()?;
+        (!uri.contains(':') && String::from_utf8(percent_decoded(uri.as_bytes())).is_err())
+            .then(|| format!("buffer {b}: its URI is not UTF-8 once percent-decoded"))
+    })
+}
+
+/// `%XX` (two hex digits) replaced by the byte XX; everything else kept (as the `urlencoding`
+/// crate that `gltf` uses decodes).
+fn percent_decoded(data: &[u8]) -> Vec<u8> {
+    let hex = |c: u8| char::from(c).to_digit(16).and_then(|d| u8::try_from(d).ok());
+    let mut out = Vec::with_capacity(data.len());
+    let mut i = 0;
+    while i < data.len() {
+        if data[i] == b'%'
+            && let (Some(h), Some(l)) =
+                (data.get(i + 1).copied().and_then(hex), data.get(i + 2).copied().and_then(hex))
+        {
+            out.push(h << 4 | l);
+            i += 3;
+        } else {
+            out.push(data[i]);
+            i += 1;
+        }
+    }
+    out
 }
 
 /// Why the `gltf` crate's reader could not read a primitive's positions, normals, first UV
