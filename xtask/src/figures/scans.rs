@@ -367,19 +367,13 @@ fn image_png(image: &GeometryImage, rows: usize, tiles: u32) -> Result<Vec<u8>> 
     Ok(bytes)
 }
 
-/// The geometry image of a fit (before smoothing) as a PNG.
-fn fit_png(model: Model, setup: Setup, half: bool) -> Result<Vec<u8>> {
+/// The geometry image of a fit (before smoothing) as a PNG: its first half when `half`,
+/// repeated `tiles` × `tiles` (2 shows one period and the neighbouring copies that harmonic
+/// interpolation treats as its continuation).
+fn fit_png(model: Model, setup: Setup, half: bool, tiles: u32) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
     let image = result.source.image();
-    image_png(image, if half { image.rows() / 2 } else { image.rows() }, 1)
-}
-
-/// The geometry image of a fit (before smoothing) repeated 2×2 as a PNG: one period of it and
-/// the neighbouring copies that harmonic interpolation treats as its continuation.
-fn periodic_png(model: Model, setup: Setup) -> Result<Vec<u8>> {
-    let result = fitted(&scan(model)?, setup, false)?;
-    let image = result.source.image();
-    image_png(image, image.rows(), 2)
+    image_png(image, if half { image.rows() / 2 } else { image.rows() }, tiles)
 }
 
 /// Every tenth point of the scan of `model`, rendered for figure `number` (its panel (a), "Data
@@ -472,7 +466,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         panels: &[Panel {
             suffix: "",
             title: "",
-            draw: |_| fit_png(Model::Pointed, SPHERE, false),
+            draw: |_| fit_png(Model::Pointed, SPHERE, false, 1),
         }],
     },
     Figure {
@@ -565,13 +559,13 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) Geometry image",
-                draw: |_| fit_png(Model::Head, OCTAHEDRON_SMOOTH, false),
+                draw: |_| fit_png(Model::Head, OCTAHEDRON_SMOOTH, false, 1),
             },
             Panel { suffix: "b", title: "(b) Render", draw: |_| surface_png((5, 18), OCTAHEDRON) },
             Panel {
                 suffix: "c",
                 title: "(c) Periodic image",
-                draw: |_| periodic_png(Model::Head, OCTAHEDRON),
+                draw: |_| fit_png(Model::Head, OCTAHEDRON, false, 2),
             },
         ],
     },
@@ -622,7 +616,7 @@ pub(crate) const FIGURES: &[Figure] = &[
             Panel {
                 suffix: "a",
                 title: "(a) Geometry image",
-                draw: |_| fit_png(Model::Head, FLAT, true),
+                draw: |_| fit_png(Model::Head, FLAT, true, 1),
             },
             Panel { suffix: "b", title: "(b) Render", draw: |_| surface_png((5, 20), FLAT) },
         ],
