@@ -11,7 +11,8 @@
 //! between +M and −M, which is what makes the even case real.
 //!
 //! Sampling N uniform points is then an inverse FFT of length N of the zero-padded (N > 2M) or
-//! folded (N ≤ 2M) spectrum: O(N log N) instead of the O(nN) direct sum.
+//! folded (N ≤ 2M) spectrum: O(N log N) instead of the O(nN) direct sum. Two coordinates share
+//! one complex transform, as x + i·y.
 
 use std::cell::RefCell;
 use std::f64::consts::PI;
@@ -19,12 +20,14 @@ use std::sync::Arc;
 
 use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::{Fft, FftPlanner};
 
 use crate::ControlPoint;
 use crate::trig::{for_each_harmonic, pow_order, quarter_turns};
 
 thread_local! {
     static PLANNER: RefCell<RealFftPlanner<f64>> = RefCell::new(RealFftPlanner::new());
+    static COMPLEX_PLANNER: RefCell<FftPlanner<f64>> = RefCell::new(FftPlanner::new());
 }
 
 fn forward_plan(len: usize) -> Arc<dyn RealToComplex<f64>> {
@@ -35,27 +38,59 @@ fn inverse_plan(len: usize) -> Arc<dyn ComplexToReal<f64>> {
     PLANNER.with(|p| p.borrow_mut().plan_fft_inverse(len))
 }
 
+fn complex_inverse_plan(len: usize) -> Arc<dyn Fft<f64>> {
+    COMPLEX_PLANNER.with(|p| p.borrow_mut().plan_fft_inverse(len))
+}
+
 /// The largest sampling length whose work buffers a thread keeps between calls (about 24 MB
 /// of buffers); longer transforms allocate their own.
 const KEEP_BUFFERS_UP_TO: usize = 1 << 20;
 
-/// The work buffers of inverse real FFTs: spectrum, scratch, and one output column per
-/// coordinate.
+/// The plans of uniform sampling at N points: two coordinates at a time share one complex
+/// inverse FFT of length N (x + i·y; each is real, so they come apart as the real and the
+/// imaginary part), and a last coordinate left over (odd dimension) takes an inverse real FFT.
+struct InversePlans {
+    /// For the coordinate pairs; `None` in dimension 1.
+    pair: Option<Arc<dyn Fft<f64>>>,
+    /// For the coordinate left over; `None` in even dimension.
+    single: Option<Arc<dyn ComplexToReal<f64>>>,
+}
+
+impl InversePlans {
+    fn new(len: usize, dim: usize) -> Self {
+        Self {
+            pair: (dim >= 2).then(|| complex_inverse_plan(len)),
+            single: (dim % 2 == 1).then(|| inverse_plan(len)),
+        }
+    }
+}
+
+/// The work buffers of uniform sampling: one complex column per coordinate pair (transformed
+/// in place), and for a coordinate left over its half spectrum and real output column.
 #[derive(Default)]
 struct InverseBuffers {
+    /// `dim / 2` columns of N values, one after the other.
+    pairs: Vec<Complex<f64>>,
     spectrum: Vec<Complex<f64>>,
-    /// `dim` columns of `plan.len()` samples, one after the other.
     output: Vec<f64>,
     scratch: Vec<Complex<f64>>,
 }
 
 impl InverseBuffers {
-    /// Sized for `plan` and `dim` output columns (contents unspecified).
-    fn fit(&mut self, plan: &dyn ComplexToReal<f64>, dim: usize) {
+    /// Sized for `plans` at length `len` in dimension `dim` (contents unspecified).
+    fn fit(&mut self, plans: &InversePlans, len: usize, dim: usize) {
         let zero = Complex::new(0.0, 0.0);
-        self.spectrum.resize(plan.complex_len(), zero);
-        self.output.resize(dim * plan.len(), 0.0);
-        self.scratch.resize(plan.get_scratch_len(), zero);
+        let mut scratch = 0;
+        self.pairs.resize(dim / 2 * len, zero);
+        if let Some(plan) = &plans.pair {
+            scratch = plan.get_inplace_scratch_len();
+        }
+        if let Some(plan) = &plans.single {
+            self.spectrum.resize(plan.complex_len(), zero);
+            self.output.resize(len, 0.0);
+            scratch = scratch.max(plan.get_scratch_len());
+        }
+        self.scratch.resize(scratch, zero);
     }
 }
 
@@ -65,16 +100,17 @@ thread_local! {
     static INVERSE_BUFFERS: RefCell<InverseBuffers> = RefCell::new(InverseBuffers::default());
 }
 
-/// Runs `f` with buffers sized for `plan`: this thread's kept ones (taken out for the call,
+/// Runs `f` with buffers sized for `plans`: this thread's kept ones (taken out for the call,
 /// so a nested call gets fresh ones), or fresh ones for a long transform.
 fn with_inverse_buffers<R>(
-    plan: &dyn ComplexToReal<f64>,
+    plans: &InversePlans,
+    len: usize,
     dim: usize,
     f: impl FnOnce(&mut InverseBuffers) -> R,
 ) -> R {
-    let keep = plan.len() <= KEEP_BUFFERS_UP_TO;
+    let keep = len <= KEEP_BUFFERS_UP_TO;
     let mut buffers = if keep { INVERSE_BUFFERS.take() } else { InverseBuffers::default() };
-    buffers.fit(plan, dim);
+    buffers.fit(plans, len, dim);
     let out = f(&mut buffers);
     if keep {
         INVERSE_BUFFERS.set(buffers);
@@ -258,7 +294,9 @@ impl<P: ControlPoint> Fourier<P> {
         res
     }
 
-    /// X(l/N) for l = 0, …, N−1 by one inverse real FFT per coordinate, O(M + N log N).
+    /// X(l/N) for l = 0, …, N−1 by one inverse complex FFT per pair of coordinates (x + i·y:
+    /// both are real, so they are its real and imaginary parts) and an inverse real FFT for a
+    /// coordinate left over, O(M + N log N).
     ///
     /// Exact sampling for every N ≥ 1: when N ≤ 2M the frequencies fold (alias) onto the N
     /// output bins as sampling folds them. N = 0 gives an empty vector.
@@ -279,24 +317,46 @@ impl<P: ControlPoint> Fourier<P> {
         }
         let big_n = n_samples;
         let half = big_n / 2;
-        let plan = inverse_plan(big_n);
-        with_inverse_buffers(plan.as_ref(), P::DIM, |b| {
-            for (i, column) in b.output.chunks_exact_mut(big_n).enumerate() {
-                b.spectrum.fill(Complex::new(0.0, 0.0));
-                if order == 0 {
-                    b.spectrum[0].re += self.cos[0].coord(i);
+        // cⱼ·(2πij)ᵖ for coordinate i; its conjugate is the coefficient at −j.
+        let coeff = |i: usize, j: usize| {
+            let c = Complex::new(0.5 * self.cos[j].coord(i), -0.5 * self.sin[j].coord(i));
+            if order == 0 {
+                return c;
+            }
+            // (iw)ᵖ = wᵖ·iᵖ
+            let w = pow_order(2.0 * PI * j as f64, order);
+            match order % 4 {
+                0 => c * w,
+                1 => Complex::new(-c.im, c.re) * w,
+                2 => -c * w,
+                _ => Complex::new(c.im, -c.re) * w,
+            }
+        };
+        let dc = |i: usize| if order == 0 { self.cos[0].coord(i) } else { 0.0 };
+        let plans = InversePlans::new(big_n, P::DIM);
+        with_inverse_buffers(&plans, big_n, P::DIM, |b| {
+            if let Some(plan) = &plans.pair {
+                for (k, column) in b.pairs.chunks_exact_mut(big_n).enumerate() {
+                    // The spectrum of x + i·y: cⱼ(x) + i·cⱼ(y) at j, c̄ⱼ(x) + i·c̄ⱼ(y) at −j,
+                    // each folded onto j mod N.
+                    let (ix, iy) = (2 * k, 2 * k + 1);
+                    column.fill(Complex::new(0.0, 0.0));
+                    column[0] += Complex::new(dc(ix), dc(iy));
+                    for j in 1..=self.degree() {
+                        let (cx, cy) = (coeff(ix, j), coeff(iy, j));
+                        let p = j % big_n;
+                        column[p] += Complex::new(cx.re - cy.im, cx.im + cy.re);
+                        column[(big_n - p) % big_n] += Complex::new(cx.re + cy.im, cy.re - cx.im);
+                    }
+                    plan.process_with_scratch(column, &mut b.scratch);
                 }
+            }
+            if let Some(plan) = &plans.single {
+                let i = P::DIM - 1;
+                b.spectrum.fill(Complex::new(0.0, 0.0));
+                b.spectrum[0].re += dc(i);
                 for j in 1..=self.degree() {
-                    // cⱼ·(2πij)ᵖ, and its conjugate at −j.
-                    let c = Complex::new(0.5 * self.cos[j].coord(i), -0.5 * self.sin[j].coord(i));
-                    // (iw)ᵖ = wᵖ·iᵖ
-                    let w = pow_order(2.0 * PI * j as f64, order);
-                    let c = match order % 4 {
-                        0 => c * w,
-                        1 => Complex::new(-c.im, c.re) * w,
-                        2 => -c * w,
-                        _ => Complex::new(c.im, -c.re) * w,
-                    };
+                    let c = coeff(i, j);
                     let p = j % big_n;
                     let q = (big_n - p) % big_n;
                     if p <= half {
@@ -311,13 +371,26 @@ impl<P: ControlPoint> Fourier<P> {
                 if big_n.is_multiple_of(2) {
                     b.spectrum[half].im = 0.0;
                 }
-                plan.process_with_scratch(&mut b.spectrum, column, &mut b.scratch)
+                plan.process_with_scratch(&mut b.spectrum, &mut b.output, &mut b.scratch)
                     .expect("buffer sizes come from the plan, imaginary parts are zeroed");
             }
-            // Assembled once from the columns (writing each coordinate into the points in turn
-            // cost as much as the transforms).
-            let columns = &b.output;
-            (0..big_n).map(|l| P::from_coords(|c| columns[c * big_n + l])).collect()
+            // Assembled once from the columns.
+            if P::DIM == 2 {
+                return b.pairs.iter().map(|z| P::from_coords(|c| [z.re, z.im][c])).collect();
+            }
+            let (pairs, single) = (&b.pairs, &b.output);
+            (0..big_n)
+                .map(|l| {
+                    P::from_coords(|c| {
+                        if c + 1 < P::DIM || P::DIM % 2 == 0 {
+                            let z = pairs[c / 2 * big_n + l];
+                            if c % 2 == 0 { z.re } else { z.im }
+                        } else {
+                            single[l]
+                        }
+                    })
+                })
+                .collect()
         })
     }
 
@@ -369,15 +442,11 @@ impl<P: ControlPoint> Fourier<P> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::DVec2;
+    use glam::{DVec2, DVec3};
 
-    #[test]
-    fn kept_buffers_never_leak_between_calls() {
-        // One thread samples at lengths that grow, shrink, repeat and change order of
-        // derivative, reusing its buffers each time: every result must match the direct sum.
-        let pts: Vec<DVec2> =
-            (0..9).map(|k| DVec2::new((k as f64).sin() * 2.0, (1.7 * k as f64).cos())).collect();
-        let f = Fourier::from_points(&pts);
+    /// Every uniform sample of `f` against the spectral sum at its parameter, for lengths that
+    /// grow, shrink (below 2M the frequencies alias), repeat and change order of derivative.
+    fn check_uniform_samples<P: ControlPoint + std::fmt::Debug>(f: &Fourier<P>) {
         for (n_samples, order) in [(64, 0), (7, 1), (1000, 0), (3, 0), (64, 2), (1000, 1), (1, 0)] {
             let fft = f.sample_uniform_deriv(n_samples, order);
             assert_eq!(fft.len(), n_samples, "length");
@@ -385,10 +454,33 @@ mod tests {
                 let q = f.eval_deriv(l as f64 / n_samples as f64, order);
                 let scale = (2.0 * PI * 4.0).powi(order as i32).max(1.0);
                 assert!(
-                    (*p - q).length() < 1e-12 * scale,
-                    "N = {n_samples}, order {order}, sample {l}: {p} against {q}"
+                    (*p - q).norm() < 1e-12 * scale,
+                    "dimension {}, N = {n_samples}, order {order}, sample {l}: {p:?} against {q:?}",
+                    P::DIM
                 );
             }
+        }
+    }
+
+    #[test]
+    fn kept_buffers_never_leak_between_calls() {
+        // One thread samples each curve in turn, reusing its buffers each time: in dimension 2
+        // one complex transform carries both coordinates, in dimension 3 a real one the last,
+        // in dimension 1 only the real one runs.
+        let pts: Vec<DVec3> = (0..9)
+            .map(|k| {
+                let k = k as f64;
+                DVec3::new(k.sin() * 2.0, (1.7 * k).cos(), (0.3 * k).exp())
+            })
+            .collect();
+        for _ in 0..2 {
+            check_uniform_samples(&Fourier::from_points(&pts));
+            check_uniform_samples(&Fourier::from_points(
+                &pts.iter().map(|p| p.truncate()).collect::<Vec<DVec2>>(),
+            ));
+            check_uniform_samples(&Fourier::from_points(
+                &pts.iter().map(|p| p.z).collect::<Vec<f64>>(),
+            ));
         }
     }
 
