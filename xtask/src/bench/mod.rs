@@ -125,7 +125,8 @@ are faster. Timings of our code are the median of several runs after a warm-up, 
 the release profile; peer timings are those the peer programs print for the same work, so file \
 reading and writing are left out on both sides. The thesis's own timings (2005 hardware) are \
 quoted as anchors where they exist. Each section ends with a plot of how its costs grow with \
-the size of the problem (log axes), and the fitted exponent of each curve: time ∝ size^slope.\n";
+the size of the problem (log axes), and the fitted exponent of each curve: time ∝ size^slope; \
+the summary gathers the headline ratios and every exponent.\n";
 
 /// The summary's markers and table header.
 const SUMMARY_START: &str = "<!-- bench:summary -->";
@@ -150,8 +151,9 @@ fn with_summary(doc: &str, topic: &str, rows: &[Vec<String>]) -> String {
             None => (format!("{}\n", doc.trim_end()), String::new(), String::new()),
         },
     };
-    // The rows already there, by topic: every table row after the header and its rule.
-    let mut kept: Vec<Vec<String>> = old
+    // The rows already there, by topic: every row of the headline table after its header.
+    let headlines = old.split(GROWTH_HEADING).next().unwrap_or("");
+    let mut kept: Vec<Vec<String>> = headlines
         .lines()
         .filter(|l| l.starts_with("| ") && !l.starts_with("| topic |"))
         .map(|l| l.trim().trim_matches('|').split(" | ").map(|c| c.trim().to_owned()).collect())
@@ -162,10 +164,49 @@ fn with_summary(doc: &str, topic: &str, rows: &[Vec<String>]) -> String {
     kept.sort_by_key(|r| order(r.first().map_or("", String::as_str)));
     let body = format!(
         "## Summary\n\nThe headline of each topic: our time against the peer's in the same run \
-         (details, inputs and the machine in each section).\n\n{}",
-        table(&SUMMARY_HEADER, &kept)
+         (details, inputs and the machine in each section).\n\n{}\n{GROWTH_HEADING}\n\nThe \
+         fitted exponent of every curve of the sections' growth plots: time ∝ size^p, least \
+         squares on the log–log points, so 1 is linear.\n\n{}",
+        table(&SUMMARY_HEADER, &kept),
+        table(&GROWTH_HEADER, &growth_rows(&format!("{before}{after}")))
     );
     format!("{before}{SUMMARY_START}\n{body}{SUMMARY_END}{after}")
+}
+
+/// The heading of the summary's table of growth exponents.
+const GROWTH_HEADING: &str = "### Growth";
+/// Its columns.
+const GROWTH_HEADER: [&str; 4] = ["topic", "size", "method", "exponent p"];
+
+/// The growth exponents of every section of `doc`, in the order of [`TOPICS`]: one row per
+/// curve, read from the line [`growth_plot`] writes under each plot.
+fn growth_rows(doc: &str) -> Vec<Vec<String>> {
+    const LEAD: &str = "Fitted exponents (time ∝ ";
+    let mut rows = Vec::new();
+    for topic in TOPICS {
+        let (start, end) = (format!("<!-- bench:{topic} -->"), format!("<!-- /bench:{topic} -->"));
+        let Some(section) =
+            doc.find(&start).and_then(|a| doc[a..].find(&end).map(|b| &doc[a..a + b]))
+        else {
+            continue;
+        };
+        for line in section.lines().filter_map(|l| l.strip_prefix(LEAD)) {
+            let Some((size, fits)) = line.split_once("^p").zip(line.split_once("): ")) else {
+                continue;
+            };
+            for fit in fits.1.trim_end_matches('.').split("; ") {
+                if let Some((method, p)) = fit.rsplit_once(' ') {
+                    rows.push(vec![
+                        (*topic).to_owned(),
+                        size.0.to_owned(),
+                        method.to_owned(),
+                        p.to_owned(),
+                    ]);
+                }
+            }
+        }
+    }
+    rows
 }
 
 /// `doc` with the section of `topic` replaced by `body` (if absent, put before the section of
@@ -390,6 +431,38 @@ mod tests {
         assert!(!doc.contains("| curves | old"), "old rows are replaced: {doc}");
         assert!(!doc.contains("| curves | two"), "old rows are replaced: {doc}");
         assert_eq!(doc.matches(SUMMARY_START).count(), 1, "one summary: {doc}");
+    }
+
+    #[test]
+    fn the_summary_lists_every_growth_exponent_of_the_sections() {
+        let fits = |size: &str, list: &str| {
+            format!(
+                "![plot](p.svg)\n\nFitted exponents (time ∝ {size}^p, least squares on the \
+                 log–log points; 1 is linear): {list}.\n"
+            )
+        };
+        let doc = with_section("", "render", &fits("pixels", "bezier 0.93; mesh 0.72"));
+        let doc = with_summary(&doc, "render", &[]);
+        let doc = with_section(&doc, "curves", &fits("n", "FFT (ours) 1.17; scipy, 2 axes 0.77"));
+        let doc = with_summary(&doc, "curves", &[vec!["curves".to_owned(), "a".to_owned()]]);
+        let summary = &doc[..doc.find(SUMMARY_END).expect("a summary")];
+        let rows = [
+            "| curves | n | FFT (ours) | 1.17 |",
+            "| curves | n | scipy, 2 axes | 0.77 |",
+            "| render | pixels | bezier | 0.93 |",
+            "| render | pixels | mesh | 0.72 |",
+        ];
+        let at: Vec<usize> =
+            rows.iter().map(|r| summary.find(r).unwrap_or_else(|| panic!("{r}: {doc}"))).collect();
+        assert!(at.windows(2).all(|w| w[0] < w[1]), "topic order: {summary}");
+        // The headline rows stay in their own table, and the growth rows are not read back as
+        // headlines when the summary is rewritten.
+        let again = with_summary(&doc, "render", &[]);
+        assert_eq!(again, doc, "rewriting the summary changes nothing");
+        assert!(
+            summary.find("| curves | a |").expect("headline")
+                < summary.find(GROWTH_HEADING).expect("growth")
+        );
     }
 
     #[test]
