@@ -77,15 +77,15 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   \"method_reason\": …, \"points\": P, \"unused_points\": U, \"image_points\": Q, \"dropped_points\": D,
   \"image\": [R, C], \"surface\": [M, N], \"non_star_fraction\": s, \"hole_fraction\": h,
   \"mesh\": {\"holes_filled\", \"hole_edges\", \"parts\", \"area_kept\", \"welded_points\",
-  \"dropped_triangles\", \"reoriented_triangles\", \"split_vertices\", \"stretch_efficiency\",
-  \"levels\"} | null, \"regularisation\": {\"lambda\", \"kept\", \"rms_change\", \"max_change\"} | null,
+  \"dropped_triangles\", \"reoriented_triangles\", \"split_vertices\", \"handles_cut\",
+  \"stretch_efficiency\", \"levels\"} | null, \"regularisation\": {\"lambda\", \"kept\", \"rms_change\", \"max_change\"} | null,
   \"stages\": [{\"name\": …, \"seconds\": t}, …], \"reduction\": {\"max_deviation\", \"upper_bound\"} | null,
   \"errors\": {\"mean\", \"rms\", \"max\", \"diagonal\", \"relative\": [mean, rms, max]},
   \"both_ways\": {\"scan_to_surface\", \"surface_to_scan\": {\"mean\", \"rms\", \"max\", \"relative\"},
   \"filled_to_scan_max\", \"filled_to_scan_max_relative\", \"unreached_fraction\", \"diagonal\"},
   \"hausdorff\": {\"distance\", \"relative\"} | null, \"files\": [...]}
   --method auto (the default) fits a mesh scan that closes to genus 0 (holes filled, parts
-  other than the largest dropped) through a spherical parameterisation of the mesh itself
+  other than the largest dropped, handles cut) through a spherical parameterisation of the mesh itself
   (mesh), and anything else, point sets included, by wrapping a surface onto the points
   (shrink-wrap: the zero set of their signed distance, parameterised over the sphere and
   projected onto them); method_reason says why. radial is the thesis's algorithm 2 (rays from the
@@ -394,7 +394,7 @@ pub(crate) enum MethodName {
     /// The mesh's spherical parameterisation when the scan is a mesh that closes to genus 0,
     /// the points shrink-wrapped otherwise.
     Auto,
-    /// A spherical parameterisation of the scan's mesh (any genus-0 shape).
+    /// A spherical parameterisation of the scan's mesh (any shape; handles are cut).
     Mesh,
     /// A surface wrapped onto the points: the zero set of their signed distance, parameterised
     /// over the sphere, projected onto them (for point sets).

@@ -577,13 +577,25 @@ pub fn fit(
         match mesh_image(&points, &triangles, options.layout, (rows, cols), method == Method::Mesh)
         {
             Ok(MeshOutcome::Image(m)) => {
-                reason = if m.repair.holes > 0 {
-                    format!(
-                        "the scan's mesh closes to genus 0 once its {} holes are filled",
-                        m.repair.holes
-                    )
-                } else {
-                    "the scan's mesh is a closed surface of genus 0".to_owned()
+                let (holes, handles) = (m.repair.holes, m.repair.handles_cut);
+                let plural = |n: usize, one: &str, many: &str| {
+                    if n == 1 { format!("its 1 {one}") } else { format!("its {n} {many}") }
+                };
+                reason = match (holes, handles) {
+                    (0, 0) => "the scan's mesh is a closed surface of genus 0".to_owned(),
+                    (_, 0) => format!(
+                        "the scan's mesh closes to genus 0 once {} filled",
+                        plural(holes, "hole is", "holes are")
+                    ),
+                    (0, _) => format!(
+                        "the scan's mesh is closed, and of genus 0 once {} cut",
+                        plural(handles, "handle is", "handles are")
+                    ),
+                    _ => format!(
+                        "the scan's mesh closes to genus 0 once {} filled and {} cut",
+                        plural(holes, "hole is", "holes are"),
+                        plural(handles, "handle is", "handles are")
+                    ),
                 };
                 if m.area_kept < 1.0 - 1e-9 {
                     reason.push_str(&format!(

@@ -11,7 +11,7 @@
 //! | what | thesis | where |
 //! |---|---|---|
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS, glTF, GLB | §5.8 | [`scan`] |
-//! | closing a scan mesh to one genus-0 surface (weld, clean, orient, fill holes) | | [`repair`] |
+//! | closing a scan mesh to one genus-0 surface (weld, clean, orient, fill holes, cut handles) | | [`repair`] |
 //! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
 //! | shrink-wrapping a point set: the zero set of its signed distance, parameterised, projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
 //! | the zero set of a function sampled on a grid (surface nets) | | [`surfacenets`] |

@@ -19,9 +19,23 @@
 //! 6. each hole (a loop of edges with a triangle on one side only) is closed by a fan of
 //!    triangles around a new vertex at the loop's centroid, flagged in
 //!    [`ClosedMesh::filled`];
-//! 7. the Euler characteristic V − E + F must then be 2 (genus 0), else
+//! 7. handles are cut, one at a time, each along the shortest loop found that does not
+//!    separate the surface (searched within blocks of [`HANDLE_BLOCKS`] mean edge lengths and
+//!    over the whole mesh: the tunnels and bridges a zero set grows where two sheets of a scan
+//!    nearly touch, a tail that touches a body, the tube of a ring), and both cuts are closed as
+//!    holes are, so the genus drops by one. The caps of a cut lie on each other, so the shape
+//!    is kept: a ring stays a ring, closed across its tube at one place;
+//! 8. the Euler characteristic V − E + F must then be 2 (genus 0), else
 //!    [`Error::Topology`] says which genus the surface has;
-//! 8. the whole mesh is flipped if its signed volume is negative, so that it winds outward.
+//! 9. the whole mesh is flipped if its signed volume is negative, so that it winds outward.
+//!
+//! A loop is found as Erickson and Whittlesey find the shortest loops through a point (2005):
+//! within each block (faces grouped by their centroids, on two grids offset by half a block,
+//! so that any loop shorter than half a block lies wholly in one), a shortest-path tree from
+//! a root and a spanning tree of the faces across the other edges, taken longest loop first;
+//! an edge that would close a cycle of faces closes a loop of the tree that does not separate
+//! the block, hence not the surface. The shortest such loop over every block and a few roots
+//! is cut.
 
 use crate::par::*;
 use glam::DVec3;
@@ -51,6 +65,8 @@ pub struct Repair {
     pub holes: usize,
     /// Edges around the holes.
     pub hole_edges: usize,
+    /// Small handles cut (step 7 of the module documentation).
+    pub handles_cut: usize,
     /// Whether the whole mesh was flipped to wind outward.
     pub flipped: bool,
 }
@@ -117,7 +133,7 @@ const fn edge_key(a: u32, b: u32) -> u64 {
 /// [`Error::TooFewPoints`] for a mesh with no usable triangle; [`Error::NonFinite`] for a
 /// non-finite point; [`Error::InvalidOption`] for a triangle index out of range;
 /// [`Error::Topology`] when the largest part cannot be oriented or is not of genus 0 once its
-/// holes are closed.
+/// holes are closed and its small handles cut.
 ///
 /// # Examples
 ///
@@ -326,7 +342,10 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
     let mut filled = vec![false; kept.len()];
     close_holes(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
 
-    // 7. Genus 0?
+    // 7. Cut small handles.
+    cut_small_handles(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
+
+    // 8. Genus 0?
     let v = positions.len() as i64;
     let f = kept.len() as i64;
     let e = 3 * f / 2;
@@ -340,7 +359,7 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
         });
     }
 
-    // 8. Outward.
+    // 9. Outward.
     if signed_volume(&positions, &kept) < 0.0 {
         for t in &mut kept {
             t.swap(1, 2);
@@ -584,5 +603,423 @@ fn fill_hole(
                 list.iter().map(|&k| positions[k as usize]).sum::<DVec3>() / list.len() as f64;
             positions[first_new + i] = mean;
         }
+    }
+}
+
+/// The sides of the blocks in which [`close_mesh`] looks for loops that cut handles (then over
+/// the whole mesh), in mean edge lengths of the mesh.
+pub const HANDLE_BLOCKS: [f64; 3] = [8.0, 32.0, 128.0];
+
+/// At most this many handles are cut.
+const MAX_HANDLES: usize = 32;
+
+/// Roots tried per block: the first vertex of the block, then a vertex of the best loop so far.
+const HANDLE_ROOTS: usize = 3;
+
+/// V − E + F of a closed triangle mesh (every edge on two triangles).
+fn euler_characteristic(vertices: usize, faces: usize) -> i64 {
+    let (v, f) = (vertices as i64, faces as i64);
+    v - 3 * f / 2 + f
+}
+
+/// Step 7 of [`close_mesh`] on a closed, consistently oriented mesh: while its genus is above
+/// 0, cuts the shortest non-separating loop found ([`small_handle_loop`], in blocks of every
+/// size of [`HANDLE_BLOCKS`] and over the whole mesh) and closes both cuts.
+fn cut_small_handles(
+    faces: &mut Vec<[u32; 3]>,
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    filled: &mut Vec<bool>,
+    repair: &mut Repair,
+) {
+    for _ in 0..MAX_HANDLES {
+        let chi = euler_characteristic(positions.len(), faces.len());
+        if chi >= 2 {
+            return;
+        }
+        // The shortest loop found at any size of block (a loop may fit a block of one grid and
+        // not the next, and the roots differ).
+        let Some((_, lp)) = HANDLE_BLOCKS
+            .iter()
+            .chain(&[f64::INFINITY])
+            .filter_map(|&side| small_handle_loop(faces, positions, side))
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+        else {
+            return;
+        };
+        if !cut_along(&lp, faces, positions, scan_vertex) {
+            return;
+        }
+        filled.resize(faces.len(), false);
+        // The two cuts are holes of their own; they are not the scan's, so not counted as such.
+        close_holes(faces, positions, scan_vertex, filled, &mut Repair::default());
+        if euler_characteristic(positions.len(), faces.len()) != chi + 2 {
+            // Cannot happen for a non-separating loop of a closed mesh; stop rather than loop.
+            return;
+        }
+        repair.handles_cut += 1;
+    }
+}
+
+/// The half-edges of `faces` sorted by (from, to): half-edge 3f + k runs from corner k of face
+/// f to corner k + 1.
+fn directed_edges(faces: &[[u32; 3]]) -> Vec<(u64, u32)> {
+    let mut half: Vec<(u64, u32)> = Vec::with_capacity(3 * faces.len());
+    for (f, t) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let h = u32::try_from(3 * f + k).unwrap_or(u32::MAX);
+            half.push(((u64::from(t[k]) << 32) | u64::from(t[(k + 1) % 3]), h));
+        }
+    }
+    half.par_sort_unstable();
+    half
+}
+
+/// The face holding the half-edge a → b.
+fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
+    let key = (u64::from(a) << 32) | u64::from(b);
+    half.binary_search_by_key(&key, |&(k, _)| k).ok().map(|i| half[i].1 as usize / 3)
+}
+
+/// The shortest non-separating loop of a closed mesh found within one block of `blocks` mean
+/// edge lengths (see the module documentation; infinite for the whole mesh): its length and
+/// its vertices in order; `None` when no block holds one.
+fn small_handle_loop(
+    faces: &[[u32; 3]],
+    positions: &[DVec3],
+    blocks: f64,
+) -> Option<(f64, Vec<u32>)> {
+    let at = |k: u32| positions[k as usize];
+    let mean_edge = faces
+        .iter()
+        .map(|t| {
+            at(t[0]).distance(at(t[1])) + at(t[1]).distance(at(t[2])) + at(t[2]).distance(at(t[0]))
+        })
+        .sum::<f64>()
+        / (3 * faces.len()).max(1) as f64;
+    let side = blocks * mean_edge;
+    if !(side > 0.0 && mean_edge.is_finite()) {
+        return None;
+    }
+    let lo = positions.iter().fold(DVec3::INFINITY, |a, p| a.min(*p));
+    let mut best: Option<(f64, Vec<u32>)> = None;
+    for offset in [0.0, 0.5] {
+        if blocks.is_infinite() && offset > 0.0 {
+            // One block either way.
+            break;
+        }
+        // Faces by block, blocks in a fixed order.
+        let mut keyed: Vec<([i64; 3], u32)> = faces
+            .iter()
+            .enumerate()
+            .map(|(f, t)| {
+                let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
+                // (One block, 0, for an infinite side.)
+                #[expect(clippy::cast_possible_truncation, reason = "a block index")]
+                let key = ((c - lo) / side + offset).floor().to_array().map(|x| x as i64);
+                (key, u32::try_from(f).unwrap_or(u32::MAX))
+            })
+            .collect();
+        keyed.par_sort_unstable();
+        let blocks: Vec<&[([i64; 3], u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
+        let found: Vec<(f64, Vec<u32>)> = blocks
+            .par_iter()
+            .filter_map(|block| {
+                let block: Vec<u32> = block.iter().map(|&(_, f)| f).collect();
+                block_loop(faces, positions, &block)
+            })
+            .collect();
+        for (length, lp) in found {
+            if best.as_ref().is_none_or(|(b, _)| length < *b) {
+                best = Some((length, lp));
+            }
+        }
+    }
+    best
+}
+
+/// The shortest loop found in the faces `block` of a closed mesh that does not separate them:
+/// its length and vertices. A few roots are tried ([`HANDLE_ROOTS`]).
+fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<(f64, Vec<u32>)> {
+    use std::collections::HashMap;
+    // Local vertices and undirected edges of the block, with the faces on each.
+    let mut local: HashMap<u32, u32> = HashMap::new();
+    let mut verts: Vec<u32> = Vec::new();
+    let mut id = |v: u32, verts: &mut Vec<u32>| {
+        *local.entry(v).or_insert_with(|| {
+            verts.push(v);
+            u32::try_from(verts.len() - 1).unwrap_or(u32::MAX)
+        })
+    };
+    let mut edges: Vec<(u64, u32)> = Vec::with_capacity(3 * block.len());
+    for (i, &f) in block.iter().enumerate() {
+        let t = faces[f as usize].map(|v| id(v, &mut verts));
+        for k in 0..3 {
+            edges.push((edge_key(t[k], t[(k + 1) % 3]), u32::try_from(i).unwrap_or(u32::MAX)));
+        }
+    }
+    edges.sort_unstable();
+    // (a, b, face, other face or None on the block's border)
+    let mut list: Vec<(u32, u32, u32, Option<u32>)> = Vec::new();
+    for pair in edges.chunk_by(|x, y| x.0 == y.0) {
+        let key = pair[0].0;
+        let (a, b) = ((key >> 32) as u32, key as u32);
+        list.push((a, b, pair[0].1, pair.get(1).map(|x| x.1)));
+    }
+    let n = verts.len();
+    let mut adjacency: Vec<Vec<(u32, f64)>> = vec![Vec::new(); n];
+    for &(a, b, _, _) in &list {
+        let w =
+            positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize]);
+        adjacency[a as usize].push((b, w));
+        adjacency[b as usize].push((a, w));
+    }
+    let mut best: Option<(f64, Vec<u32>)> = None;
+    let mut root = 0u32;
+    for _ in 0..HANDLE_ROOTS {
+        let Some((length, lp)) = loop_through(root, &adjacency, &list, block.len()) else {
+            break;
+        };
+        let improved = best.as_ref().is_none_or(|(b, _)| length < *b - 1e-12 * b.abs());
+        if improved {
+            // Next, a root across the loop from this one.
+            root = lp[lp.len() / 2];
+            best = Some((length, lp));
+        } else {
+            break;
+        }
+    }
+    best.map(|(length, lp)| (length, lp.iter().map(|&v| verts[v as usize]).collect()))
+}
+
+/// The shortest non-separating loop through the shortest-path tree from `root` (Erickson and
+/// Whittlesey's greedy step): Dijkstra from the root, then the faces joined across the
+/// non-tree edges, longest loop first; the shortest edge whose faces are already joined closes
+/// the loop returned (length and local vertices, from one end of the edge up the tree and down
+/// to the other). `None` when every loop of the tree separates the faces.
+fn loop_through(
+    root: u32,
+    adjacency: &[Vec<(u32, f64)>],
+    edges: &[(u32, u32, u32, Option<u32>)],
+    n_faces: usize,
+) -> Option<(f64, Vec<u32>)> {
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+    let n = adjacency.len();
+    let mut dist = vec![f64::INFINITY; n];
+    let mut parent = vec![u32::MAX; n];
+    let mut heap = BinaryHeap::new();
+    dist[root as usize] = 0.0;
+    heap.push((Reverse(OrderedDistance(0.0)), root));
+    while let Some((Reverse(OrderedDistance(d)), v)) = heap.pop() {
+        if d > dist[v as usize] {
+            continue;
+        }
+        for &(w, len) in &adjacency[v as usize] {
+            let nd = d + len;
+            if nd < dist[w as usize] {
+                dist[w as usize] = nd;
+                parent[w as usize] = v;
+                heap.push((Reverse(OrderedDistance(nd)), w));
+            }
+        }
+    }
+    let tree = |a: u32, b: u32| parent[a as usize] == b || parent[b as usize] == a;
+    // Interior non-tree edges reachable from the root, by the length of their loop.
+    let mut candidates: Vec<(f64, u32, u32, u32, u32)> = edges
+        .iter()
+        .filter_map(|&(a, b, f, g)| {
+            let g = g?;
+            let (da, db) = (dist[a as usize], dist[b as usize]);
+            if tree(a, b) || !da.is_finite() || !db.is_finite() {
+                return None;
+            }
+            let w = adjacency[a as usize].iter().find(|x| x.0 == b).map_or(0.0, |x| x.1);
+            Some((da + db + w, a, b, f, g))
+        })
+        .collect();
+    candidates.sort_unstable_by(|x, y| y.0.total_cmp(&x.0));
+    let mut parent_face: Vec<u32> = (0..u32::try_from(n_faces).unwrap_or(u32::MAX)).collect();
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let mut shortest: Option<(f64, u32, u32)> = None;
+    for &(length, a, b, f, g) in &candidates {
+        let (rf, rg) = (find(&mut parent_face, f), find(&mut parent_face, g));
+        if rf == rg {
+            // Closes a cycle of faces: the loop of a, b does not separate them.
+            if shortest.is_none_or(|s| length < s.0) {
+                shortest = Some((length, a, b));
+            }
+        } else {
+            parent_face[rf as usize] = rg;
+        }
+    }
+    let (length, a, b) = shortest?;
+    // Up from a and from b to their lowest common ancestor.
+    let up = |mut v: u32| {
+        let mut path = vec![v];
+        while parent[v as usize] != u32::MAX {
+            v = parent[v as usize];
+            path.push(v);
+        }
+        path
+    };
+    let (pa, pb) = (up(a), up(b));
+    let mut common = 0;
+    while common < pa.len().min(pb.len()) && pa[pa.len() - 1 - common] == pb[pb.len() - 1 - common]
+    {
+        common += 1;
+    }
+    // pa[..=pa.len() − common] runs a → ancestor; pb the same for b; the loop is
+    // a → ancestor → b → a.
+    let mut lp: Vec<u32> = pa[..=pa.len() - common].to_vec();
+    lp.extend(pb[..pb.len() - common].iter().rev());
+    (lp.len() >= 3).then_some((length, lp))
+}
+
+/// An `f64` distance ordered for the heap (distances are finite and non-negative).
+#[derive(Clone, Copy, PartialEq)]
+struct OrderedDistance(f64);
+
+impl Eq for OrderedDistance {}
+
+impl PartialOrd for OrderedDistance {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for OrderedDistance {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.total_cmp(&other.0)
+    }
+}
+
+/// Cuts a closed, consistently oriented mesh along the simple loop `lp`: each vertex of the
+/// loop gets a copy, which the triangles on the loop's right side take, so the loop becomes two
+/// boundary loops. `false` (and nothing changed) if a fan around a loop vertex does not close.
+fn cut_along(
+    lp: &[u32],
+    faces: &mut [[u32; 3]],
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+) -> bool {
+    let half = directed_edges(faces);
+    let m = lp.len();
+    let mut changes: Vec<(usize, usize)> = Vec::new(); // (face, corner) taking the copy of lp[i]
+    let mut owners: Vec<usize> = Vec::new(); // loop index of each change
+    for i in 0..m {
+        let (prev, v, next) = (lp[(i + m - 1) % m], lp[i], lp[(i + 1) % m]);
+        // Around v from the face right of v → next to the face right of prev → v: from the
+        // face with half-edge next → v, each next face holds the half-edge (outgoing
+        // neighbour) → v, until the face with the half-edge v → prev.
+        let Some(mut f) = face_of(&half, next, v) else { return false };
+        let mut steps = 0;
+        loop {
+            let t = faces[f];
+            let Some(c) = t.iter().position(|&x| x == v) else { return false };
+            changes.push((f, c));
+            owners.push(i);
+            let out = t[(c + 1) % 3];
+            if out == prev {
+                break;
+            }
+            steps += 1;
+            let Some(g) = face_of(&half, out, v).filter(|_| steps < 4096) else { return false };
+            f = g;
+        }
+    }
+    let first = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+    for &v in lp {
+        positions.push(positions[v as usize]);
+        scan_vertex.push(scan_vertex[v as usize]);
+    }
+    for (&(f, c), &i) in changes.iter().zip(&owners) {
+        faces[f][c] = first + u32::try_from(i).unwrap_or(u32::MAX);
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A torus of `major × minor` quads (two triangles each), radii `big` and `small`.
+    fn torus(major: usize, minor: usize, big: f64, small: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        let tau = std::f64::consts::TAU;
+        let mut p = Vec::new();
+        for i in 0..major {
+            for j in 0..minor {
+                let (u, v) = (tau * i as f64 / major as f64, tau * j as f64 / minor as f64);
+                let ring = big + small * v.cos();
+                p.push(DVec3::new(ring * u.cos(), ring * u.sin(), small * v.sin()));
+            }
+        }
+        let id = |i: usize, j: usize| ((i % major) * minor + j % minor) as u32;
+        let mut t = Vec::new();
+        for i in 0..major {
+            for j in 0..minor {
+                let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+                t.push([a, b, c]);
+                t.push([a, c, d]);
+            }
+        }
+        (p, t)
+    }
+
+    /// Every undirected edge is used by exactly two triangles, once in each direction.
+    fn closed_and_oriented(triangles: &[[u32; 3]]) -> bool {
+        let mut directed: Vec<(u32, u32)> =
+            triangles.iter().flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3]))).collect();
+        directed.sort_unstable();
+        let unique = directed.windows(2).all(|w| w[0] != w[1]);
+        unique && directed.iter().all(|&(a, b)| directed.binary_search(&(b, a)).is_ok())
+    }
+
+    /// Checks that `closed` is a closed, oriented surface of genus 0 (counted from its edges)
+    /// with one handle cut, whose volume is within `tolerance` of `volume`.
+    fn check_cut(closed: &ClosedMesh, points: &[DVec3], volume: f64, tolerance: f64) {
+        assert_eq!(closed.repair.handles_cut, 1);
+        assert_eq!(closed.repair.holes, 0, "the cuts are not the scan's holes");
+        assert!(closed_and_oriented(&closed.triangles));
+        let mut edges: Vec<(u32, u32)> = closed
+            .triangles
+            .iter()
+            .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+            .collect();
+        edges.sort_unstable();
+        edges.dedup();
+        let chi =
+            closed.positions.len() as i64 - edges.len() as i64 + closed.triangles.len() as i64;
+        assert_eq!(chi, 2);
+        // The caps lie on each other: the volume is the torus's.
+        assert!(
+            (closed.volume() - volume).abs() < tolerance * volume,
+            "{} against {volume}",
+            closed.volume()
+        );
+        // The torus's own vertices are all still there, where they were.
+        assert!(points.iter().all(|x| closed.positions.contains(x)));
+    }
+
+    #[test]
+    fn handles_are_cut_along_short_loops_and_the_shape_kept() {
+        // A coarse torus (8 × 4 quads) lies within one block of eight mean edge lengths.
+        let (p, t) = torus(8, 4, 1.0, 0.5);
+        let polygon = close_mesh(&p, &t).expect("cut");
+        check_cut(&polygon, &p, 2.0 * std::f64::consts::PI.powi(2) * 0.25, 0.5);
+        // A ring: a thin tube (six edges round) around a wide hole (forty edges). It is cut
+        // across its tube (a loop of six edges, so twelve vertices on the two cuts), not along
+        // it.
+        let (p, t) = torus(40, 6, 1.0, 0.15);
+        let ring = close_mesh(&p, &t).expect("cut");
+        check_cut(&ring, &p, 2.0 * std::f64::consts::PI.powi(2) * 0.15 * 0.15, 0.2);
+        let on_cuts = ring.scan_vertex.iter().filter(|&&k| k != ADDED_VERTEX).count() - p.len();
+        assert_eq!(on_cuts, 6, "one copy of each vertex of the cut");
     }
 }

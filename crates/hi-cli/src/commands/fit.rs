@@ -221,6 +221,7 @@ struct MeshOut {
     dropped_triangles: usize,
     reoriented_triangles: usize,
     split_vertices: usize,
+    handles_cut: usize,
     stretch_efficiency: f64,
     levels: usize,
 }
@@ -295,6 +296,7 @@ fn summary(
             dropped_triangles: m.repair.dropped_triangles,
             reoriented_triangles: m.repair.reoriented_triangles,
             split_vertices: m.repair.split_vertices,
+            handles_cut: m.repair.handles_cut,
             stretch_efficiency: m.quality.stretch_efficiency,
             levels: m.quality.levels,
         }),
