@@ -31,11 +31,11 @@
 //!
 //! A loop is found as Erickson and Whittlesey find the shortest loops through a point (2005):
 //! within each block (faces grouped by their centroids, on two grids offset by half a block,
-//! so that any loop shorter than half a block lies wholly in one), a shortest-path tree from
-//! a root and a spanning tree of the faces across the other edges, taken longest loop first;
-//! an edge that would close a cycle of faces closes a loop of the tree that does not separate
-//! the block, hence not the surface. The shortest such loop over every block and a few roots
-//! is cut.
+//! so that a short loop seldom straddles blocks of both), a shortest-path tree from a root and
+//! a spanning tree of the faces across the other edges, taken longest loop first; an edge that
+//! would close a cycle of faces closes a loop of the tree that does not separate the block,
+//! hence not the surface. The shortest such loop over every block, every size and a few roots
+//! is cut; the whole mesh, as one block, always holds one while the genus is above 0.
 
 use crate::par::*;
 use glam::DVec3;
@@ -65,7 +65,7 @@ pub struct Repair {
     pub holes: usize,
     /// Edges around the holes.
     pub hole_edges: usize,
-    /// Small handles cut (step 7 of the module documentation).
+    /// Handles cut (step 7 of the module documentation).
     pub handles_cut: usize,
     /// Whether the whole mesh was flipped to wind outward.
     pub flipped: bool,
@@ -133,7 +133,7 @@ const fn edge_key(a: u32, b: u32) -> u64 {
 /// [`Error::TooFewPoints`] for a mesh with no usable triangle; [`Error::NonFinite`] for a
 /// non-finite point; [`Error::InvalidOption`] for a triangle index out of range;
 /// [`Error::Topology`] when the largest part cannot be oriented or is not of genus 0 once its
-/// holes are closed and its small handles cut.
+/// holes are closed and up to [`MAX_HANDLES`] handles cut.
 ///
 /// # Examples
 ///
@@ -342,8 +342,8 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
     let mut filled = vec![false; kept.len()];
     close_holes(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
 
-    // 7. Cut small handles.
-    cut_small_handles(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
+    // 7. Cut handles.
+    cut_handles(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
 
     // 8. Genus 0?
     let v = positions.len() as i64;
@@ -611,7 +611,7 @@ fn fill_hole(
 pub const HANDLE_BLOCKS: [f64; 3] = [8.0, 32.0, 128.0];
 
 /// At most this many handles are cut.
-const MAX_HANDLES: usize = 32;
+pub const MAX_HANDLES: usize = 32;
 
 /// Roots tried per block: the first vertex of the block, then a vertex of the best loop so far.
 const HANDLE_ROOTS: usize = 3;
@@ -623,9 +623,9 @@ fn euler_characteristic(vertices: usize, faces: usize) -> i64 {
 }
 
 /// Step 7 of [`close_mesh`] on a closed, consistently oriented mesh: while its genus is above
-/// 0, cuts the shortest non-separating loop found ([`small_handle_loop`], in blocks of every
+/// 0, cuts the shortest non-separating loop found ([`handle_loop`], in blocks of every
 /// size of [`HANDLE_BLOCKS`] and over the whole mesh) and closes both cuts.
-fn cut_small_handles(
+fn cut_handles(
     faces: &mut Vec<[u32; 3]>,
     positions: &mut Vec<DVec3>,
     scan_vertex: &mut Vec<u32>,
@@ -642,7 +642,7 @@ fn cut_small_handles(
         let Some((_, lp)) = HANDLE_BLOCKS
             .iter()
             .chain(&[f64::INFINITY])
-            .filter_map(|&side| small_handle_loop(faces, positions, side))
+            .filter_map(|&side| handle_loop(faces, positions, side))
             .min_by(|a, b| a.0.total_cmp(&b.0))
         else {
             return;
@@ -684,11 +684,7 @@ fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
 /// The shortest non-separating loop of a closed mesh found within one block of `blocks` mean
 /// edge lengths (see the module documentation; infinite for the whole mesh): its length and
 /// its vertices in order; `None` when no block holds one.
-fn small_handle_loop(
-    faces: &[[u32; 3]],
-    positions: &[DVec3],
-    blocks: f64,
-) -> Option<(f64, Vec<u32>)> {
+fn handle_loop(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Option<(f64, Vec<u32>)> {
     let at = |k: u32| positions[k as usize];
     let mean_edge = faces
         .iter()

@@ -12,6 +12,8 @@ use hi_geomimage::{
 };
 use hi_surface::{ParamRange, ParamWindow};
 
+mod common;
+
 fn fibonacci(n: usize) -> Vec<DVec3> {
     let golden = PI * (3.0 - 5f64.sqrt());
     (0..n)
@@ -243,24 +245,8 @@ fn fitting_real_meshes_by_their_parameterisation() {
 /// (|√((√(x²+y²) − R)² + z²) − r| small) except across the tube at the cut.
 #[test]
 fn a_torus_is_fitted_through_its_mesh_with_its_handle_cut() {
-    let (big, small, (major, minor)) = (1.0, 0.4, (96usize, 32usize));
-    let tau = 2.0 * PI;
-    let mut points = Vec::new();
-    for i in 0..major {
-        for j in 0..minor {
-            let (u, v) = (tau * i as f64 / major as f64, tau * j as f64 / minor as f64);
-            let ring = big + small * v.cos();
-            points.push(DVec3::new(ring * u.cos(), ring * u.sin(), small * v.sin()));
-        }
-    }
-    let id = |i: usize, j: usize| ((i % major) * minor + j % minor) as u32;
-    let mut triangles = Vec::new();
-    for i in 0..major {
-        for j in 0..minor {
-            triangles.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-            triangles.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
+    let (big, small) = (1.0, 0.4);
+    let (points, triangles) = common::torus(96, 32, big, small);
     let scan = Scan { points, normals: None, triangles, dropped_points: 0, dropped_faces: 0 };
     let result = fit(&scan, &FitOptions::default(), &mut |_| {}).unwrap();
     let r = &result.report;

@@ -227,22 +227,7 @@ fn a_pinched_vertex_is_split() {
 #[test]
 fn meshes_that_are_not_spheres_are_cut_or_refused() {
     // A torus: genus 1.
-    let (n, m) = (12, 8);
-    let mut p = Vec::new();
-    for i in 0..n {
-        for j in 0..m {
-            let (u, v) = (TAU * i as f64 / n as f64, TAU * j as f64 / m as f64);
-            p.push(DVec3::new((2.0 + v.cos()) * u.cos(), (2.0 + v.cos()) * u.sin(), v.sin()));
-        }
-    }
-    let at = |i: usize, j: usize| ((i % n) * m + j % m) as u32;
-    let mut t = Vec::new();
-    for i in 0..n {
-        for j in 0..m {
-            t.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
-            t.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
-        }
-    }
+    let (p, t) = common::torus(12, 8, 2.0, 1.0);
     // It is cut across its tube, and the cuts closed: genus 0, the torus's shape and volume
     // (2π²Rr² = 4π² for the smooth torus; the polygon's is smaller).
     let cut = close_mesh(&p, &t).expect("a torus is cut to genus 0");

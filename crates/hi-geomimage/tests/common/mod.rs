@@ -4,6 +4,7 @@
 use glam::DVec3;
 
 /// The icosahedron subdivided `levels` times, projected onto the sphere of radius `r`.
+#[allow(dead_code, reason = "not every test file that shares this module builds a sphere")]
 pub(crate) fn icosphere(levels: usize, r: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let g = (1.0 + 5f64.sqrt()) / 2.0;
     let mut p: Vec<DVec3> = [
@@ -68,4 +69,33 @@ pub(crate) fn icosphere(levels: usize, r: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
         t = next;
     }
     (p.into_iter().map(|x| x * r).collect(), t)
+}
+
+/// A torus of `major × minor` quads (two triangles each) about the z axis, radii `big` (of
+/// the ring) and `small` (of the tube), wound outward.
+#[allow(dead_code, reason = "not every test file that shares this module builds a torus")]
+pub(crate) fn torus(
+    major: usize,
+    minor: usize,
+    big: f64,
+    small: f64,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let tau = std::f64::consts::TAU;
+    let mut p = Vec::with_capacity(major * minor);
+    for i in 0..major {
+        for j in 0..minor {
+            let (u, v) = (tau * i as f64 / major as f64, tau * j as f64 / minor as f64);
+            let ring = big + small * v.cos();
+            p.push(DVec3::new(ring * u.cos(), ring * u.sin(), small * v.sin()));
+        }
+    }
+    let at = |i: usize, j: usize| ((i % major) * minor + j % minor) as u32;
+    let mut t = Vec::with_capacity(2 * major * minor);
+    for i in 0..major {
+        for j in 0..minor {
+            t.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+            t.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    (p, t)
 }
