@@ -485,13 +485,7 @@ fn close_holes(
     repair: &mut Repair,
 ) {
     // Directed edges present; a boundary edge a→b has no b→a.
-    let mut directed: Vec<u64> = Vec::with_capacity(3 * faces.len());
-    for t in faces.iter() {
-        for k in 0..3 {
-            directed.push((u64::from(t[k]) << 32) | u64::from(t[(k + 1) % 3]));
-        }
-    }
-    directed.par_sort_unstable();
+    let directed: Vec<u64> = directed_edges(faces).into_iter().map(|(key, _)| key).collect();
     let has =
         |a: u32, b: u32| directed.binary_search(&((u64::from(a) << 32) | u64::from(b))).is_ok();
     // After the fans are split, each boundary vertex starts exactly one boundary edge.
