@@ -19,8 +19,15 @@
 //!    Gaussian-weighted blend of its projections onto the patches of its three nearest points
 //!    that face its way (its normal across the grid's two directions), a move of at most 1.5
 //!    point spacings (a longer one would cross to the other side of a part thinner than the
-//!    grid). Texels on the patches bridging holes, and texels farther than four point spacings
-//!    from every point, stay where they are and are flagged [`ShrinkWrapImage::filled`].
+//!    grid; a texel with no point within 1.5 spacings, which has no sheet to cross, moves 1.5
+//!    spacings towards its projection instead). Texels on the patches bridging holes, and
+//!    texels farther than four point spacings from every point, stay where they are and are
+//!    flagged [`ShrinkWrapImage::filled`].
+//! 3. **The pull**: a point the surface passed by (more than 0.75 spacings off it along the
+//!    normal of its nearest texel, within one spacing of that normal's line, its patch facing
+//!    the same way, and within three spacings, beyond which it is taken for an outlier) pulls
+//!    that texel onto it. This reaches into creases and slits narrower than the grid of step
+//!    1, whose zero set bridges them; the count is [`ShrinkWrapImage::pulled`].
 //!
 //! Should the start fail (the zero set not of genus 0, or the points too sparse for a grid),
 //! the radial image of algorithm 2 is wrapped instead, a few times over: each texel projected
@@ -28,7 +35,7 @@
 //! neighbours (only the tangential part of that move) so that texels spread instead of piling up
 //! where the rays crowded them; a texel with no point near moves halfway between its
 //! neighbours' mean and its projection (a membrane shrinking onto the points). That coarse wrap
-//! is parameterised over the sphere like the start above, and projected again. The doubled
+//! is parameterised over the sphere like the start above, projected again and pulled. The doubled
 //! layouts' half-turn symmetry is restored after every step (each texel and its mirror take
 //! their mean), so the result is a valid doubled image.
 //!
@@ -97,6 +104,9 @@ pub struct ShrinkWrapImage {
     /// The root mean square distance the texels moved from the image first sampled (of the
     /// implicit surface or the coarse wrap) to the end.
     pub rms_move: f64,
+    /// Texels pulled onto points the wrap had left off the surface (step 3 of the module
+    /// documentation), each counted once however many copies the layout holds.
+    pub pulled: usize,
 }
 
 /// A local quadric patch about one point: a frame (origin, tangents, normal) and the height
@@ -447,8 +457,9 @@ pub fn shrink_wrap(
     } else {
         iterations
     };
-    let (x, filled) =
+    let (mut x, filled) =
         wrap(&patches, first.clone(), on_fills.as_deref(), layout, rows, cols, rounds);
+    let pulled = pull(&patches, points, &mut x, &filled, layout, rows, cols);
     // Each direction once, for the fractions.
     let distinct = match layout {
         Layout::Sphere | Layout::FlatOctahedron => rows / 2 * cols,
@@ -467,6 +478,7 @@ pub fn shrink_wrap(
         implicit_start,
         reparameterised,
         rms_move,
+        pulled,
     })
 }
 
@@ -585,6 +597,76 @@ fn grid_normals(x: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
         .collect()
 }
 
+/// How far off the surface, in point spacings along the normal of its nearest texel, a point
+/// must lie to pull that texel onto it.
+const PULL_FROM: f64 = 0.75;
+
+/// How far to the side of its nearest texel, in point spacings, a point may lie and pull it.
+const PULL_SIDE: f64 = 1.0;
+
+/// Beyond this many point spacings from its nearest texel a point is an outlier: it pulls
+/// nothing.
+const PULL_UNTIL: f64 = 3.0;
+
+/// Step 3 of the module documentation: each point the surface `x` left more than [`PULL_FROM`]
+/// spacings off it, along the normal of the point's nearest texel (not flagged `filled`), and
+/// within [`PULL_SIDE`] spacings of that normal's line, whose patch faces the texel's way and
+/// which is within [`PULL_UNTIL`] spacings, pulls the texel onto it (onto the mean of the points
+/// pulling it, its mirror with it). Returns the number of texels moved.
+fn pull(
+    patches: &Patches,
+    points: &[DVec3],
+    x: &mut [DVec3],
+    filled: &[bool],
+    layout: Layout,
+    rows: usize,
+    cols: usize,
+) -> usize {
+    let mirror = layout.mirror(rows, cols);
+    let owner = |t: usize| {
+        mirror.as_ref().map_or(t, |m| {
+            let (a, b) = m(t / cols, t % cols);
+            t.min(a * cols + b)
+        })
+    };
+    let owners: Vec<usize> = (0..rows * cols).filter(|&t| owner(t) == t && !filled[t]).collect();
+    let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(
+        &owners.iter().map(|&t| x[t].to_array()).collect::<Vec<_>>(),
+    ) else {
+        return 0;
+    };
+    let normals = grid_normals(x, rows, cols);
+    let spacing = patches.spacing;
+    let pulls: Vec<Option<(usize, DVec3)>> = points
+        .par_iter()
+        .zip(&patches.patches)
+        .map(|(p, patch)| {
+            let near = tree.query(&p.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
+            let t = *owners.get(near.item as usize)?;
+            let (v, n) = (*p - x[t], normals[t]);
+            let off = v.dot(n);
+            let side = (v - n * off).length();
+            (off.abs() > PULL_FROM * spacing
+                && side <= PULL_SIDE * spacing
+                && near.distance.sqrt() < PULL_UNTIL * spacing
+                && patch.normal.dot(n) > 0.0)
+                .then_some((t, *p))
+        })
+        .collect();
+    let mut sum = vec![(DVec3::ZERO, 0u32); rows * cols];
+    for (t, p) in pulls.into_iter().flatten() {
+        sum[t].0 += p;
+        sum[t].1 += 1;
+    }
+    for (t, texel) in x.iter_mut().enumerate() {
+        let (total, count) = sum[owner(t)];
+        if count > 0 {
+            *texel = total / f64::from(count);
+        }
+    }
+    sum.iter().filter(|s| s.1 > 0).count()
+}
+
 /// The side of the coarse wrap.
 const COARSE: usize = 96;
 
@@ -666,8 +748,14 @@ fn wrap(
                 let (q, d) = patches.project(p, n);
                 // A texel of the implicit start lies within a grid cell of its sheet: a longer
                 // move went to another sheet (of a part thinner than the cell) and is refused.
-                if on_fills.is_some() && q.distance(p) > MAX_MOVE * patches.spacing {
-                    (p, d)
+                let limit = MAX_MOVE * patches.spacing;
+                if on_fills.is_some() && q.distance(p) > limit {
+                    if d > limit {
+                        // No point within the limit: no sheet to cross on the way.
+                        (p + (q - p).normalize_or_zero() * limit, d)
+                    } else {
+                        (p, d)
+                    }
                 } else {
                     (q, d)
                 }
