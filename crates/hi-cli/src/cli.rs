@@ -87,8 +87,8 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   --method auto (the default) fits a mesh scan that closes to genus 0 (holes filled, parts
   other than the largest dropped, handles cut) through a spherical parameterisation of the mesh itself
   (mesh), and anything else, point sets included, by wrapping a surface onto the points
-  (shrink-wrap: the zero set of their signed distance, parameterised over the sphere and
-  projected onto them); method_reason says why. radial is the thesis's algorithm 2 (rays from the
+  (shrink-wrap: the zero set of their signed distance, parameterised over the sphere,
+  projected onto them and pulled into the creases it bridged); method_reason says why. radial is the thesis's algorithm 2 (rays from the
   centre: non_star_fraction counts the rays that met the scan more than once, above 5% a
   warning). The image size follows the point count unless --resolution is given. A surface
   through points is regularised to the scan's own noise (--regularise); --smooth 0 interpolates.
@@ -397,7 +397,8 @@ pub(crate) enum MethodName {
     /// A spherical parameterisation of the scan's mesh (any shape; handles are cut).
     Mesh,
     /// A surface wrapped onto the points: the zero set of their signed distance, parameterised
-    /// over the sphere, projected onto them (for point sets).
+    /// over the sphere, projected onto them and pulled into the creases it bridged (for point
+    /// sets).
     ShrinkWrap,
     /// Rays from the centre, the distance along each averaged over the points about it
     /// (algorithm 2).

@@ -50,7 +50,8 @@ pub enum Method {
     /// A spherical parameterisation of the scan's mesh.
     Mesh,
     /// A surface wrapped onto the points ([`crate::shrinkwrap`]): the zero set of their signed
-    /// distance parameterised over the sphere, its texels projected onto them.
+    /// distance parameterised over the sphere, its texels projected onto them and pulled into
+    /// the creases it bridged.
     ShrinkWrap,
     /// Rays from a centre, the distance along each averaged over the points about it
     /// (algorithm 2).

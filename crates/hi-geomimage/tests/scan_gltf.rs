@@ -187,3 +187,23 @@ fn malformed_glbs_are_named() {
         assert!(err.to_string().starts_with("GLB: ") && err.to_string().contains(what), "{err}");
     }
 }
+
+#[test]
+fn a_stride_shorter_than_its_element_is_named() {
+    // Found by fuzzing (docs/reliability.md): positions of 12 bytes in a buffer view of
+    // byteStride 5. The `gltf` crate's reader asserts on it; the readers refuse it first.
+    let data = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA";
+    let json = format!(
+        r#"{{"asset":{{"version":"2.0"}},"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}}}}]}}],
+        "buffers":[{{"byteLength":36,"uri":"data:application/octet-stream;base64,{data}"}}],
+        "bufferViews":[{{"buffer":0,"byteStride":5,"byteLength":36}}],
+        "accessors":[{{"bufferView":0,"componentType":5126,"count":2,"type":"VEC3",
+        "min":[0,0,0],"max":[1,1,1]}}]}}"#
+    );
+    let err = parse_scan(json.as_bytes(), ScanFormat::Gltf).unwrap_err().to_string();
+    assert!(err.contains("POSITION accessor's buffer view has a byte stride of 5"), "{err}");
+    assert!(err.contains("12 bytes"), "{err}");
+    // With the stride of its element the same file reads.
+    let fixed = json.replace(r#""byteStride":5"#, r#""byteStride":12"#);
+    assert_eq!(parse_scan(fixed.as_bytes(), ScanFormat::Gltf).unwrap().points.len(), 2);
+}

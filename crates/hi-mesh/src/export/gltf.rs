@@ -479,6 +479,9 @@ pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
                 accessor.offset()
             ));
         }
+        if let Some(problem) = stride_problem(&accessor) {
+            return Some(format!("a {name} accessor's {problem}"));
+        }
         if !dimensions.contains(&accessor.dimensions()) || !types.contains(&accessor.data_type()) {
             return Some(format!(
                 "a {name} accessor holds {:?} of {:?}, which glTF does not allow there",
@@ -497,6 +500,9 @@ pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
             a.count(),
             a.offset()
         ));
+    }
+    if let Some(problem) = primitive.indices().as_ref().and_then(stride_problem) {
+        return Some(format!("an index accessor's {problem}"));
     }
     match primitive.indices() {
         Some(a)
@@ -530,6 +536,30 @@ fn extent_fits(accessor: &::gltf::Accessor<'_>) -> bool {
         let index_size = indices.index_type().size();
         end(indices.offset(), indices.view().stride(), sparse.count(), index_size).is_some()
             && end(values.offset(), values.view().stride(), sparse.count(), size).is_some()
+    })
+}
+
+/// Why the `gltf` crate's reader cannot step through `accessor` (or its sparse indices and
+/// values): a buffer view whose byte stride is less than the element it holds, which glTF 2.0
+/// forbids (the validator's `ACCESSOR_SMALL_BYTESTRIDE`) and which that reader meets with an
+/// assertion or reads past the element (found by fuzzing the scan readers).
+fn stride_problem(accessor: &::gltf::Accessor<'_>) -> Option<String> {
+    let small = |stride: Option<usize>, size: usize, what: &str| {
+        stride.filter(|&s| s < size).map(|s| {
+            format!("{what} has a byte stride of {s}, less than its element's {size} bytes")
+        })
+    };
+    let size = accessor.size();
+    small(accessor.view().and_then(|v| v.stride()), size, "buffer view").or_else(|| {
+        accessor.sparse().and_then(|sparse| {
+            let (indices, values) = (sparse.indices(), sparse.values());
+            small(
+                indices.view().stride(),
+                indices.index_type().size(),
+                "sparse indices' buffer view",
+            )
+            .or_else(|| small(values.view().stride(), size, "sparse values' buffer view"))
+        })
     })
 }
 
