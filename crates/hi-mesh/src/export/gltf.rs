@@ -445,8 +445,10 @@ fn percent_decoded(data: &[u8]) -> Vec<u8> {
 
 /// Why the `gltf` crate's reader could not read a primitive's positions, normals, first UV
 /// set, first colour set or indices: an accessor of a type the glTF 2.0 specification does not
-/// allow there (§3.7.2.1), which that reader meets with an assertion or `unreachable!` rather
-/// than an error (found by fuzzing the scan readers). `None` when every one it has is readable.
+/// allow there (§3.7.2.1), with no elements or an extent that overflows, or read through a
+/// buffer view whose byte stride is shorter than its element, all of which that reader meets
+/// with an assertion, an overflow or `unreachable!` rather than an error (found by fuzzing the
+/// scan readers). `None` when every one it has is readable.
 #[must_use]
 pub fn accessor_problem(primitive: &::gltf::Primitive<'_>) -> Option<String> {
     use ::gltf::Semantic;
