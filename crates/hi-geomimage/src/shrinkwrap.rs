@@ -597,6 +597,20 @@ fn grid_normals(x: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
         .collect()
 }
 
+/// Each texel's representative in a `rows × cols` image of `layout`: itself, or its mirror
+/// where that comes first (the doubled layouts look along each direction twice).
+fn owners(layout: Layout, rows: usize, cols: usize) -> Vec<usize> {
+    let mirror = layout.mirror(rows, cols);
+    (0..rows * cols)
+        .map(|t| {
+            mirror.as_ref().map_or(t, |m| {
+                let (a, b) = m(t / cols, t % cols);
+                t.min(a * cols + b)
+            })
+        })
+        .collect()
+}
+
 /// How far off the surface, in point spacings along the normal of its nearest texel, a point
 /// must lie to pull that texel onto it.
 const PULL_FROM: f64 = 0.75;
@@ -622,14 +636,8 @@ fn pull(
     rows: usize,
     cols: usize,
 ) -> usize {
-    let mirror = layout.mirror(rows, cols);
-    let owner = |t: usize| {
-        mirror.as_ref().map_or(t, |m| {
-            let (a, b) = m(t / cols, t % cols);
-            t.min(a * cols + b)
-        })
-    };
-    let owners: Vec<usize> = (0..rows * cols).filter(|&t| owner(t) == t && !filled[t]).collect();
+    let owner = owners(layout, rows, cols);
+    let owners: Vec<usize> = (0..rows * cols).filter(|&t| owner[t] == t && !filled[t]).collect();
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(
         &owners.iter().map(|&t| x[t].to_array()).collect::<Vec<_>>(),
     ) else {
@@ -659,7 +667,7 @@ fn pull(
         sum[t].1 += 1;
     }
     for (t, texel) in x.iter_mut().enumerate() {
-        let (total, count) = sum[owner(t)];
+        let (total, count) = sum[owner[t]];
         if count > 0 {
             *texel = total / f64::from(count);
         }
@@ -713,16 +721,7 @@ fn wrap(
             }
         }
     };
-    // Each texel's representative: itself, or its mirror where that comes first (the doubled
-    // layouts look along each direction twice; each is projected once).
-    let owner: Vec<usize> = (0..rows * cols)
-        .map(|t| {
-            mirror.as_ref().map_or(t, |m| {
-                let (a, b) = m(t / cols, t % cols);
-                t.min(a * cols + b)
-            })
-        })
-        .collect();
+    let owner = owners(layout, rows, cols);
     let mut filled = vec![false; rows * cols];
     let neighbours_of = |t: usize| {
         let (i, j) = (t / cols, t % cols);
