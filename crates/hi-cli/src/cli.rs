@@ -85,18 +85,21 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   \"filled_to_scan_max\", \"filled_to_scan_max_relative\", \"unreached_fraction\", \"diagonal\"},
   \"hausdorff\": {\"distance\", \"relative\"} | null, \"files\": [...]}
   --method auto (the default) fits a mesh scan that closes to genus 0 (holes filled, parts
-  other than the largest dropped, handles cut) through a spherical parameterisation of the mesh itself
-  (mesh), and anything else, point sets included, by wrapping a surface onto the points
-  (shrink-wrap: the zero set of their signed distance, parameterised over the sphere,
-  projected onto them and pulled into the creases it bridged); method_reason says why. radial is the thesis's algorithm 2 (rays from the
-  centre: non_star_fraction counts the rays that met the scan more than once, above 5% a
-  warning). The image size follows the point count unless --resolution is given. A surface
+  other than the largest dropped, handles cut) through a spherical parameterisation of the
+  mesh itself (mesh), and anything else, point sets included, by wrapping a surface onto the
+  points (shrink-wrap: the zero set of their signed distance, parameterised over the sphere,
+  projected onto them and pulled into the creases it bridged); method_reason says why. radial
+  is the thesis's algorithm 2 (rays from the centre). non_star_fraction counts the rays from
+  the centre that met the scan more than once; above 5% a warning, when the surface follows
+  the outermost shell the rays met (radial, contours, or a shrink-wrap that had to start from
+  the rays). The image size follows the point count unless --resolution is given. A surface
   through points is regularised to the scan's own noise (--regularise); --smooth 0 interpolates.
   The output mesh is closed, welded at every seam and faces outwards. errors: the scan's
   points to the output mesh (kd-tree, or with --exact-error Gauss-Newton onto the surface);
   both_ways adds the surface to the scan (its mesh when it has one), the largest distance from
-  filled texels (holes) apart, and the fraction of the surface farther than 2% of the diagonal
-  from the scan (unreached). An image more than half holes is refused.
+  filled texels (holes) apart, and the fraction of the scan's points farther than 2% of the
+  diagonal from the surface (unreached; above 1% a warning with its cause, such as parts of a
+  mesh left out or shells the wrap could not reach). An image more than half holes is refused.
 --param sections is algorithm 1 (§5.3) instead: sections across --axis (K equal slabs with
   --slices K, else the thesis's recursive subdivision), a harmonic curve through each (points in
   --order), insertion to equal counts, rotation alignment, the reversed traversal. Its output

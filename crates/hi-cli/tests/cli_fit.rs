@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! End-to-end tests of `hi fit` on scans generated here: points on an ellipsoid (the fitted
-//! grid must lie on it), two nested spheres (never star-shaped: a warning), and malformed
-//! files (one line naming the problem).
+//! grid must lie on it), two nested spheres (never star-shaped, and wrapped from the rays: a
+//! warning), the cactus (not star-shaped, but wrapped from its signed distance: no warning),
+//! and malformed files (one line naming the problem).
 
 #[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
 mod common;
@@ -84,28 +85,71 @@ fn an_ellipsoid_fits_and_its_grid_lies_on_it() {
     assert_eq!(doc.meshes().count(), 1);
 }
 
+/// Two nested spheres: whichever way the surface is made, it cannot pass through both, and the
+/// inner sphere's points (half of them, each 1 from the outer sphere, 14% of the diagonal) are
+/// named as unreached; the rays, which follow the outer shell, are named as well.
 #[test]
 fn nested_spheres_get_a_warning() {
     let mut text = ellipsoid_xyz(5000, [1.0; 3]);
     text.push_str(&ellipsoid_xyz(5000, [2.0; 3]));
     let scan = scan_file(&text, "xyz");
     let out_file = TempFile::path_with("obj");
-    let out = run(&[
-        "fit",
-        scan.path(),
-        "-o",
-        out_file.path(),
-        "--resolution",
-        "16x16",
-        "--centre",
-        "0,0,0",
-    ]);
-    assert_eq!(out.status.code(), Some(0));
-    let stderr = String::from_utf8(out.stderr).expect("UTF-8");
+    let stderr = |method: &str| {
+        let out = run(&[
+            "fit",
+            scan.path(),
+            "-o",
+            out_file.path(),
+            "--resolution",
+            "16x16",
+            "--centre",
+            "0,0,0",
+            "--method",
+            method,
+        ]);
+        assert_eq!(out.status.code(), Some(0), "{method}");
+        String::from_utf8(out.stderr).expect("UTF-8")
+    };
+    let wrapped = stderr("auto");
     assert!(
-        stderr.starts_with("hi: warning: 100.0% of the rays meet")
-            && stderr.matches('\n').count() == 1,
-        "{stderr}"
+        wrapped.starts_with("hi: warning: 50.0% of the points of")
+            && wrapped.contains("the wrap did not reach them")
+            && wrapped.matches('\n').count() == 1,
+        "{wrapped}"
+    );
+    let radial = stderr("radial");
+    let lines: Vec<&str> = radial.lines().collect();
+    assert_eq!(lines.len(), 2, "{radial}");
+    assert!(lines[0].starts_with("hi: warning: 100.0% of the rays meet"), "{radial}");
+    assert!(
+        lines[1].starts_with("hi: warning: 50.0% of the points of")
+            && lines[1].ends_with("they lie inside the outermost shell"),
+        "{radial}"
+    );
+}
+
+/// The cactus's arms hide parts of it from the centre, but the shrink-wrap from the zero set of
+/// its signed distance reaches them: the rays' count is reported, with no warning that the
+/// surface follows the outermost shell, and every point is reached.
+#[test]
+fn a_wrapped_scan_that_is_not_star_shaped_gets_no_outer_shell_warning() {
+    let scan = concat!(env!("CARGO_MANIFEST_DIR"), "/../../fixtures/models/cactus.pts");
+    let glb = TempFile::path_with("glb");
+    let out = run(&["fit", scan, "-o", glb.path()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.stderr.is_empty(), "no warning: {}", String::from_utf8_lossy(&out.stderr));
+    let report: Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    assert_eq!(report["method"], "shrink-wrap");
+    assert!(
+        report["method_reason"].as_str().is_some_and(|r| r.contains("zero set")),
+        "{}",
+        report["method_reason"]
+    );
+    assert!(num(&report["non_star_fraction"]) > 0.05, "{}", report["non_star_fraction"]);
+    assert!(
+        num(&report["both_ways"]["unreached_fraction"]) < 0.001,
+        "{}",
+        report["both_ways"]["unreached_fraction"]
     );
 }
 

@@ -8,7 +8,8 @@
 //! | method | from | texels | when [`Method::Auto`] picks it |
 //! |---|---|---|---|
 //! | [`Method::Mesh`] | a mesh | the surface point each texel's direction falls on under a spherical parameterisation of the mesh ([`crate::sphereparam`]) | the scan has triangles, closes to genus 0 ([`crate::repair`]), and its largest part holds at least half its area |
-//! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | otherwise |
+//! | [`Method::ShrinkWrap`] | points | the zero set of the points' signed distance parameterised over the sphere, projected onto the points and pulled into the creases it bridged ([`crate::shrinkwrap`]) | otherwise: point sets, and meshes that do not close to genus 0 |
+//! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | never (the thesis's algorithm 2) |
 //! | [`Method::Contours`] | points | the scan point each ray located, rows made contours (§5.8, [`crate::contours`]) | never (the thesis's §5.8) |
 //!
 //! Then the thesis's optional Gaussian smoothing, the regularisation ([`Regularisation`]:
@@ -61,7 +62,8 @@ pub enum Method {
 }
 
 impl Method {
-    /// The name used in reports: "mesh", "radial", "contours" ("auto" before it is resolved).
+    /// The name used in reports: "mesh", "shrink-wrap", "radial", "contours" ("auto" before
+    /// it is resolved).
     #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
@@ -217,7 +219,7 @@ pub fn auto_resolution_points(points: usize) -> (usize, usize) {
     auto_resolution(points / 4)
 }
 
-/// The ray-cast geometry image a fit started from, with its diagnostics.
+/// The geometry image a fit started from, with its diagnostics.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SourceImage {
     /// Algorithm 2's image.
@@ -226,7 +228,8 @@ pub enum SourceImage {
     Contours(ContourImage),
     /// The image of a spherical parameterisation of the scan's mesh.
     Mesh(MeshSource),
-    /// The radial image shrink-wrapped onto the points.
+    /// A surface wrapped onto the points: the zero set of their signed distance, or where that
+    /// is not one genus-0 surface the radial image, projected onto them.
     ShrinkWrap(ShrinkWrapImage),
 }
 
@@ -268,6 +271,21 @@ impl SourceImage {
             Self::Contours(c) => c.non_star_fraction,
             Self::Mesh(_) => 0.0,
             Self::ShrinkWrap(w) => w.non_star_fraction,
+        }
+    }
+
+    /// Whether the surface follows the outermost shell the rays from the centre met, so that
+    /// [`SourceImage::non_star_fraction`] is the share of directions where it cannot reach the
+    /// scan's inner shells: the ray methods, and a shrink-wrap that started from the rays. A
+    /// mesh parameterisation and a shrink-wrap started from the zero set of the signed
+    /// distance follow the scan's surface itself, whatever the rays met
+    /// ([`FitErrors::unreached_fraction`] says what they missed).
+    #[must_use]
+    pub const fn follows_outer_shell(&self) -> bool {
+        match self {
+            Self::Radial(_) | Self::Contours(_) => true,
+            Self::Mesh(_) => false,
+            Self::ShrinkWrap(w) => !w.implicit_start,
         }
     }
 
@@ -417,8 +435,10 @@ pub struct FitReport {
     pub dropped_points: usize,
     /// The image size (rows, columns).
     pub image_size: (usize, usize),
-    /// The fraction of rays that met several shells: the scan is not star-shaped about the
-    /// centre there, and the fit follows the outermost shell (ray methods only).
+    /// The fraction of rays from the centre that met several shells: the scan is not
+    /// star-shaped about the centre there. Where [`SourceImage::follows_outer_shell`], the fit
+    /// follows the outermost shell in those directions; otherwise it is only a description of
+    /// the scan's shape (0 for a mesh parameterisation, which casts no rays).
     pub non_star_fraction: f64,
     /// The fraction of the image with no data, filled (holes).
     pub hole_fraction: f64,

@@ -1,19 +1,20 @@
 // SPDX-License-Identifier: MIT
 //! `hi fit`: a harmonic surface fitted to a scan through a geometry image (§5.3, §5.4, §5.8),
-//! with a progress display, a summary and a warning when the scan is not star-shaped;
+//! with a progress display, a summary and a warning when the scan is not star-shaped and the
+//! surface could only follow its outermost shell;
 //! `--param sections` goes to algorithm 1 instead ([`super::fit_sections`]).
 
 use std::io::IsTerminal;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_geomimage::fit::{RowPoints, Stage, mesh_oversample};
+use hi_geomimage::fit::{RowPoints, Stage, UNREACHED, mesh_oversample};
 use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::regularise::{Regularisation, RegularisationReport};
 use hi_geomimage::scan::read_scan;
-use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
+use hi_geomimage::{ErrorMeasure, Fit, FitOptions, Layout, Method, Smoothing, SourceImage, fit};
 use hi_mesh::export::{self, MeshFormat};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -25,11 +26,56 @@ use crate::commands::surface_example::{grid_json, write_file};
 use crate::error::{Failure, about_file, stderr_line};
 use crate::output::{Json, check_writable, file_names, json};
 
-/// Above this fraction of rays meeting the scan more than once, `hi fit` warns.
+/// Above this fraction of rays meeting the scan more than once, `hi fit` warns when its surface
+/// follows the outermost shell the rays met ([`hi_geomimage::SourceImage::follows_outer_shell`]).
 const NON_STAR_WARNING: f64 = 0.05;
+
+/// Above this fraction of the scan's points left unreached by the surface (farther than
+/// [`hi_geomimage::fit::UNREACHED`] of the diagonal from it), `hi fit` warns.
+const UNREACHED_WARNING: f64 = 0.01;
 
 /// Samples per patch side in the mesh of `--bezier`.
 const BEZIER_SAMPLES: usize = 4;
+
+/// The warnings of a fit of `scan`, one line each: rays that met several shells where the
+/// surface follows the outermost one, and points of the scan the surface did not reach, with
+/// the cause when the fit knows it.
+fn warnings(fitted: &Fit, scan: &Path) -> Vec<String> {
+    let report = &fitted.report;
+    let mut lines = Vec::new();
+    let outer_shell =
+        fitted.source.follows_outer_shell() && report.non_star_fraction > NON_STAR_WARNING;
+    if outer_shell {
+        lines.push(format!(
+            "warning: {:.1}% of the rays meet {} more than once: it is not star-shaped about the centre, and the surface follows its outermost shell there",
+            100.0 * report.non_star_fraction,
+            scan.display()
+        ));
+    }
+    if let Some(errors) = &report.both_ways
+        && errors.unreached_fraction > UNREACHED_WARNING
+    {
+        let cause = match &fitted.source {
+            SourceImage::Mesh(m) if m.area_kept < 1.0 => format!(
+                ": only the largest part of the mesh was fitted ({:.1}% of its area)",
+                100.0 * m.area_kept
+            ),
+            _ if outer_shell => ": they lie inside the outermost shell".to_owned(),
+            SourceImage::ShrinkWrap(_) => {
+                ": the wrap did not reach them (inner shells, separate parts, or parts thinner than its grid)"
+                    .to_owned()
+            }
+            _ => String::new(),
+        };
+        lines.push(format!(
+            "warning: {:.1}% of the points of {} are farther than {}% of the diagonal from the surface{cause}",
+            100.0 * errors.unreached_fraction,
+            scan.display(),
+            100.0 * UNREACHED
+        ));
+    }
+    lines
+}
 
 /// Fits, writes the surface and returns the summary (also written to `--report`).
 ///
@@ -124,16 +170,8 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     let result = fit(&scan, &options, &mut |stage| bar.set_message(stage.name()));
     bar.finish_and_clear();
     let mut fitted = result.map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
-    let report = &fitted.report;
-    if report.non_star_fraction > NON_STAR_WARNING {
-        eprintln!(
-            "{}",
-            stderr_line(&format!(
-                "warning: {:.1}% of the rays meet {} more than once: it is not star-shaped about the centre, and the surface follows its outermost shell there",
-                100.0 * report.non_star_fraction,
-                args.scan.display()
-            ))
-        );
+    for warning in warnings(&fitted, &args.scan) {
+        eprintln!("{}", stderr_line(&warning));
     }
     let mut bezier_report = None;
     let files: Vec<PathBuf> = if args.bezier {
@@ -281,13 +319,13 @@ fn relative(x: f64, d: f64) -> f64 {
 /// The summary of a fit as JSON.
 fn summary(
     args: &FitArgs,
-    fitted: &hi_geomimage::Fit,
+    fitted: &Fit,
     files: &[PathBuf],
     bezier: Option<Json>,
 ) -> Result<Json, Failure> {
     let r = &fitted.report;
     let mesh = match &fitted.source {
-        hi_geomimage::SourceImage::Mesh(m) => Some(MeshOut {
+        SourceImage::Mesh(m) => Some(MeshOut {
             holes_filled: m.repair.holes,
             hole_edges: m.repair.hole_edges,
             parts: m.repair.components,
