@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! End-to-end tests of `hi fit` on scans generated here: points on an ellipsoid (the fitted
-//! grid must lie on it), two nested spheres (never star-shaped, and wrapped from the rays: a
-//! warning), the cactus (not star-shaped, but wrapped from its signed distance: no warning),
+//! grid must lie on it), two nested spheres (no surface passes through both: the inner one is
+//! named as unreached, and the rays as well when the surface follows them), the cactus (not star-shaped, but wrapped from its signed distance: no warning),
 //! and malformed files (one line naming the problem).
 
 #[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
@@ -87,7 +87,8 @@ fn an_ellipsoid_fits_and_its_grid_lies_on_it() {
 
 /// Two nested spheres: whichever way the surface is made, it cannot pass through both, and the
 /// inner sphere's points (half of them, each 1 from the outer sphere, 14% of the diagonal) are
-/// named as unreached; the rays, which follow the outer shell, are named as well.
+/// named as unreached; under `--method radial`, whose surface follows the outer shell, the rays
+/// that met both are named as well.
 #[test]
 fn nested_spheres_get_a_warning() {
     let mut text = ellipsoid_xyz(5000, [1.0; 3]);

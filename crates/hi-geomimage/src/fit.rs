@@ -8,7 +8,7 @@
 //! | method | from | texels | when [`Method::Auto`] picks it |
 //! |---|---|---|---|
 //! | [`Method::Mesh`] | a mesh | the surface point each texel's direction falls on under a spherical parameterisation of the mesh ([`crate::sphereparam`]) | the scan has triangles, closes to genus 0 ([`crate::repair`]), and its largest part holds at least half its area |
-//! | [`Method::ShrinkWrap`] | points | the zero set of the points' signed distance parameterised over the sphere, projected onto the points and pulled into the creases it bridged ([`crate::shrinkwrap`]) | otherwise: point sets, and meshes that do not close to genus 0 |
+//! | [`Method::ShrinkWrap`] | points | the zero set of the points' signed distance parameterised over the sphere, projected onto the points and pulled into the creases it bridged ([`crate::shrinkwrap`]) | otherwise: point sets, and meshes the mesh method cannot take |
 //! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | never (the thesis's algorithm 2) |
 //! | [`Method::Contours`] | points | the scan point each ray located, rows made contours (§5.8, [`crate::contours`]) | never (the thesis's §5.8) |
 //!

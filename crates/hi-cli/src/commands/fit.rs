@@ -56,7 +56,7 @@ fn warnings(fitted: &Fit, scan: &Path) -> Vec<String> {
         && errors.unreached_fraction > UNREACHED_WARNING
     {
         let cause = match &fitted.source {
-            SourceImage::Mesh(m) if m.area_kept < 1.0 => format!(
+            SourceImage::Mesh(m) if m.area_kept < 1.0 - 1e-9 => format!(
                 ": only the largest part of the mesh was fitted ({:.1}% of its area)",
                 100.0 * m.area_kept
             ),
