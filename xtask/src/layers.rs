@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! The layer rule of docs/architecture.md: a crate may depend only on crates below it.
 //!
-//! {hi-interval, hi-bezier} → {hi-curve, hi-mesh} → {hi-surface, hi-compare} →
+//! {hi-interval, hi-bezier} → {hi-curve, hi-mesh} → {hi-surface, hi-compare, hi-scan} →
 //! {hi-geomimage, hi-raytrace} → hi-cli,
 //! with xtask on top. Every `[dependencies]`, `[dev-dependencies]` and
 //! `[build-dependencies]` table of every crate under `crates/` is read; a `hi-*` entry whose
@@ -12,13 +12,14 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 /// Each crate and its layer; 0 is the foundation.
-pub(crate) const LAYERS: [(&str, u32); 10] = [
+pub(crate) const LAYERS: [(&str, u32); 11] = [
     ("hi-interval", 0),
     ("hi-bezier", 0),
     ("hi-mesh", 1),
     ("hi-curve", 1),
     ("hi-surface", 2),
     ("hi-compare", 2),
+    ("hi-scan", 2),
     ("hi-geomimage", 3),
     ("hi-raytrace", 3),
     ("hi-cli", 4),

@@ -9,9 +9,9 @@ use std::f64::consts::PI;
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Smoothing, fit};
 use hi_raytrace::{BezierObject, BezierOptions, Camera, HarmonicObject, HarmonicOptions, Ray};
+use hi_scan::scan::Scan;
 
 /// Points on r = 1 + 0.15 sin 5θ cos 3φ (a Fibonacci lattice).
 fn bumpy_scan(n: usize) -> Scan {

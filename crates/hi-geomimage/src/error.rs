@@ -3,15 +3,16 @@
 
 use std::fmt;
 
-use crate::scan::ScanError;
+use hi_scan::scan::ScanError;
 
 /// Everything that can be wrong with the input of a `hi-geomimage` function; `Display` gives
 /// one line naming the problem.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Error {
-    /// A scan could not be read.
-    Scan(ScanError),
+    /// An error from the scan layer (`hi-scan`): a scan that could not be read, a mesh that
+    /// could not be repaired, points with no surface.
+    Scan(hi_scan::Error),
     /// Too few points to build anything.
     TooFewPoints {
         /// Points given (finite ones).
@@ -125,9 +126,15 @@ impl std::error::Error for Error {
     }
 }
 
+impl From<hi_scan::Error> for Error {
+    fn from(e: hi_scan::Error) -> Self {
+        Self::Scan(e)
+    }
+}
+
 impl From<ScanError> for Error {
     fn from(e: ScanError) -> Self {
-        Self::Scan(e)
+        Self::Scan(hi_scan::Error::Read(e))
     }
 }
 

@@ -7,14 +7,14 @@
 //!
 //! | method | from | texels | when [`Method::Auto`] picks it |
 //! |---|---|---|---|
-//! | [`Method::Mesh`] | a mesh | the surface point each texel's direction falls on under a spherical parameterisation of the mesh ([`crate::sphereparam`]) | the scan has triangles, closes to genus 0 ([`crate::repair`]), and its largest part holds at least half its area |
+//! | [`Method::Mesh`] | a mesh | the surface point each texel's direction falls on under a spherical parameterisation of the mesh ([`crate::sphereparam`]) | the scan has triangles, closes to genus 0 ([`hi_scan::repair`]), and its largest part holds at least half its area |
 //! | [`Method::ShrinkWrap`] | points | the zero set of the points' signed distance parameterised over the sphere, projected onto the points and pulled into the creases it bridged ([`crate::shrinkwrap`]) | otherwise: point sets, and meshes the mesh method cannot take |
 //! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | never (the thesis's algorithm 2) |
 //! | [`Method::Contours`] | points | the scan point each ray located, rows made contours (§5.8, [`crate::contours`]) | never (the thesis's §5.8) |
 //!
 //! Then the thesis's optional Gaussian smoothing, the regularisation ([`Regularisation`]:
 //! by default, for images made from points, a thin-plate penalty weighed so that the surface
-//! departs from the texels by the scan's own noise level ([`crate::noise`]), and none for
+//! departs from the texels by the scan's own noise level ([`hi_scan::noise`]), and none for
 //! images sampled from a mesh, whose texels lie exactly on the scan's surface), the optional
 //! reduction, and the harmonic surface through the result.
 //!
@@ -27,17 +27,18 @@ use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_surface::HarmonicSurface;
 
-use crate::closest::{NearMesh, TriangleBvh};
 use crate::contours::{ContourImage, contour_image};
-use crate::distance::{Distances, Hausdorff, bounding_diagonal, distances_to_surface, hausdorff};
+use crate::distance::{Hausdorff, distances_to_surface, hausdorff};
 use crate::layout_mesh::{LayoutMesh, layout_mesh};
 use crate::regularise::{Regularisation, RegularisationReport, regularise};
-use crate::repair::{Repair, close_mesh};
-use crate::scan::Scan;
 use crate::shrinkwrap::{ShrinkWrapImage, ShrinkWrapOptions, shrink_wrap};
 use crate::sphereparam::{ParamQuality, SphereParamOptions, parameterise};
 use crate::spherical::{Layout, SphericalImage, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
+use hi_scan::closest::{NearMesh, TriangleBvh};
+use hi_scan::distance::{Distances, bounding_diagonal};
+use hi_scan::repair::{Repair, close_mesh};
+use hi_scan::scan::Scan;
 
 /// How the geometry image is made; see the module documentation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -90,7 +91,7 @@ pub enum ErrorMeasure {
     /// Both ways against the closed mesh the fit is written as ([`Fit::mesh`], sampled
     /// [`mesh_oversample`] times per texel): every scan point to its closest point on the
     /// mesh, every mesh vertex to the scan's triangles (or nearest point), exactly, by a
-    /// bounding-volume hierarchy ([`crate::closest`]).
+    /// bounding-volume hierarchy ([`hi_scan::closest`]).
     #[default]
     Fast,
     /// As [`ErrorMeasure::Fast`] with the exact hierarchy both ways, then each scan point's
@@ -124,7 +125,7 @@ pub struct FitOptions {
     /// root; §5.8 keeps 0.25), if any. In (0, 1].
     pub reduce: Option<f64>,
     /// For the ray methods, a mesh with fewer points than this gets more, sampled on its
-    /// triangles ([`crate::sampling::densify`]), for the geometry image (errors are still
+    /// triangles ([`hi_scan::sampling::densify`]), for the geometry image (errors are still
     /// measured against the scan's own points and mesh). Default 200 000; 0 turns it off.
     pub densify: usize,
     /// Time the 4× rasterisation of the surface that the thesis's Table 5.1 times as
@@ -444,7 +445,7 @@ pub struct FitReport {
     pub hole_fraction: f64,
     /// For [`Method::Contours`], the distinct located points per row.
     pub row_points: Option<RowPoints>,
-    /// The scan's noise level as estimated for the regularisation ([`crate::noise`]), when
+    /// The scan's noise level as estimated for the regularisation ([`hi_scan::noise`]), when
     /// it was.
     pub noise: Option<f64>,
     /// The regularisation applied.
@@ -650,7 +651,7 @@ pub fn fit(
             let dense = if triangles.is_empty() || method == Method::ShrinkWrap {
                 points.clone()
             } else {
-                crate::sampling::densify(
+                hi_scan::sampling::densify(
                     &Scan {
                         points: points.clone(),
                         triangles: triangles.clone(),
@@ -711,7 +712,7 @@ pub fn fit(
     let how = match (options.regularisation, method) {
         (Regularisation::Auto, Method::Mesh) => Regularisation::Off,
         (Regularisation::Auto, _) => {
-            let sigma = crate::noise::noise_estimate(&points);
+            let sigma = hi_scan::noise::noise_estimate(&points);
             noise = Some(sigma);
             Regularisation::Noise(sigma)
         }
@@ -1032,7 +1033,7 @@ fn fit_errors(
         samples.iter().enumerate().filter(|(v, _)| !on_scan(*v)).map(|(_, x)| *x).collect();
     let backward = || -> Result<Vec<f64>, Error> {
         if triangles.is_empty() {
-            crate::distance::nearest_point_distances(&queried, points)
+            Ok(hi_scan::distance::nearest_point_distances(&queried, points)?)
         } else {
             // The scan's triangles can be long and thin (scanners leave slivers at folds and
             // holes), which the nearest-vertex query misjudges: this side is always exact.

@@ -1,29 +1,25 @@
 // SPDX-License-Identifier: MIT
 //! Geometry images and surface fitting from scans (Hardy 2005, §5.3, §5.4, §5.8).
 //!
-//! This crate turns a scan (a mesh or bare points) into a geometry image (spherical or
-//! octahedral layout), the geometry image into a harmonic surface, and that surface into a
-//! closed mesh or cubic Bézier patches, with smoothing, regularisation and reduction that
-//! report their effect and a fit error measured both ways. Where the thesis's rays fail (a
-//! shape that is not star-shaped) it goes past them: a mesh is parameterised over the sphere,
-//! points are shrink-wrapped. It builds on `hi-surface`.
+//! This crate turns a scan (a mesh or bare points, read and repaired by `hi-scan`) into a
+//! geometry image (spherical or octahedral layout), the geometry image into a harmonic
+//! surface, and that surface into a closed mesh or cubic Bézier patches, with smoothing,
+//! regularisation and reduction that report their effect and a fit error measured both ways.
+//! Where the thesis's rays fail (a shape that is not star-shaped) it goes past them: a mesh is
+//! parameterised over the sphere, points are shrink-wrapped. It builds on `hi-surface` and
+//! `hi-scan`.
 //!
 //! | what | thesis | where |
 //! |---|---|---|
-//! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS, glTF, GLB | §5.8 | [`scan`] |
-//! | closing a scan mesh to one genus-0 surface (weld, clean, orient, fill holes, cut handles) | | [`repair`] |
 //! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
 //! | shrink-wrapping a point set: the zero set of its signed distance, parameterised, projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
-//! | the zero set of a function sampled on a grid (surface nets) | | [`surfacenets`] |
-//! | noise estimate and spectral regularisation (discrepancy principle, GCV) | beyond §5.4 | [`noise`], [`regularise`] |
+//! | spectral regularisation to the scan's noise (discrepancy principle, GCV) | beyond §5.4 | [`regularise`] |
 //! | the closed, outward mesh of a fitted surface in every layout | §5.3 | [`layout_mesh`] |
-//! | closest points on triangles (BVH) and near a mesh (kd-tree) | | [`closest`] |
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
 //! | ray-cast geometry images (algorithm 2): spherical, octahedral and flattened octahedral layouts, with star-shape and hole diagnostics | §5.3 | [`spherical`], [`Layout`] |
 //! | periodic smoothing (box, Gaussian), Theorem 5.3 resampling with the reduction error | §5.4 | [`Smoothing`], [`GeometryImage::smoothed`], [`GeometryImage::resampled`] |
 //! | algorithm 1: cross-sections, a harmonic curve per contour, insertion, rotation alignment, the reversed traversal; with failure diagnostics | §5.3, figures 5.7–5.9 | [`sections`], [`fit_sections`] |
 //! | the fitting pipeline, timed stage by stage, with diagnostics and errors | §5.3, §5.8, Table 5.1 | [`fit()`] |
-//! | more points on the triangles of sparse meshes | §5.3 | [`sampling`] |
 //! | fit quality: scan-to-surface distances, two-sided Hausdorff distance to the scan mesh | | [`distance`] |
 //!
 //! # References
@@ -41,7 +37,6 @@
 //! | `parallel` | yes | every stage of a fit on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread computes the surface |
 //! | `serde` | no | `Serialize` and `Deserialize` for scans, options, geometry images (`{"rows": [[t₀₀, …], …]}`, read back through [`GeometryImage::try_new`]) and reports; a report's per-point distances are left out, so it stays small |
 
-pub mod closest;
 pub mod contours;
 pub mod distance;
 mod error;
@@ -49,19 +44,16 @@ mod filter;
 pub mod fit;
 mod image;
 pub mod layout_mesh;
-pub mod noise;
-mod par;
 pub mod regularise;
-pub mod repair;
-pub mod sampling;
-pub mod scan;
 pub mod sections;
 #[cfg(feature = "serde")]
 mod serde_impls;
 pub mod shrinkwrap;
 pub mod sphereparam;
 pub mod spherical;
-pub mod surfacenets;
+
+/// The data-parallel calls, as `hi-scan` runs them (rayon behind the `parallel` feature).
+use hi_scan::par;
 
 pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;

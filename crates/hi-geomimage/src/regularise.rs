@@ -17,7 +17,7 @@
 //! by w (Parseval: ‖(I − S)x‖² is a sum over the frequencies):
 //! - from a noise level σ (the discrepancy principle of Morozov): the largest λ that moves
 //!   the texels by at most σ in root mean square — the surface may depart from the data by
-//!   what the data's own scatter allows, and no more (σ from [`crate::noise`]);
+//!   what the data's own scatter allows, and no more (σ from [`hi_scan::noise`]);
 //! - by generalised cross-validation (Craven and Wahba 1979): λ minimising
 //!   GCV(λ) = N · ‖(I − S)x‖² / (tr(I − S))², the mean squared error of predicting each texel
 //!   from the others, which needs no noise level but assumes the texels' errors independent.

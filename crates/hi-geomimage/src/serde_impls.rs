@@ -44,8 +44,8 @@ impl<'de> Deserialize<'de> for GeometryImage {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scan::Scan;
     use crate::{FitOptions, Layout, Method, fit};
+    use hi_scan::scan::Scan;
 
     #[test]
     fn images_read_back_equal_and_ragged_ones_are_errors() {

@@ -48,8 +48,8 @@ use std::f64::consts::PI;
 use crate::par::*;
 use glam::{DMat3, DVec3};
 
-use crate::repair::ClosedMesh;
 use crate::{Error, GeometryImage, Layout};
+use hi_scan::repair::ClosedMesh;
 
 /// The weight of the shape term against the stretch (see [`face_energy`]).
 const SHAPE_WEIGHT: f64 = 0.1;
@@ -1212,7 +1212,7 @@ mod tests {
             triangles: t,
             scan_vertex: (0..6).collect(),
             filled: vec![false; 8],
-            repair: crate::repair::Repair::default(),
+            repair: hi_scan::repair::Repair::default(),
         };
         let q = measure(&mesh, &p, 0, 0);
         assert!((q.stretch_efficiency - 1.0).abs() < 1e-12, "{q:?}");

@@ -7,9 +7,9 @@ use std::f64::consts::PI;
 use glam::DVec3;
 use hi_curve::HarmonicCurve;
 use hi_geomimage::contours::contour_image;
-use hi_geomimage::scan::Scan;
 use hi_geomimage::spherical::SphericalOptions;
 use hi_geomimage::{FitOptions, Layout, Method, fit};
+use hi_scan::scan::Scan;
 
 /// `n` points on the ellipsoid with semi-axes `axes` (a Fibonacci lattice).
 fn ellipsoid(n: usize, axes: DVec3) -> Vec<DVec3> {

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 //! Fit-quality distances against geometry whose distances are known: closest points on
 //! triangles against a brute-force search, points near the exact harmonic sphere, points
-//! near a cube mesh, and an icosphere against the sphere.
+//! near a cube mesh, an icosphere against the sphere, and the fit's measurements (fast and
+//! exact) against the closed-form distance to the sphere.
 
 use glam::DVec3;
-use hi_geomimage::distance::{
-    bounding_diagonal, closest_point_on_triangle, distances_to_mesh, distances_to_surface,
-    hausdorff,
-};
+use hi_geomimage::Layout;
+use hi_geomimage::distance::{distances_to_surface, hausdorff};
+use hi_geomimage::fit::{ErrorMeasure, measure_fit};
+use hi_scan::distance::{bounding_diagonal, closest_point_on_triangle, distances_to_mesh};
 
 mod common;
 
@@ -137,4 +138,41 @@ fn an_icosphere_against_the_sphere() {
     );
     assert!(h.surface_to_scan.max > 0.5 * sag, "{} against {sag}", h.surface_to_scan.max);
     assert_eq!(h.distance(), h.surface_to_scan.max);
+}
+
+#[test]
+fn the_measurements_match_the_sphere() {
+    // Points at known distances from the exact unit sphere: radius 1 + d.
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let n = 4000;
+    let offset = |k: usize| if k.is_multiple_of(2) { 0.01 } else { -0.02 };
+    let points: Vec<DVec3> = (0..n)
+        .map(|k| {
+            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+            let s = (1.0 - z * z).sqrt();
+            let phi = k as f64 * golden;
+            DVec3::new(s * phi.cos(), s * phi.sin(), z) * (1.0 + offset(k))
+        })
+        .collect();
+    let sphere = hi_surface::sphere(1.0);
+    let (exact, _) =
+        measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Exact).unwrap();
+    // To the Hermite interpolation's error: h⁴/384 · |p⁗| for h = 1/192 of the parameter,
+    // |p⁗| ≤ (2π)⁴ · 2 for the sphere's u and v: about 2·10⁻⁸.
+    for (k, d) in exact.scan_to_surface.per_point.iter().enumerate() {
+        assert!((d - offset(k).abs()).abs() < 2e-8, "point {k}: {d}");
+    }
+    // The fast measurement is to the mesh of the sphere, inside it by at most the sagitta of
+    // its triangles: r²/2 for their circumradius r ≤ h/√2, h = 2π/192 the grid's spacing.
+    let (fast, mesh) =
+        measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Fast).unwrap();
+    let sagitta = (2.0 * std::f64::consts::PI / 192.0).powi(2) / 4.0;
+    for (k, d) in fast.scan_to_surface.per_point.iter().enumerate() {
+        assert!((d - offset(k).abs()).abs() <= sagitta, "point {k}: {d}");
+    }
+    // Surface → scan: the mesh's samples are on the sphere, the scan's points at most 0.02
+    // off it and about 0.03 apart: within a spacing of the nearest.
+    assert!(fast.surface_to_scan.max < 0.05, "{}", fast.surface_to_scan.max);
+    assert!(mesh.mesh.n_triangles() > 0);
+    assert!(measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Off).is_err());
 }

@@ -6,10 +6,10 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 
 use glam::DVec3;
-use hi_geomimage::scan::{Scan, read_scan};
 use hi_geomimage::{
     ErrorMeasure, FitOptions, GeometryImage, Layout, Method, Smoothing, StageKind, fit,
 };
+use hi_scan::scan::{Scan, read_scan};
 use hi_surface::{ParamRange, ParamWindow};
 
 mod common;

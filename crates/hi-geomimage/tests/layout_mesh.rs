@@ -8,9 +8,9 @@ use std::f64::consts::PI;
 
 use glam::DVec3;
 use hi_geomimage::layout_mesh::layout_mesh;
-use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, fit};
 use hi_mesh::TriangleMesh;
+use hi_scan::scan::Scan;
 use hi_surface::HarmonicSurface;
 
 /// V − E + F, and whether every undirected edge has two triangles and every directed edge one.

@@ -450,7 +450,7 @@ fn model(file: &str) -> Option<PathBuf> {
 #[test]
 fn real_scans_run_and_report() {
     let Some(path) = model("bunny.obj") else { return };
-    let scan = hi_geomimage::scan::read_scan(&path).unwrap();
+    let scan = hi_scan::scan::read_scan(&path).unwrap();
     // The bunny stands along y; its ears make the upper sections two curves each.
     let options = SectionOptions { axis: SliceAxis::Y, error_oversample: 2, ..slices(24) };
     let fit = fit_sections(&scan.points, &options).unwrap();

@@ -250,7 +250,7 @@ fn the_creases_of_a_real_scan_are_reached() {
     // has creases about one point spacing wide and two or three deep, which the zero set of
     // step 1 (a grid of 1.5 spacings) bridges. The points in them pull the texels in.
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../fixtures/models/ducky_points.obj");
-    let points = hi_geomimage::scan::read_scan(std::path::Path::new(path)).unwrap().points;
+    let points = hi_scan::scan::read_scan(std::path::Path::new(path)).unwrap().points;
     let options = ShrinkWrapOptions { rows: 288, cols: 288, ..ShrinkWrapOptions::default() };
     let wrapped = shrink_wrap(&points, None, &options).unwrap();
     assert!(wrapped.implicit_start, "the duck's zero set closes to a sphere");

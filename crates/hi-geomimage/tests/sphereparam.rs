@@ -6,11 +6,11 @@
 use std::f64::consts::{PI, TAU};
 
 use glam::DVec3;
-use hi_geomimage::distance::closest_point_on_triangle;
-use hi_geomimage::repair::{ADDED_VERTEX, close_mesh};
+use hi_geomimage::Layout;
 use hi_geomimage::sphereparam::{SphereParamOptions, parameterise};
 use hi_geomimage::spherical::{SphericalOptions, spherical_image};
-use hi_geomimage::{Error, Layout};
+use hi_scan::distance::closest_point_on_triangle;
+use hi_scan::repair::{ADDED_VERTEX, close_mesh};
 
 mod common;
 use common::icosphere;
@@ -254,13 +254,16 @@ fn meshes_that_are_not_spheres_are_cut_or_refused() {
     let err = close_mesh(&p, &t).unwrap_err();
     assert!(err.to_string().contains("one-sided"), "{err}");
     // Bad input.
-    assert!(matches!(close_mesh(&[DVec3::NAN], &[]), Err(Error::NonFinite { .. })));
+    assert!(matches!(close_mesh(&[DVec3::NAN], &[]), Err(hi_scan::Error::NonFinite { .. })));
     assert!(matches!(
         close_mesh(&[DVec3::ZERO; 3], &[[0, 1, 3]]),
-        Err(Error::InvalidOption { .. })
+        Err(hi_scan::Error::InvalidOption { .. })
     ));
-    assert!(matches!(close_mesh(&[DVec3::ZERO; 3], &[]), Err(Error::Topology { .. })));
-    assert!(matches!(close_mesh(&[DVec3::ZERO; 3], &[[0, 1, 1]]), Err(Error::Topology { .. })));
+    assert!(matches!(close_mesh(&[DVec3::ZERO; 3], &[]), Err(hi_scan::Error::Topology { .. })));
+    assert!(matches!(
+        close_mesh(&[DVec3::ZERO; 3], &[[0, 1, 1]]),
+        Err(hi_scan::Error::Topology { .. })
+    ));
 }
 
 #[test]

@@ -19,8 +19,8 @@ use std::time::Duration;
 use anyhow::{Context, Result, bail};
 use glam::DVec3;
 use hi_curve::bezier::BezierScheme;
-use hi_geomimage::scan::{Scan, read_scan};
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Method, Smoothing, fit};
+use hi_scan::scan::{Scan, read_scan};
 use hi_surface::HarmonicSurface;
 use indicatif::ProgressBar;
 

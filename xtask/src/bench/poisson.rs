@@ -30,9 +30,9 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use glam::{DVec2, DVec3};
-use hi_geomimage::scan::read_scan;
 use hi_mesh::TriangleMesh;
 use hi_raytrace::{Camera, Geometry, Light, MeshObject, RenderOptions, Scene, SceneObject, render};
+use hi_scan::scan::read_scan;
 use indicatif::ProgressBar;
 
 use super::{Headline, median, table};
@@ -394,7 +394,7 @@ fn beads(points: &[DVec3], size: f64) -> Result<TriangleMesh> {
 
 /// The three panels of one model, as RGB images.
 fn render_row(
-    scan: &hi_geomimage::scan::Scan,
+    scan: &hi_scan::scan::Scan,
     poisson: &Path,
     ours: &Path,
     eye: DVec3,

@@ -6,8 +6,8 @@ use std::f64::consts::PI;
 
 use anyhow::{Result, ensure};
 use glam::DVec3;
-use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, fit};
+use hi_scan::scan::Scan;
 use hi_surface::MeshOptions;
 
 use super::glb::glb;

@@ -20,10 +20,10 @@ use std::io::Cursor;
 
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
-use hi_geomimage::scan::Scan;
 use hi_geomimage::{ErrorMeasure, Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
 use hi_mesh::TriangleMesh;
 use hi_mesh::subdivision::PolyMesh;
+use hi_scan::scan::Scan;
 use hi_surface::{HarmonicSurface, MeshOptions};
 
 use super::glb::glb;
@@ -294,7 +294,7 @@ const REAL_IMAGE: (usize, usize) = (160, 160);
 /// welded into a closed surface, checked to enclose a positive volume (wound outwards).
 fn real_glb(file: &str) -> Result<Vec<u8>> {
     let path = crate::project_root().join("fixtures/models").join(file);
-    let scan = hi_geomimage::scan::read_scan(&path).with_context(|| format!("reading {file}"))?;
+    let scan = hi_scan::scan::read_scan(&path).with_context(|| format!("reading {file}"))?;
     let points = scan.points.iter().map(|p| DVec3::new(-p.x, p.z, p.y)).collect();
     let scan = Scan { points, ..scan };
     let options = FitOptions {

@@ -538,12 +538,12 @@ fn accepts(scheme: Scheme, mesh: &PolyMesh) -> &'static str {
 /// relative to `control`'s bounding-box diagonal.
 fn interpolation_error(control: &PolyMesh, refined: &PolyMesh) -> Result<f64> {
     let tri = refined.to_triangle_mesh()?;
-    let d = hi_geomimage::distance::distances_to_mesh(
+    let d = hi_scan::distance::distances_to_mesh(
         control.positions(),
         tri.positions(),
         tri.triangles(),
     )?;
-    Ok(d.max / hi_geomimage::distance::bounding_diagonal(control.positions()))
+    Ok(d.max / hi_scan::distance::bounding_diagonal(control.positions()))
 }
 
 /// Table 4.1, measured.
@@ -617,7 +617,7 @@ fn bspline_row() -> Result<String> {
             worst = worst.max(p.distance(x));
         }
     }
-    let err = worst / hi_geomimage::distance::bounding_diagonal(&points);
+    let err = worst / hi_scan::distance::bounding_diagonal(&points);
     ensure!(err < 1e-12, "the B-spline fit misses a data point by {err:e}");
     let (cu, cv) = fit.surface().n_control();
     Ok(format!(
@@ -652,7 +652,7 @@ fn harmonic_row() -> Result<String> {
             worst = worst.max(torus.point(j, k).distance(grid.point(step * j, step * k)));
         }
     }
-    let diagonal = hi_geomimage::distance::bounding_diagonal(torus.points());
+    let diagonal = hi_scan::distance::bounding_diagonal(torus.points());
     let err = worst / diagonal;
     ensure!(err < 1e-14, "harmonic subdivision moved a control point by {err:e}");
     Ok(format!(

@@ -13,9 +13,9 @@ use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::fit::{RowPoints, Stage, UNREACHED, mesh_oversample};
 use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::regularise::{Regularisation, RegularisationReport};
-use hi_geomimage::scan::read_scan;
 use hi_geomimage::{ErrorMeasure, Fit, FitOptions, Layout, Method, Smoothing, SourceImage, fit};
 use hi_mesh::export::{self, MeshFormat};
+use hi_scan::scan::read_scan;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 

@@ -8,12 +8,12 @@ use std::path::PathBuf;
 use glam::DVec3;
 
 use hi_geomimage::Stage;
-use hi_geomimage::distance::Distances;
-use hi_geomimage::scan::read_scan;
 use hi_geomimage::sections::{
     ContourOrder, SectionFit, SectionOptions, SliceAxis, SliceReport, fit_sections,
 };
 use hi_mesh::export::{self, MeshFormat};
+use hi_scan::distance::Distances;
+use hi_scan::scan::read_scan;
 use hi_surface::MeshOptions;
 use serde::Serialize;
 

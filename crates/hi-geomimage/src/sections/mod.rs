@@ -75,9 +75,10 @@ use hi_curve::HarmonicCurve;
 use hi_surface::{HarmonicSurface, ParamRange};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
-use crate::distance::{Distances, distances_to_surface};
+use crate::distance::distances_to_surface;
 use crate::fit::{Stage, StageKind};
 use crate::{Error, MAX_TEXELS, NonFiniteInput};
+use hi_scan::distance::Distances;
 use slice::{Frame, MIN_SLICE_POINTS, Slab, axis_of, equal_slabs, order_contour, recursive_slabs};
 
 /// A section more than this fraction of whose points have their nearest neighbour elsewhere
@@ -513,7 +514,7 @@ fn fit_slabs(
         .map(|o| HarmonicCurve::try_new(o.points.clone()).map_err(Error::from))
         .collect::<Result<Vec<_>, _>>()?;
     // A contour smaller than this is a point (a pole given as repeated points).
-    let tiny = 1e-9 * crate::distance::bounding_diagonal(points);
+    let tiny = 1e-9 * hi_scan::distance::bounding_diagonal(points);
     let shapes = ordered
         .par_iter()
         .zip(&curves)
@@ -784,7 +785,7 @@ fn surface_to_nearest_point(
                 .sqrt()
         })
         .collect();
-    Ok(Distances::from_values(per_point, crate::distance::bounding_diagonal(points)))
+    Ok(Distances::from_values(per_point, hi_scan::distance::bounding_diagonal(points)))
 }
 
 /// The measured [`Problem`]s of a fit.

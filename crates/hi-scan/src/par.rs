@@ -3,20 +3,23 @@
 //! default), else the same calls on the standard iterators, run in sequence. Both give the same
 //! values in the same order (every parallel loop here writes its own slots or collects in
 //! order; none reduces floating-point sums across threads).
+//!
+//! Public so that `hi-geomimage`, which builds on this crate, runs its loops the same way; not
+//! part of the crate's API.
 
 #[cfg(feature = "parallel")]
-pub(crate) use rayon::join;
+pub use rayon::join;
 #[cfg(feature = "parallel")]
-pub(crate) use rayon::prelude::*;
+pub use rayon::prelude::*;
 
 #[cfg(not(feature = "parallel"))]
-pub(crate) use sequential::*;
+pub use sequential::*;
 
 /// The sequential stand-ins, named as rayon names them.
 #[cfg(not(feature = "parallel"))]
 mod sequential {
     /// `into_par_iter` on anything iterable.
-    pub(crate) trait IntoParallelIterator: IntoIterator + Sized {
+    pub trait IntoParallelIterator: IntoIterator + Sized {
         /// The iterator itself.
         fn into_par_iter(self) -> Self::IntoIter {
             self.into_iter()
@@ -26,12 +29,12 @@ mod sequential {
     impl<I: IntoIterator> IntoParallelIterator for I {}
 
     /// Runs `a`, then `b`.
-    pub(crate) fn join<A: FnOnce() -> RA, B: FnOnce() -> RB, RA, RB>(a: A, b: B) -> (RA, RB) {
+    pub fn join<A: FnOnce() -> RA, B: FnOnce() -> RB, RA, RB>(a: A, b: B) -> (RA, RB) {
         (a(), b())
     }
 
     /// `par_iter` and `par_chunks` on slices.
-    pub(crate) trait ParallelSlice<T> {
+    pub trait ParallelSlice<T> {
         /// [`slice::iter`].
         fn par_iter(&self) -> std::slice::Iter<'_, T>;
         /// [`slice::chunks`].
@@ -48,7 +51,7 @@ mod sequential {
     }
 
     /// `par_iter_mut`, `par_chunks_mut` and `par_sort_unstable` on slices.
-    pub(crate) trait ParallelSliceMut<T> {
+    pub trait ParallelSliceMut<T> {
         /// [`slice::iter_mut`].
         fn par_iter_mut(&mut self) -> std::slice::IterMut<'_, T>;
         /// [`slice::chunks_mut`].
@@ -75,7 +78,7 @@ mod sequential {
     }
 
     /// rayon's adaptors that the standard iterators lack.
-    pub(crate) trait ParallelIterator: Iterator + Sized {
+    pub trait ParallelIterator: Iterator + Sized {
         /// The iterator itself: there are no splits to size.
         fn with_min_len(self, _min: usize) -> Self {
             self

@@ -16,8 +16,8 @@ use crate::scan::Scan;
 ///
 /// ```
 /// use glam::DVec3;
-/// use hi_geomimage::sampling::densify;
-/// use hi_geomimage::scan::Scan;
+/// use hi_scan::sampling::densify;
+/// use hi_scan::scan::Scan;
 ///
 /// let scan = Scan {
 ///     points: vec![DVec3::ZERO, DVec3::X, DVec3::Y],

@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 
 use glam::DVec3;
-use hi_geomimage::scan::{Location, Scan, ScanFormat, parse_scan, read_scan};
+use hi_scan::scan::{Location, Scan, ScanFormat, parse_scan, read_scan};
 
 /// The tetrahedron used by the hand-written files.
 const TETRA: [[f64; 3]; 4] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];

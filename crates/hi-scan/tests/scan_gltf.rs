@@ -7,7 +7,7 @@
 use std::f64::consts::FRAC_1_SQRT_2;
 
 use glam::DVec3;
-use hi_geomimage::scan::{ScanFormat, parse_scan, read_scan};
+use hi_scan::scan::{ScanFormat, parse_scan, read_scan};
 
 /// Mesh A: a triangle, three positions, no normals, no indices.
 const A: [[f32; 3]; 3] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];

@@ -1,15 +1,12 @@
 // SPDX-License-Identifier: MIT
 //! Closest points on triangle meshes: the hierarchy against brute force over every triangle,
-//! the nearest-vertex query against the same, and the fit's exact measurement against the
-//! closed-form distance to a sphere.
+//! and the nearest-vertex query against the same.
 
 use std::f64::consts::PI;
 
 use glam::DVec3;
-use hi_geomimage::Layout;
-use hi_geomimage::closest::{NearMesh, TriangleBvh};
-use hi_geomimage::distance::closest_point_on_triangle;
-use hi_geomimage::fit::{ErrorMeasure, measure_fit};
+use hi_scan::closest::{NearMesh, TriangleBvh};
+use hi_scan::distance::closest_point_on_triangle;
 
 /// A deterministic pseudo-random sequence in [0, 1).
 fn lcg(seed: &mut u64) -> f64 {
@@ -100,41 +97,4 @@ fn the_nearest_vertex_query_is_exact_near_the_mesh() {
         worst = worst.max(got - want);
     }
     assert!(worst < 1e-12, "exact for points near the mesh: off by {worst}");
-}
-
-#[test]
-fn the_measurements_match_the_sphere() {
-    // Points at known distances from the exact unit sphere: radius 1 + d.
-    let golden = PI * (3.0 - 5f64.sqrt());
-    let n = 4000;
-    let offset = |k: usize| if k.is_multiple_of(2) { 0.01 } else { -0.02 };
-    let points: Vec<DVec3> = (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            DVec3::new(s * phi.cos(), s * phi.sin(), z) * (1.0 + offset(k))
-        })
-        .collect();
-    let sphere = hi_surface::sphere(1.0);
-    let (exact, _) =
-        measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Exact).unwrap();
-    // To the Hermite interpolation's error: h⁴/384 · |p⁗| for h = 1/192 of the parameter,
-    // |p⁗| ≤ (2π)⁴ · 2 for the sphere's u and v: about 2·10⁻⁸.
-    for (k, d) in exact.scan_to_surface.per_point.iter().enumerate() {
-        assert!((d - offset(k).abs()).abs() < 2e-8, "point {k}: {d}");
-    }
-    // The fast measurement is to the mesh of the sphere, inside it by at most the sagitta of
-    // its triangles: r²/2 for their circumradius r ≤ h/√2, h = 2π/192 the grid's spacing.
-    let (fast, mesh) =
-        measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Fast).unwrap();
-    let sagitta = (2.0 * PI / 192.0).powi(2) / 4.0;
-    for (k, d) in fast.scan_to_surface.per_point.iter().enumerate() {
-        assert!((d - offset(k).abs()).abs() <= sagitta, "point {k}: {d}");
-    }
-    // Surface → scan: the mesh's samples are on the sphere, the scan's points at most 0.02
-    // off it and about 0.03 apart: within a spacing of the nearest.
-    assert!(fast.surface_to_scan.max < 0.05, "{}", fast.surface_to_scan.max);
-    assert!(mesh.mesh.n_triangles() > 0);
-    assert!(measure_fit(&sphere, Layout::Sphere, None, &points, &[], ErrorMeasure::Off).is_err());
 }

@@ -9,7 +9,7 @@
 use std::path::Path;
 use std::sync::Mutex;
 
-use hi_geomimage::scan::{ScanFormat, parse_scan};
+use hi_scan::scan::{ScanFormat, parse_scan};
 
 #[test]
 fn the_fuzzing_corpus_replays_without_a_failure() {

@@ -64,7 +64,7 @@ impl TriangleBvh {
     ///
     /// ```
     /// use glam::DVec3;
-    /// use hi_geomimage::closest::TriangleBvh;
+    /// use hi_scan::closest::TriangleBvh;
     ///
     /// let v = [DVec3::ZERO, DVec3::X, DVec3::Y];
     /// let bvh = TriangleBvh::try_new(&v, &[[0, 1, 2]]).unwrap();
@@ -294,7 +294,7 @@ impl NearMesh {
     ///
     /// ```
     /// use glam::DVec3;
-    /// use hi_geomimage::closest::NearMesh;
+    /// use hi_scan::closest::NearMesh;
     ///
     /// let v = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::ONE];
     /// let near = NearMesh::try_new(&v, &[[0, 1, 2], [1, 3, 2]]).unwrap();

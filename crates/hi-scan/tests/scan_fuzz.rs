@@ -3,7 +3,7 @@
 //! random bytes changed, inserted or cut off. (The `fuzz/` folder holds the same targets for
 //! coverage-guided fuzzing with `cargo fuzz`.)
 
-use hi_geomimage::scan::{ScanFormat, parse_scan};
+use hi_scan::scan::{ScanFormat, parse_scan};
 use proptest::prelude::*;
 
 fn config(cases: u32) -> ProptestConfig {

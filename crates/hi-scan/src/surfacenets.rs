@@ -57,7 +57,7 @@ pub struct Grid<'a> {
 ///
 /// ```
 /// use glam::DVec3;
-/// use hi_geomimage::surfacenets::{Grid, surface_nets};
+/// use hi_scan::surfacenets::{Grid, surface_nets};
 ///
 /// // The sphere of radius 1 through its signed distance on a 24³ grid over [−1.5, 1.5]³.
 /// let (n, h) = (24, 3.0 / 23.0);

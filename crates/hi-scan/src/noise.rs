@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! How noisy a scan is: the scatter of its points about the smooth surface they sample,
-//! estimated from the points alone (for the regularisation of [`crate::regularise`]).
+//! estimated from the points alone (for the regularisation of `hi-geomimage`'s geometry images).
 //!
 //! About each of up to 2 000 points spread over the scan, its k = 24 nearest neighbours are
 //! fitted, in the frame of their principal axes, by a quadric height field
@@ -30,7 +30,7 @@ const SAMPLES: usize = 2000;
 ///
 /// ```
 /// use glam::DVec3;
-/// use hi_geomimage::noise::noise_estimate;
+/// use hi_scan::noise::noise_estimate;
 ///
 /// // A sphere of radius 1 sampled cleanly, and with noise ±0.01 along the normal.
 /// let n = 20_000;

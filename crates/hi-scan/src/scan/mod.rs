@@ -25,7 +25,7 @@
 //! # Examples
 //!
 //! ```
-//! use hi_geomimage::scan::{ScanFormat, parse_scan};
+//! use hi_scan::scan::{ScanFormat, parse_scan};
 //!
 //! let pts = b"# Hoppe's format\np 0 0 1\np 1 0 0\nd 0 0 0\np 0 1 nan\n";
 //! let scan = parse_scan(pts, ScanFormat::Pts).unwrap();

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Fuzzes every scan reader: the first byte picks the format, the rest is the file.
-//! Run with `cargo +nightly fuzz run scan` in `crates/hi-geomimage/fuzz`.
+//! Run with `cargo +nightly fuzz run scan` in `crates/hi-scan/fuzz`.
 //!
 //! A campaign on one format sets `HI_FUZZ_FORMAT` to `obj`, `ply-ascii`, `ply-binary`, `off`,
 //! `stl`, `xyz`, `pts`, `gltf` or `glb`: the first byte is then ignored, and the PLY campaigns
@@ -10,7 +10,7 @@
 
 use std::sync::OnceLock;
 
-use hi_geomimage::scan::{ScanFormat, parse_scan};
+use hi_scan::scan::{ScanFormat, parse_scan};
 use libfuzzer_sys::fuzz_target;
 
 /// The format a one-format campaign is fixed to, and the PLY encoding it asks for.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Closing a scan's triangle mesh into a surface of genus 0, ready for a spherical
-//! parameterisation ([`crate::sphereparam`]). The thesis (§5.3) casts rays from a centre and
+//! parameterisation (`hi-geomimage`'s `sphereparam`). The thesis (§5.3) casts rays from a centre and
 //! so needs a star-shaped object; a parameterisation of the surface itself needs instead a
 //! closed, connected, consistently oriented 2-manifold of genus 0, which real scans seldom
 //! are: they have repeated points, holes (the Stanford bunny's base), loose parts, faces
@@ -139,7 +139,7 @@ const fn edge_key(a: u32, b: u32) -> u64 {
 ///
 /// ```
 /// use glam::DVec3;
-/// use hi_geomimage::repair::close_mesh;
+/// use hi_scan::repair::close_mesh;
 ///
 /// // An open box: a cube without its top (10 triangles), listed with one face wound wrongly.
 /// let p = [

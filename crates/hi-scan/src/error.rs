@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+//! The error type of `hi-scan`.
+
+use std::fmt;
+
+use crate::scan::ScanError;
+
+/// Everything that can be wrong with the input of a `hi-scan` function; `Display` gives one
+/// line naming the problem.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A scan could not be read.
+    Read(ScanError),
+    /// Too few points to build anything.
+    TooFewPoints {
+        /// Points given (finite ones).
+        found: usize,
+        /// Points needed.
+        needed: usize,
+    },
+    /// A point or other input has a NaN or infinite coordinate.
+    NonFinite {
+        /// Which input.
+        what: NonFiniteInput,
+    },
+    /// An option is out of its range.
+    InvalidOption {
+        /// Which option.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The accepted range, in words.
+        expected: &'static str,
+    },
+    /// The input is degenerate (all points on a line, a tree that cannot be built, …).
+    Degenerate {
+        /// What is degenerate, in words.
+        what: &'static str,
+    },
+    /// A mesh cannot be made what is asked for (one-sided, of the wrong genus, no usable
+    /// triangle).
+    Topology {
+        /// What is wrong, in words.
+        what: String,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Read(e) => write!(f, "{e}"),
+            Self::TooFewPoints { found, needed } => {
+                write!(f, "too few points: {found} given, at least {needed} needed")
+            }
+            Self::NonFinite { what } => write!(f, "{what} has a NaN or infinite coordinate"),
+            Self::InvalidOption { name, value, expected } => {
+                write!(f, "option {name} = {value} is out of range: {expected}")
+            }
+            Self::Degenerate { what } => write!(f, "degenerate input: {what}"),
+            Self::Topology { what } => write!(f, "{what}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Read(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<ScanError> for Error {
+    fn from(e: ScanError) -> Self {
+        Self::Read(e)
+    }
+}
+
+/// The input of [`Error::NonFinite`]: which point, vertex or value has a NaN or infinite
+/// coordinate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NonFiniteInput {
+    /// Point k of a point set.
+    Point(usize),
+    /// Vertex k of a mesh.
+    Vertex(usize),
+    /// Query point k of a distance computation.
+    Query(usize),
+    /// The origin of a sampled grid.
+    GridOrigin,
+    /// Value k of a sampled grid.
+    GridValue(usize),
+}
+
+impl fmt::Display for NonFiniteInput {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Point(k) => write!(f, "point {k}"),
+            Self::Vertex(k) => write!(f, "vertex {k}"),
+            Self::Query(k) => write!(f, "query {k}"),
+            Self::GridOrigin => f.write_str("the grid's origin"),
+            Self::GridValue(k) => write!(f, "grid value {k}"),
+        }
+    }
+}

@@ -1,0 +1,506 @@
+// SPDX-License-Identifier: MIT
+//! The surface a point set samples, locally: a quadric height field fitted about every point
+//! to its nearest neighbours (weighted least squares over the plane across the point's normal:
+//! the file's when it has one, else the least principal axis of the neighbours, oriented
+//! consistently along a minimum spanning tree of the neighbour graph as Hoppe et al. do in
+//! "Surface reconstruction from unorganized points",
+//! SIGGRAPH 1992, §3.3). On it:
+//!
+//! - [`PointSurface::project`]: the projection of a point onto the sheet facing its way (the
+//!   patches of its nearest points, blended by a Gaussian of their distance);
+//! - [`PointSurface::signed_distance`]: Hoppe et al.'s signed distance, the height over the
+//!   patch of the nearest point;
+//! - [`PointSurface::zero_set`]: the zero set of that signed distance meshed by
+//!   [`crate::surfacenets`] near the points only, so that it ends at the rims of the scan's
+//!   holes rather than running on along tangent planes.
+
+use std::num::NonZero;
+
+use crate::par::*;
+use glam::{DMat3, DVec3};
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
+
+use crate::{Error, NonFiniteInput};
+
+/// A local quadric patch about one point: a frame (origin, tangents, normal) and the height
+/// h(x, y) = c₀ + c₁x + c₂y + c₃x² + c₄xy + c₅y² over its tangent plane, fitted by least
+/// squares to the point's neighbours.
+#[derive(Clone, Copy, Debug)]
+struct Patch {
+    origin: DVec3,
+    e1: DVec3,
+    e2: DVec3,
+    normal: DVec3,
+    c: [f64; 6],
+}
+
+impl Patch {
+    /// The same patch seen from the other side: the normal and second tangent reversed,
+    /// h(x, y) ↦ −h(x, −y).
+    fn flip(&mut self) {
+        self.normal = -self.normal;
+        self.e2 = -self.e2;
+        let c = self.c;
+        self.c = [-c[0], -c[1], c[2], -c[3], c[4], -c[5]];
+    }
+
+    /// The point of the patch over x's foot on the tangent plane.
+    fn project(&self, x: DVec3) -> DVec3 {
+        let d = x - self.origin;
+        let (u, v) = (d.dot(self.e1), d.dot(self.e2));
+        let c = &self.c;
+        let h = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
+        self.origin + self.e1 * u + self.e2 * v + self.normal * h
+    }
+}
+
+/// A point set's local surface: a kd-tree over the points, a quadric patch about each, and
+/// the median spacing of the points (see the module documentation).
+#[derive(Debug)]
+pub struct PointSurface {
+    tree: ImmutableKdTree<f64, 3>,
+    patches: Vec<Patch>,
+    spacing: f64,
+}
+
+/// Patches blended per projection.
+const BLEND: usize = 3;
+
+/// Nearest points examined per projection, for patches that face the texel's way.
+const CANDIDATES: usize = 8;
+
+impl PointSurface {
+    /// The local surface of `points`: a quadric patch about each, fitted to its `neighbours`
+    /// nearest points (at least 8), across its normal in `normals` when they are given (one per
+    /// point, not necessarily of unit length; they also fix the patches' sides), else across
+    /// the least principal axis of its neighbours, the sides then made to agree along a
+    /// minimum spanning tree of the neighbour graph (Hoppe et al. 1992, §3.3), each connected
+    /// part facing +z at its highest point. [`PointSurface::orient_to`] turns them to face as
+    /// a surface wrapped round the points does.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NonFinite`] for a non-finite point; [`Error::TooFewPoints`] for fewer points
+    /// than `neighbours` (or 8); [`Error::InvalidOption`] for a normal count other than the
+    /// point count.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_scan::implicit::PointSurface;
+    ///
+    /// // A grid of points on the plane z = 1: every point projects onto the plane.
+    /// let points: Vec<DVec3> =
+    ///     (0..400).map(|k| DVec3::new((k % 20) as f64, (k / 20) as f64, 1.0)).collect();
+    /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    /// let (q, _) = surface.project(DVec3::new(7.3, 9.6, 3.0), DVec3::Z);
+    /// assert!((q - DVec3::new(7.3, 9.6, 1.0)).length() < 1e-9);
+    /// assert!((surface.spacing() - 1.0).abs() < 1e-12);
+    /// ```
+    pub fn try_new(
+        points: &[DVec3],
+        normals: Option<&[DVec3]>,
+        neighbours: usize,
+    ) -> Result<Self, Error> {
+        if let Some(n) = normals
+            && n.len() != points.len()
+        {
+            return Err(Error::InvalidOption {
+                name: "normals",
+                value: n.len() as f64,
+                expected: "one normal per point",
+            });
+        }
+        if let Some(k) = points.iter().position(|p| !p.is_finite()) {
+            return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
+        }
+        if points.len() < neighbours.max(8) {
+            return Err(Error::TooFewPoints { found: points.len(), needed: neighbours.max(8) });
+        }
+        let mut surface = Self::fitted(points, normals, neighbours)?;
+        if normals.is_none() {
+            surface.orient_by_tree(points, TREE_NEIGHBOURS);
+        }
+        Ok(surface)
+    }
+
+    /// The patches, sides as given or as a first guess (away from the centroid).
+    fn fitted(points: &[DVec3], normals: Option<&[DVec3]>, k: usize) -> Result<Self, Error> {
+        let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(
+            &points.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
+        )
+        .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
+        let k = NonZero::new(k.max(8)).unwrap_or(NonZero::<usize>::MIN);
+        let given = normals.filter(|n| n.len() == points.len());
+        let fitted: Vec<(Patch, f64)> = points
+            .par_iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let near =
+                    tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+                let spacing = near.get(1).map_or(0.0, |n| n.distance.sqrt());
+                let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
+                let normal = given
+                    .and_then(|n| n[i].try_normalize())
+                    .or_else(|| least_axis(&hood))
+                    .unwrap_or(DVec3::Z);
+                (fit_patch(*p, normal, &hood), spacing)
+            })
+            .collect();
+        let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
+        spacings.sort_by(f64::total_cmp);
+        let spacing = spacings[spacings.len() / 2].max(f64::MIN_POSITIVE);
+        let mut patches: Vec<Patch> = fitted.into_iter().map(|f| f.0).collect();
+        if given.is_none() {
+            // A first guess: away from the centroid (corrected by `orient` once a surface is
+            // wrapped round the points).
+            let centre = points.iter().copied().sum::<DVec3>() / points.len().max(1) as f64;
+            for p in &mut patches {
+                if p.normal.dot(p.origin - centre) < 0.0 {
+                    p.flip();
+                }
+            }
+        }
+        Ok(Self { tree, patches, spacing })
+    }
+
+    /// The median distance from a point to its nearest neighbour.
+    #[must_use]
+    pub const fn spacing(&self) -> f64 {
+        self.spacing
+    }
+
+    /// The number of points (and patches).
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.patches.len()
+    }
+
+    /// Whether there are no points (never, for a surface built by
+    /// [`PointSurface::try_new`]).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.patches.is_empty()
+    }
+
+    /// The unit normal of the patch about point `k` (the side it faces).
+    ///
+    /// # Panics
+    ///
+    /// If `k` is not below [`PointSurface::len`].
+    #[must_use]
+    pub fn normal(&self, k: usize) -> DVec3 {
+        self.patches[k].normal
+    }
+
+    /// The projection of x onto the surface (the patches of its nearest points facing the way
+    /// `normal` does, if it is given and any do, blended by a Gaussian of their distance), and
+    /// the distance from x to its nearest point.
+    #[must_use]
+    pub fn project(&self, x: DVec3, normal: DVec3) -> (DVec3, f64) {
+        let k = NonZero::new(CANDIDATES).unwrap_or(NonZero::<usize>::MIN);
+        let near = self.tree.query(&x.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+        let nearest = near.first().map_or(f64::INFINITY, |n| n.distance.sqrt());
+        // Where two sheets lie close (the two sides of a thin part), only the sheet the texel
+        // belongs to.
+        let facing: Vec<_> = near
+            .iter()
+            .filter(|n| self.patches[n.item as usize].normal.dot(normal) > 0.0)
+            .take(BLEND)
+            .collect();
+        let chosen: Vec<_> =
+            if facing.is_empty() { near.iter().take(BLEND).collect() } else { facing };
+        let h2 = chosen.last().map_or(0.0, |n| n.distance).max(self.spacing * self.spacing);
+        let (mut q, mut w) = (DVec3::ZERO, 0.0);
+        for n in chosen {
+            let wi = (-n.distance / h2).exp();
+            q += self.patches[n.item as usize].project(x) * wi;
+            w += wi;
+        }
+        (if w > 0.0 { q / w } else { x }, nearest)
+    }
+
+    /// Orients the patches consistently (Hoppe et al. 1992, §3.3): along a minimum spanning
+    /// tree of the graph joining each point to its `k` nearest, weighted by 1 − |nᵢ·nⱼ| so that
+    /// the orientation passes first between nearly parallel planes, each patch turned to agree
+    /// with the one it is reached from; each connected part starts from its highest point,
+    /// whose normal points up (the top of a closed surface faces +z).
+    fn orient_by_tree(&mut self, points: &[DVec3], k: usize) {
+        use std::cmp::Reverse;
+        use std::collections::BinaryHeap;
+        let n = points.len();
+        let k = NonZero::new(k + 1).unwrap_or(NonZero::<usize>::MIN);
+        let near: Vec<Vec<u32>> = points
+            .par_iter()
+            .map(|p| {
+                self.tree
+                    .query(&p.to_array())
+                    .nearest_n::<SquaredEuclidean<f64>>(k)
+                    .execute()
+                    .iter()
+                    .map(|q| q.item)
+                    .collect()
+            })
+            .collect();
+        // The graph, symmetric.
+        let mut adjacency: Vec<Vec<u32>> = near.clone();
+        for (i, list) in near.iter().enumerate() {
+            for &j in list {
+                if j as usize != i {
+                    adjacency[j as usize].push(i as u32);
+                }
+            }
+        }
+        let mut done = vec![false; n];
+        let mut by_height: Vec<u32> = (0..n as u32).collect();
+        by_height.sort_by(|&a, &b| points[b as usize].z.total_cmp(&points[a as usize].z));
+        // Weights in [0, 1]: their bits order as the numbers do.
+        let mut heap: BinaryHeap<Reverse<(u64, u32, u32)>> = BinaryHeap::new();
+        for root in by_height {
+            if done[root as usize] {
+                continue;
+            }
+            if self.patches[root as usize].normal.z < 0.0 {
+                self.patches[root as usize].flip();
+            }
+            heap.push(Reverse((0, root, root)));
+            while let Some(Reverse((_, from, to))) = heap.pop() {
+                if done[to as usize] {
+                    continue;
+                }
+                done[to as usize] = true;
+                let reference = self.patches[from as usize].normal;
+                if self.patches[to as usize].normal.dot(reference) < 0.0 {
+                    self.patches[to as usize].flip();
+                }
+                let normal = self.patches[to as usize].normal;
+                for &next in &adjacency[to as usize] {
+                    if !done[next as usize] {
+                        let w = 1.0 - normal.dot(self.patches[next as usize].normal).abs();
+                        heap.push(Reverse((w.max(0.0).to_bits(), to, next)));
+                    }
+                }
+            }
+        }
+    }
+
+    /// The signed height of x over the patch of its nearest point (negative inside, once the
+    /// patches face out), and the distance from that point to x's foot on its tangent plane.
+    #[must_use]
+    pub fn signed_distance(&self, x: DVec3) -> (f64, f64) {
+        let nearest =
+            self.tree.query(&x.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
+        let patch = &self.patches[nearest.item as usize];
+        let d = x - patch.origin;
+        let (u, v) = (d.dot(patch.e1), d.dot(patch.e2));
+        let c = &patch.c;
+        let h = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
+        (d.dot(patch.normal) - h, (d - patch.normal * d.dot(patch.normal)).length())
+    }
+
+    /// Turns each patch to face as the nearest of `samples` (points of a surface wrapped round
+    /// the point set, with their outward `normals`, one per sample) does; nothing if there are
+    /// no samples or the counts differ.
+    pub fn orient_to(&mut self, samples: &[DVec3], normals: &[DVec3]) {
+        if samples.len() != normals.len() {
+            return;
+        }
+        let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(
+            &samples.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
+        ) else {
+            return;
+        };
+        self.patches.par_iter_mut().for_each(|patch| {
+            let n = tree
+                .query(&patch.origin.to_array())
+                .nearest_one::<SquaredEuclidean<f64>>()
+                .execute();
+            if patch.normal.dot(normals[n.item as usize]) < 0.0 {
+                patch.flip();
+            }
+        });
+    }
+}
+
+/// The quadric patch about `p` across `normal`, fitted to `hood` (weights falling off with the
+/// distance from p); a plane if the fit is degenerate.
+fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
+    let e1 = normal.any_orthonormal_vector();
+    let e2 = normal.cross(e1);
+    let h2 = hood.iter().map(|q| q.distance_squared(p)).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
+    let mut ata = [[0.0f64; 6]; 6];
+    let mut atb = [0.0f64; 6];
+    for q in hood {
+        let d = *q - p;
+        let (x, y, h) = (d.dot(e1), d.dot(e2), d.dot(normal));
+        let w = (-d.length_squared() / h2).exp();
+        let r = [1.0, x, y, x * x, x * y, y * y];
+        for i in 0..6 {
+            for j in 0..6 {
+                ata[i][j] += w * r[i] * r[j];
+            }
+            atb[i] += w * r[i] * h;
+        }
+    }
+    let c = crate::noise::solve6(ata, atb).unwrap_or([0.0; 6]);
+    Patch { origin: p, e1, e2, normal, c }
+}
+
+/// The unit eigenvector of the least eigenvalue of the points' covariance.
+fn least_axis(hood: &[DVec3]) -> Option<DVec3> {
+    let c = hood.iter().copied().sum::<DVec3>() / hood.len().max(1) as f64;
+    let mut m = DMat3::ZERO;
+    for p in hood {
+        let d = *p - c;
+        m += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
+    }
+    crate::noise::smallest_eigenvector(m)
+}
+
+/// Neighbours joined to each point in the graph [`PointSurface::orient_by_tree`] spans.
+const TREE_NEIGHBOURS: usize = 8;
+
+/// The grid spacing of [`PointSurface::zero_set`] for points as dense as their surface's
+/// detail, in point spacings.
+pub const CELL: f64 = 1.5;
+
+/// Grid cells about each point where the signed distance is evaluated.
+const BAND: usize = 1;
+
+/// How far, in grid cells, a grid node's foot on the nearest point's tangent plane may lie
+/// from that point for the signed distance to count (2 point spacings at [`CELL`]).
+const REACH: f64 = 2.0 / CELL;
+
+impl PointSurface {
+    /// The zero set of the points' signed distance (Hoppe et al. 1992): the height over the
+    /// patch of the nearest point, evaluated on a grid of spacing `cell` within one cell of a
+    /// point, and only where the node's foot on that patch's tangent plane is within 4/3 of a
+    /// cell of the point (so that the zero set ends at the rims of the scan's holes rather than
+    /// running on along tangent planes), meshed by [`crate::surfacenets`]: an open or closed
+    /// mesh whose triangles wind counter-clockwise seen from the side the patches face.
+    /// A cell of [`CELL`] point spacings follows every detail the points resolve; a coarser one
+    /// gives a coarser mesh at less cost.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidOption`] for a cell that is not positive and finite;
+    /// [`Error::Degenerate`] when the grid would have more than
+    /// [`crate::surfacenets::MAX_NODES`] nodes (a cell far finer than the points' extent).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_scan::implicit::{CELL, PointSurface};
+    ///
+    /// // 4000 points on the unit sphere (Fibonacci): a closed mesh near the sphere.
+    /// let points: Vec<DVec3> = (0..4000)
+    ///     .map(|k| {
+    ///         let z = 1.0 - (2 * k + 1) as f64 / 4000.0;
+    ///         let phi = k as f64 * 2.399_963_229_728_653;
+    ///         let s = (1.0 - z * z).sqrt();
+    ///         DVec3::new(s * phi.cos(), s * phi.sin(), z)
+    ///     })
+    ///     .collect();
+    /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    /// let (vertices, triangles) = surface.zero_set(CELL * surface.spacing()).unwrap();
+    /// assert!(vertices.iter().all(|p| (p.length() - 1.0).abs() < 0.01));
+    /// // Closed and of genus 0: V − E + F = 2 with E = 3F/2.
+    /// assert_eq!(vertices.len() as i64 - triangles.len() as i64 / 2, 2);
+    /// ```
+    pub fn zero_set(&self, cell: f64) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Error> {
+        if !(cell.is_finite() && cell > 0.0) {
+            return Err(Error::InvalidOption {
+                name: "zero-set cell",
+                value: cell,
+                expected: "positive and finite",
+            });
+        }
+        let h = cell;
+        let points = || self.patches.iter().map(|p| p.origin);
+        let (lo, hi) = points()
+            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
+        let pad = (BAND + 2) as f64 * h;
+        let origin = lo - DVec3::splat(pad);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "checked below"
+        )]
+        let dims = ((hi - lo + DVec3::splat(2.0 * pad)) / h)
+            .ceil()
+            .to_array()
+            .map(|d| if d.is_finite() && d < 1e6 { d as usize + 1 } else { usize::MAX / 4 });
+        let nodes = dims.iter().try_fold(1usize, |a, &d| a.checked_mul(d)).unwrap_or(usize::MAX);
+        if nodes > crate::surfacenets::MAX_NODES {
+            return Err(Error::Degenerate { what: "the points are too sparse for their extent" });
+        }
+        let [nx, ny, _] = dims;
+        let index = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
+        let mut band = vec![false; nodes];
+        let b = BAND as isize;
+        for p in points() {
+            #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
+            let c = ((p - origin) / h).floor().to_array().map(|x| x as isize);
+            for dk in -b..=b + 1 {
+                for dj in -b..=b + 1 {
+                    for di in -b..=b + 1 {
+                        // The padding keeps these positive.
+                        let at = [c[0] + di, c[1] + dj, c[2] + dk].map(isize::unsigned_abs);
+                        band[index(at[0], at[1], at[2])] = true;
+                    }
+                }
+            }
+        }
+        let node_at = |t: usize| {
+            let (i, j, k) = (t % nx, t / nx % ny, t / nx / ny);
+            origin + DVec3::new(i as f64, j as f64, k as f64) * h
+        };
+        // Known within the band, where the node's foot on the nearest point's tangent plane is
+        // near that point (Hoppe's test: the zero set stops where the points do, at the rims of
+        // holes).
+        let reach = (REACH * h).max(2.0 * self.spacing);
+        let values: Vec<f64> = band
+            .par_iter()
+            .enumerate()
+            .map(|(t, &in_band)| {
+                if !in_band {
+                    return f64::NAN;
+                }
+                let (f, off) = self.signed_distance(node_at(t));
+                if off <= reach { f } else { f64::NAN }
+            })
+            .collect();
+        drop(band);
+        crate::surfacenets::surface_nets(&crate::surfacenets::Grid {
+            origin,
+            spacing: h,
+            dims,
+            values: &values,
+        })
+    }
+}
+
+/// Area-weighted unit vertex normals of a triangle mesh (zero at a vertex whose triangles
+/// cancel or that no triangle uses; a triangle with an index out of range is skipped).
+#[must_use]
+pub fn vertex_normals(positions: &[DVec3], triangles: &[[u32; 3]]) -> Vec<DVec3> {
+    let mut normals = vec![DVec3::ZERO; positions.len()];
+    for t in triangles {
+        // A triangle with an index out of range has no normal to give.
+        let Some([a, b, c]) = t
+            .iter()
+            .map(|&k| positions.get(k as usize).copied())
+            .collect::<Option<Vec<_>>>()
+            .and_then(|v| <[DVec3; 3]>::try_from(v).ok())
+        else {
+            continue;
+        };
+        let n = (b - a).cross(c - a);
+        for &k in t {
+            normals[k as usize] += n;
+        }
+    }
+    normals.iter().map(|n| n.normalize_or_zero()).collect()
+}
