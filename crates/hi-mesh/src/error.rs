@@ -120,6 +120,17 @@ pub enum Error {
         /// The accepted range, in words.
         expected: &'static str,
     },
+    /// A part of a scene of named meshes ([`crate::export::NamedMesh`]) cannot be written: its
+    /// name is empty, repeated, or holds what a mesh file cannot carry, or (OBJ) it lacks the
+    /// vertex colours another part has.
+    InvalidPart {
+        /// Index of the part in the scene.
+        part: usize,
+        /// Its name.
+        name: String,
+        /// What is wrong, in words.
+        problem: String,
+    },
     /// Writing or reading a mesh file failed (see [`crate::export`] and [`crate::PolyMesh::load`]).
     File(crate::export::FileError),
 }
@@ -179,6 +190,9 @@ impl fmt::Display for Error {
             }
             Error::InvalidValue { what, index: None, value, expected } => {
                 write!(f, "{what} = {value} is invalid: expected {expected}")
+            }
+            Error::InvalidPart { part, name, problem } => {
+                write!(f, "scene part {part} ({name:?}): {problem}")
             }
             Error::File(e) => write!(f, "{e}"),
         }

@@ -11,7 +11,7 @@
 //! |---|---|
 //! | indexed triangle meshes with normals, UVs and optional vertex colours | [`TriangleMesh`] |
 //! | values → colours: the thesis's blue → purple ramp, viridis, cool–warm, with a legend | [`ColorMap`], [`ColorLegend`], [`Palette`] |
-//! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files, read-back checks | [`export`] |
+//! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files of a mesh or of a scene of named meshes, read-back checks | [`export`] |
 //! | polygon meshes with half-edge adjacency; subdivision surfaces of §4.5 (Loop, butterfly, √3, Catmull-Clark, Doo-Sabin) | [`PolyMesh`], [`subdivision`] |
 //!
 //! # Examples
@@ -35,11 +35,12 @@
 //!
 //! | feature | default | adds |
 //! |---|---|---|
-//! | `gltf` | yes | glTF 2.0 and GLB: [`export::write_gltf`], [`export::write_glb`], reading them back (the `gltf` crate) |
+//! | `gltf` | yes | glTF 2.0 and GLB: [`export::write_gltf`], [`export::write_glb`], [`export::write_scene_gltf`], [`export::write_scene_glb`], reading them back (the `gltf` crate) |
 //! | `obj` | yes | reading OBJ files back (the `tobj` crate); writing OBJ needs no feature |
 //! | `serde` | no | `Serialize` and `Deserialize` for the meshes, colour maps and reports; a [`TriangleMesh`] is `{"positions", "normals", "uvs", "triangles"}` (plus `"colors"` and `"legend"` when it has them), a [`PolyMesh`] `{"positions", "faces"}`, both read back through their checked constructors |
 //!
-//! Without them [`export::save`] and [`export::load`] still know every extension and answer a
+//! Without them [`export::save`], [`export::load`], [`export::save_scene`] and
+//! [`export::load_scene`] still know every extension and answer a
 //! format left out with [`export::FileError::FeatureDisabled`], naming the feature.
 
 mod colormap;

@@ -13,7 +13,7 @@ use glam::{DMat3, DMat4, DVec2, DVec3, Vec3};
 use json::validation::Checked::Valid;
 use json::validation::USize64;
 
-use super::{GENERATOR, format_error, io_error};
+use super::{GENERATOR, MeshBuilder, NamedMesh, check_scene, format_error, io_error};
 use crate::{Error, TriangleMesh};
 
 /// Largest vertex count written with `u16` indices: 65 535 itself is the primitive-restart
@@ -77,24 +77,38 @@ fn accessor(
     }
 }
 
-/// The glTF document and buffer of `mesh`, with a second primitive of lines along `edges`
-/// when there are any (checked in range by the caller); `uri` is the buffer's URI (`None` for
-/// `.glb`).
-fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encoded {
+/// A part of a glTF scene: its name, its mesh, and the lines drawn over it (pairs of vertex
+/// indices, checked in range by the caller; none for a scene's parts).
+pub(super) type Part<'a> = (NamedMesh<'a>, &'a [[u32; 2]]);
+
+/// The parts of a scene, with no lines.
+pub(super) fn unedged<'a>(parts: &[NamedMesh<'a>]) -> Vec<Part<'a>> {
+    parts.iter().map(|&p| (p, &[][..])).collect()
+}
+
+/// The accessors of one part's mesh.
+struct PartAccessors {
+    attributes:
+        BTreeMap<json::validation::Checked<json::mesh::Semantic>, json::Index<json::Accessor>>,
+    positions: json::Index<json::Accessor>,
+    indices: json::Index<json::Accessor>,
+    /// The lines' indices, when the part has lines.
+    edges: Option<json::Index<json::Accessor>>,
+}
+
+/// Appends the views and accessors of `mesh` (and of `edges` over it, if any) to `root` and
+/// `bin`.
+fn push_part(
+    root: &mut json::Root,
+    buffer: json::Index<json::Buffer>,
+    bin: &mut Vec<u8>,
+    mesh: &TriangleMesh,
+    edges: &[[u32; 2]],
+) -> PartAccessors {
     use json::accessor::{ComponentType, Type};
     use json::buffer::Target;
 
     let n = mesh.n_vertices();
-    let mut root = json::Root::default();
-    root.asset.generator = Some(GENERATOR.to_string());
-    let buffer = root.push(json::Buffer {
-        byte_length: USize64(0), // set below, once the buffer is complete
-        extensions: None,
-        extras: Default::default(),
-        name: None,
-        uri,
-    });
-    let mut bin = Vec::with_capacity(n * 44 + mesh.n_triangles() * 12);
     let mut attributes = BTreeMap::new();
 
     // POSITION, with min and max of the f32 values actually written.
@@ -103,8 +117,8 @@ fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encod
         .iter()
         .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let start = bin.len();
-    push_f32s(&mut bin, positions.iter().flat_map(|p| p.to_array()));
-    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    push_f32s(bin, positions.iter().flat_map(|p| p.to_array()));
+    let view = push_view(root, buffer, bin, start, Target::ArrayBuffer);
     let acc = root.push(accessor(
         view,
         n,
@@ -116,21 +130,21 @@ fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encod
     let positions_accessor = acc;
 
     let start = bin.len();
-    push_f32s(&mut bin, mesh.normals().iter().flat_map(|v| v.as_vec3().to_array()));
-    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    push_f32s(bin, mesh.normals().iter().flat_map(|v| v.as_vec3().to_array()));
+    let view = push_view(root, buffer, bin, start, Target::ArrayBuffer);
     let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
     attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
 
     let start = bin.len();
-    push_f32s(&mut bin, mesh.uvs().iter().flat_map(|t| t.as_vec2().to_array()));
-    let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+    push_f32s(bin, mesh.uvs().iter().flat_map(|t| t.as_vec2().to_array()));
+    let view = push_view(root, buffer, bin, start, Target::ArrayBuffer);
     let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
     attributes.insert(Valid(json::mesh::Semantic::TexCoords(0)), acc);
 
     if let Some(colors) = mesh.colors() {
         let start = bin.len();
-        push_f32s(&mut bin, colors.iter().flatten().copied());
-        let view = push_view(&mut root, buffer, &mut bin, start, Target::ArrayBuffer);
+        push_f32s(bin, colors.iter().flatten().copied());
+        let view = push_view(root, buffer, bin, start, Target::ArrayBuffer);
         let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
         attributes.insert(Valid(json::mesh::Semantic::Colors(0)), acc);
     }
@@ -148,9 +162,9 @@ fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encod
         }
         ComponentType::U32
     };
-    let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
+    let view = push_view(root, buffer, bin, start, Target::ElementArrayBuffer);
     let indices = root.push(accessor(view, 3 * mesh.n_triangles(), component, Type::Scalar, None));
-    let edge_indices = (!edges.is_empty()).then(|| {
+    let edges = (!edges.is_empty()).then(|| {
         let start = bin.len();
         for &k in edges.iter().flatten() {
             if component == ComponentType::U16 {
@@ -160,9 +174,33 @@ fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encod
                 bin.extend_from_slice(&k.to_le_bytes());
             }
         }
-        let view = push_view(&mut root, buffer, &mut bin, start, Target::ElementArrayBuffer);
+        let view = push_view(root, buffer, bin, start, Target::ElementArrayBuffer);
         root.push(accessor(view, 2 * edges.len(), component, Type::Scalar, None))
     });
+    PartAccessors { attributes, positions: positions_accessor, indices, edges }
+}
+
+/// The glTF document and buffer of a scene: one buffer holding every part's data, part after
+/// part; one mesh per part with its own accessors (a primitive of triangles, and one of lines
+/// when the part has lines), one node per part named as its mesh, one scene of all the nodes.
+/// `uri` is the buffer's URI (`None` for `.glb`).
+fn encode(parts: &[Part<'_>], uri: Option<String>) -> Encoded {
+    let mut root = json::Root::default();
+    root.asset.generator = Some(GENERATOR.to_string());
+    let buffer = root.push(json::Buffer {
+        byte_length: USize64(0), // set below, once the buffer is complete
+        extensions: None,
+        extras: Default::default(),
+        name: None,
+        uri,
+    });
+    let size: usize =
+        parts.iter().map(|(p, _)| p.mesh.n_vertices() * 44 + p.mesh.n_triangles() * 12).sum();
+    let mut bin = Vec::with_capacity(size);
+    let accessors: Vec<PartAccessors> = parts
+        .iter()
+        .map(|(part, edges)| push_part(&mut root, buffer, &mut bin, part.mesh, edges))
+        .collect();
     root.buffers[buffer.value()].byte_length = USize64::from(bin.len());
 
     let material = root.push(json::Material {
@@ -176,56 +214,67 @@ fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encod
         },
         ..Default::default()
     });
-    let mut primitives = vec![json::mesh::Primitive {
-        attributes,
-        extensions: None,
-        extras: Default::default(),
-        indices: Some(indices),
-        material: Some(material),
-        mode: Valid(json::mesh::Mode::Triangles),
-        targets: None,
-    }];
-    if let Some(edge_indices) = edge_indices {
-        let dark = root.push(json::Material {
-            name: Some("edges".to_string()),
-            pbr_metallic_roughness: json::material::PbrMetallicRoughness {
-                base_color_factor: json::material::PbrBaseColorFactor([0.02, 0.02, 0.02, 1.0]),
-                metallic_factor: json::material::StrengthFactor(0.0),
-                ..Default::default()
-            },
-            ..Default::default()
-        });
-        primitives.push(json::mesh::Primitive {
-            attributes: BTreeMap::from([(
-                Valid(json::mesh::Semantic::Positions),
-                positions_accessor,
-            )]),
+    let mut dark = None;
+    let mut meshes = Vec::with_capacity(parts.len());
+    for ((part, _), acc) in parts.iter().zip(accessors) {
+        let mut primitives = vec![json::mesh::Primitive {
+            attributes: acc.attributes,
             extensions: None,
             extras: Default::default(),
-            indices: Some(edge_indices),
-            material: Some(dark),
-            mode: Valid(json::mesh::Mode::Lines),
+            indices: Some(acc.indices),
+            material: Some(material),
+            mode: Valid(json::mesh::Mode::Triangles),
             targets: None,
+        }];
+        if let Some(edge_indices) = acc.edges {
+            let dark = *dark.get_or_insert_with(|| {
+                root.push(json::Material {
+                    name: Some("edges".to_string()),
+                    pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+                        base_color_factor: json::material::PbrBaseColorFactor([
+                            0.02, 0.02, 0.02, 1.0,
+                        ]),
+                        metallic_factor: json::material::StrengthFactor(0.0),
+                        ..Default::default()
+                    },
+                    ..Default::default()
+                })
+            });
+            primitives.push(json::mesh::Primitive {
+                attributes: BTreeMap::from([(
+                    Valid(json::mesh::Semantic::Positions),
+                    acc.positions,
+                )]),
+                extensions: None,
+                extras: Default::default(),
+                indices: Some(edge_indices),
+                material: Some(dark),
+                mode: Valid(json::mesh::Mode::Lines),
+                targets: None,
+            });
+        }
+        let mesh_index = root.push(json::Mesh {
+            extensions: None,
+            extras: Default::default(),
+            name: Some(part.name.to_string()),
+            primitives,
+            weights: None,
         });
+        meshes.push(mesh_index);
     }
-    let mesh_index = root.push(json::Mesh {
-        extensions: None,
-        extras: Default::default(),
-        name: Some("harmonic surface".to_string()),
-        primitives,
-        weights: None,
-    });
-    let node = root.push(json::Node {
-        mesh: Some(mesh_index),
-        name: Some("harmonic surface".to_string()),
-        ..Default::default()
-    });
-    let scene = root.push(json::Scene {
-        extensions: None,
-        extras: Default::default(),
-        name: None,
-        nodes: vec![node],
-    });
+    let nodes = meshes
+        .into_iter()
+        .zip(parts)
+        .map(|(mesh, (part, _))| {
+            root.push(json::Node {
+                mesh: Some(mesh),
+                name: Some(part.name.to_string()),
+                ..Default::default()
+            })
+        })
+        .collect();
+    let scene =
+        root.push(json::Scene { extensions: None, extras: Default::default(), name: None, nodes });
     root.scene = Some(scene);
     Encoded { root, bin }
 }
@@ -258,11 +307,61 @@ fn encode(mesh: &TriangleMesh, edges: &[[u32; 2]], uri: Option<String>) -> Encod
 /// ```
 pub fn write_gltf<W: Write, B: Write>(
     mesh: &TriangleMesh,
+    gltf: W,
+    bin: B,
+    bin_uri: &str,
+) -> Result<(), Error> {
+    write_gltf_parts(&[(NamedMesh::new(SINGLE_NAME, mesh), &[])], gltf, bin, bin_uri)
+}
+
+/// Writes the parts of a scene as glTF 2.0 JSON to `gltf` and their one binary buffer to
+/// `bin`, as [`write_gltf`] writes one mesh: one mesh per part with its own accessors, one node
+/// per part named as its mesh, one scene of all the nodes, in the order of `parts`.
+///
+/// # Errors
+///
+/// Those of [`check_part_names`](super::check_part_names) (no parts, a name empty, repeated
+/// or not printable on one line); [`super::FileError::Io`] when writing fails.
+///
+/// # Examples
+///
+/// ```
+/// use hi_mesh::export::{self, NamedMesh};
+/// use hi_mesh::PolyMesh;
+///
+/// let (cube, octahedron) =
+///     (PolyMesh::cube().to_triangle_mesh()?, PolyMesh::octahedron().to_triangle_mesh()?);
+/// let parts = [NamedMesh::new("cube", &cube), NamedMesh::new("octahedron", &octahedron)];
+/// let (mut json, mut bin) = (Vec::new(), Vec::new());
+/// export::write_scene_gltf(&parts, &mut json, &mut bin, "shapes.bin")?;
+/// let doc = gltf::Gltf::from_slice(&json).unwrap();
+/// let names: Vec<_> = doc.nodes().map(|n| n.name().unwrap()).collect();
+/// assert_eq!(names, ["cube", "octahedron"]);
+/// assert_eq!(doc.buffers().count(), 1);
+/// # Ok::<(), hi_mesh::Error>(())
+/// ```
+pub fn write_scene_gltf<W: Write, B: Write>(
+    parts: &[NamedMesh<'_>],
+    gltf: W,
+    bin: B,
+    bin_uri: &str,
+) -> Result<(), Error> {
+    check_scene(parts)?;
+    write_gltf_parts(&unedged(parts), gltf, bin, bin_uri)
+}
+
+/// The mesh and node name of a single mesh written as glTF.
+const SINGLE_NAME: &str = super::SINGLE_GLTF_NAME;
+
+/// Writes `parts` (names not checked) as glTF JSON and its buffer: the one writer behind
+/// [`write_gltf`], [`write_scene_gltf`] and [`super::save`].
+pub(super) fn write_gltf_parts<W: Write, B: Write>(
+    parts: &[Part<'_>],
     mut gltf: W,
     mut bin: B,
     bin_uri: &str,
 ) -> Result<(), Error> {
-    let Encoded { root, bin: data } = encode(mesh, &[], Some(bin_uri.to_string()));
+    let Encoded { root, bin: data } = encode(parts, Some(bin_uri.to_string()));
     let text = json::serialize::to_vec_pretty(&root)
         .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
     gltf.write_all(&text).and_then(|()| gltf.flush()).map_err(|e| io_error(&e, None))?;
@@ -326,7 +425,7 @@ pub fn write_glb<W: Write>(mesh: &TriangleMesh, writer: W) -> Result<(), Error> 
 pub fn write_glb_with_edges<W: Write>(
     mesh: &TriangleMesh,
     edges: &[[u32; 2]],
-    mut writer: W,
+    writer: W,
 ) -> Result<(), Error> {
     if let Some(&bad) = edges.iter().flatten().find(|&&k| k as usize >= mesh.n_vertices()) {
         return Err(Error::InvalidCount {
@@ -335,7 +434,45 @@ pub fn write_glb_with_edges<W: Write>(
             expected: "less than the number of vertices",
         });
     }
-    let Encoded { root, bin } = encode(mesh, edges, None);
+    write_glb_parts(&[(NamedMesh::new(SINGLE_NAME, mesh), edges)], writer)
+}
+
+/// Writes the parts of a scene as binary glTF 2.0 (`.glb`), laid out as [`write_scene_gltf`]
+/// lays them out.
+///
+/// # Errors
+///
+/// Those of [`check_part_names`](super::check_part_names) (no parts, a name empty, repeated
+/// or not printable on one line); as [`write_glb`].
+///
+/// # Examples
+///
+/// ```
+/// use hi_mesh::export::{self, NamedMesh};
+/// use hi_mesh::PolyMesh;
+///
+/// let cube = PolyMesh::cube().to_triangle_mesh()?;
+/// let mut glb = Vec::new();
+/// let parts = [NamedMesh::new("pot", &cube), NamedMesh::new("lid", &cube)];
+/// export::write_scene_glb(&parts, &mut glb)?;
+/// let (doc, _, _) = gltf::import_slice(&glb).unwrap();
+/// let names: Vec<_> = doc.meshes().map(|m| m.name().unwrap()).collect();
+/// assert_eq!(names, ["pot", "lid"]);
+/// // A name must be unique: the error says which part repeats which.
+/// let err = export::write_scene_glb(&[NamedMesh::new("lid", &cube); 2], Vec::new()).unwrap_err();
+/// let message = "scene part 1 (\"lid\"): its name is that of part 0";
+/// assert!(err.to_string().starts_with(message), "{err}");
+/// # Ok::<(), hi_mesh::Error>(())
+/// ```
+pub fn write_scene_glb<W: Write>(parts: &[NamedMesh<'_>], writer: W) -> Result<(), Error> {
+    check_scene(parts)?;
+    write_glb_parts(&unedged(parts), writer)
+}
+
+/// Writes `parts` (names and edges not checked) as GLB: the one writer behind [`write_glb`],
+/// [`write_glb_with_edges`], [`write_scene_glb`] and [`super::save`].
+pub(super) fn write_glb_parts<W: Write>(parts: &[Part<'_>], mut writer: W) -> Result<(), Error> {
+    let Encoded { root, bin } = encode(parts, None);
     let text = json::serialize::to_vec(&root)
         .map_err(|e| format_error(format!("glTF JSON: {e}"), None))?;
     // Header, JSON chunk and BIN chunk, each chunk padded to 4 bytes.
@@ -600,13 +737,21 @@ fn gltf_error(e: ::gltf::Error, path: Option<&Path>) -> Error {
 pub fn placed_meshes(
     document: &::gltf::Document,
 ) -> Result<Vec<(::gltf::Mesh<'_>, DMat4)>, String> {
+    Ok(placed_nodes(document)?.into_iter().map(|(_, mesh, world)| (mesh, world)).collect())
+}
+
+/// The meshes a glTF document draws as [`placed_meshes`] lists them, each with the node that
+/// places it (`None` for the meshes of a document with no scene).
+type Placed<'a> = (Option<::gltf::Node<'a>>, ::gltf::Mesh<'a>, DMat4);
+
+fn placed_nodes(document: &::gltf::Document) -> Result<Vec<Placed<'_>>, String> {
     let mut instances = Vec::new();
     let scenes: Vec<::gltf::Scene<'_>> = match document.default_scene() {
         Some(s) => vec![s],
         None => document.scenes().collect(),
     };
     if scenes.is_empty() {
-        instances.extend(document.meshes().map(|m| (m, DMat4::IDENTITY)));
+        instances.extend(document.meshes().map(|m| (None, m, DMat4::IDENTITY)));
     }
     for scene in scenes {
         // Depth first in document order: the stack holds siblings last first.
@@ -620,7 +765,7 @@ pub fn placed_meshes(
             let local = node.transform().matrix().map(|c| c.map(f64::from));
             let world = parent * DMat4::from_cols_array_2d(&local);
             if let Some(mesh) = node.mesh() {
-                instances.push((mesh, world));
+                instances.push((Some(node.clone()), mesh, world));
             }
             let first = stack.len();
             stack.extend(node.children().map(|c| (c, world, depth + 1)));
@@ -677,122 +822,148 @@ pub fn primitive_triangles(mode: ::gltf::mesh::Mode, indices: &[u32]) -> Option<
 /// primitive without `TEXCOORD_0` gets UV (0, 0). Vertex colours are kept when every primitive
 /// has them.
 pub(super) fn read_gltf(path: &Path) -> Result<TriangleMesh, Error> {
+    let (document, buffers) = open(path)?;
+    let mut all = MeshBuilder::default();
+    for (_, mesh, world) in &placed_nodes(&document).map_err(|e| format_error(e, Some(path)))? {
+        append_mesh(mesh, world, &buffers, &mut all)?;
+    }
+    if all.is_empty() {
+        return Err(format_error("glTF file has no triangles", None));
+    }
+    all.finish()
+}
+
+/// Reads a `.gltf` or `.glb` file as [`read_gltf`] does, one mesh per node that places a mesh
+/// with triangles, in the order [`placed_meshes`] lists them, each named by its node, or by
+/// its mesh when the node has no name, or `mesh_k` for the k-th mesh of the file when neither
+/// has one.
+pub(super) fn read_gltf_scene(path: &Path) -> Result<Vec<(String, TriangleMesh)>, Error> {
+    let (document, buffers) = open(path)?;
+    let mut parts = Vec::new();
+    for (node, mesh, world) in &placed_nodes(&document).map_err(|e| format_error(e, Some(path)))? {
+        let mut part = MeshBuilder::default();
+        append_mesh(mesh, world, &buffers, &mut part)?;
+        if part.is_empty() {
+            continue;
+        }
+        let name = [node.as_ref().and_then(::gltf::Node::name), mesh.name()]
+            .into_iter()
+            .flatten()
+            .find(|n| !n.is_empty())
+            .map_or_else(|| format!("mesh_{}", mesh.index()), str::to_owned);
+        parts.push((name, part.finish()?));
+    }
+    if parts.is_empty() {
+        return Err(format_error("glTF file has no triangles", None));
+    }
+    Ok(parts)
+}
+
+/// The document of a `.gltf` or `.glb` file and its buffers' data.
+fn open(path: &Path) -> Result<(::gltf::Document, Vec<::gltf::buffer::Data>), Error> {
     let bytes = std::fs::read(path).map_err(|e| io_error(&e, Some(path)))?;
     let ::gltf::Gltf { document, blob } =
         parse_gltf(&bytes).map_err(|e| super::at_path(e, path))?;
     let buffers = ::gltf::import_buffers(&document, path.parent(), blob)
         .map_err(|e| gltf_error(e, Some(path)))?;
-    let (mut positions, mut normals, mut uvs, mut colors, mut triangles) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    let mut all_colored = true;
-    let instances = placed_meshes(&document).map_err(|e| format_error(e, Some(path)))?;
-    for (mesh, world) in &instances {
-        let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
-        let mirrors = world.determinant() < 0.0;
-        for primitive in mesh.primitives() {
-            use ::gltf::mesh::Mode;
-            // Points and lines (an edge overlay, as `write_glb_with_edges` writes) bound no
-            // surface: the triangle mesh is the other primitives.
-            if !matches!(
-                primitive.mode(),
-                Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
-            ) {
-                continue;
-            }
-            if let Some(problem) = accessor_problem(&primitive) {
-                return Err(format_error(format!("glTF: {problem}"), Some(path)));
-            }
-            let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
-            let p: Vec<DVec3> = reader
-                .read_positions()
-                .ok_or_else(|| format_error("a primitive has no POSITION", None))?
-                .map(|p| world.transform_point3(Vec3::from(p).as_dvec3()))
-                .collect();
-            let n = p.len();
-            let nrm: Option<Vec<DVec3>> = reader.read_normals().map(|it| {
-                it.map(|v| {
-                    let n = Vec3::from(v).as_dvec3();
-                    // Untransformed normals are kept bit for bit (a written file reads back
-                    // exactly); transformed ones are unit again.
-                    if *world == DMat4::IDENTITY {
-                        n
-                    } else {
-                        (normal_matrix * n).normalize_or(DVec3::Z)
-                    }
-                })
-                .collect()
-            });
-            let uv: Vec<DVec2> = match reader.read_tex_coords(0) {
-                Some(t) => t.into_f32().map(|t| glam::Vec2::from(t).as_dvec2()).collect(),
-                None => vec![DVec2::ZERO; n],
-            };
-            let col: Option<Vec<[f32; 3]>> =
-                reader.read_colors(0).map(|c| c.into_rgb_f32().collect());
-            if nrm.as_ref().is_some_and(|v| v.len() != n)
-                || uv.len() != n
-                || col.as_ref().is_some_and(|c| c.len() != n)
-            {
-                return Err(format_error("attribute counts differ within a primitive", None));
-            }
-            let idx: Vec<u32> = match reader.read_indices() {
-                Some(i) => i.into_u32().collect(),
-                None => (0..u32::try_from(n)
-                    .map_err(|_| format_error("too many vertices", None))?)
-                    .collect(),
-            };
-            if idx.iter().any(|&k| k as usize >= n) {
-                return Err(format_error("an index is beyond the primitive's vertices", None));
-            }
-            if primitive.mode() == Mode::Triangles && !idx.len().is_multiple_of(3) {
-                return Err(format_error("index count is not a multiple of 3", None));
-            }
-            let mut tris = primitive_triangles(primitive.mode(), &idx).unwrap_or_default();
-            if mirrors {
-                tris.iter_mut().for_each(|t| t.swap(1, 2));
-            }
-            let base = u32::try_from(positions.len())
-                .map_err(|_| format_error("too many vertices", None))?;
-            match (nrm, &col) {
-                (Some(nrm), _) => {
-                    positions.extend(p);
-                    normals.extend(nrm);
-                    uvs.extend(uv);
-                    match col {
-                        Some(c) => colors.extend(c),
-                        None => all_colored = false,
-                    }
-                    triangles.extend(tris.iter().map(|t| t.map(|k| k.saturating_add(base))));
+    Ok((document, buffers))
+}
+
+/// Appends the triangle primitives of `mesh`, placed by `world`, to `out`.
+fn append_mesh(
+    mesh: &::gltf::Mesh<'_>,
+    world: &DMat4,
+    buffers: &[::gltf::buffer::Data],
+    out: &mut MeshBuilder,
+) -> Result<(), Error> {
+    let normal_matrix = DMat3::from_mat4(*world).inverse().transpose();
+    let mirrors = world.determinant() < 0.0;
+    for primitive in mesh.primitives() {
+        use ::gltf::mesh::Mode;
+        // Points and lines (an edge overlay, as `write_glb_with_edges` writes) bound no
+        // surface: the triangle mesh is the other primitives.
+        if !matches!(primitive.mode(), Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
+            continue;
+        }
+        if let Some(problem) = accessor_problem(&primitive) {
+            return Err(format_error(format!("glTF: {problem}"), None));
+        }
+        let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+        let p: Vec<DVec3> = reader
+            .read_positions()
+            .ok_or_else(|| format_error("a primitive has no POSITION", None))?
+            .map(|p| world.transform_point3(Vec3::from(p).as_dvec3()))
+            .collect();
+        let n = p.len();
+        let nrm: Option<Vec<DVec3>> = reader.read_normals().map(|it| {
+            it.map(|v| {
+                let n = Vec3::from(v).as_dvec3();
+                // Untransformed normals are kept bit for bit (a written file reads back
+                // exactly); transformed ones are unit again.
+                if *world == DMat4::IDENTITY {
+                    n
+                } else {
+                    (normal_matrix * n).normalize_or(DVec3::Z)
                 }
-                (None, _) => {
-                    // Flat normals: every corner its own vertex with its triangle's normal.
-                    for (f, t) in tris.iter().enumerate() {
-                        let [a, b, c] = t.map(|k| p[k as usize]);
-                        let normal = (b - a).cross(c - a).normalize_or(DVec3::Z);
-                        for &k in t {
-                            positions.push(p[k as usize]);
-                            normals.push(normal);
-                            uvs.push(uv[k as usize]);
-                            if let Some(c) = &col {
-                                colors.push(c[k as usize]);
-                            }
+            })
+            .collect()
+        });
+        let uv: Vec<DVec2> = match reader.read_tex_coords(0) {
+            Some(t) => t.into_f32().map(|t| glam::Vec2::from(t).as_dvec2()).collect(),
+            None => vec![DVec2::ZERO; n],
+        };
+        let col: Option<Vec<[f32; 3]>> = reader.read_colors(0).map(|c| c.into_rgb_f32().collect());
+        if nrm.as_ref().is_some_and(|v| v.len() != n)
+            || uv.len() != n
+            || col.as_ref().is_some_and(|c| c.len() != n)
+        {
+            return Err(format_error("attribute counts differ within a primitive", None));
+        }
+        let idx: Vec<u32> = match reader.read_indices() {
+            Some(i) => i.into_u32().collect(),
+            None => (0..u32::try_from(n).map_err(|_| format_error("too many vertices", None))?)
+                .collect(),
+        };
+        if idx.iter().any(|&k| k as usize >= n) {
+            return Err(format_error("an index is beyond the primitive's vertices", None));
+        }
+        if primitive.mode() == Mode::Triangles && !idx.len().is_multiple_of(3) {
+            return Err(format_error("index count is not a multiple of 3", None));
+        }
+        let mut tris = primitive_triangles(primitive.mode(), &idx).unwrap_or_default();
+        if mirrors {
+            tris.iter_mut().for_each(|t| t.swap(1, 2));
+        }
+        let base = out.next_vertex()?;
+        if col.is_none() {
+            out.uncolored = true;
+        }
+        match nrm {
+            Some(nrm) => {
+                out.positions.extend(p);
+                out.normals.extend(nrm);
+                out.uvs.extend(uv);
+                out.colors.extend(col.into_iter().flatten());
+                out.triangles.extend(tris.iter().map(|t| t.map(|k| k.saturating_add(base))));
+            }
+            None => {
+                // Flat normals: every corner its own vertex with its triangle's normal.
+                for (f, t) in tris.iter().enumerate() {
+                    let [a, b, c] = t.map(|k| p[k as usize]);
+                    let normal = (b - a).cross(c - a).normalize_or(DVec3::Z);
+                    for &k in t {
+                        out.positions.push(p[k as usize]);
+                        out.normals.push(normal);
+                        out.uvs.push(uv[k as usize]);
+                        if let Some(c) = &col {
+                            out.colors.push(c[k as usize]);
                         }
-                        let first = base.saturating_add(u32::try_from(3 * f).unwrap_or(u32::MAX));
-                        triangles.push([first, first.saturating_add(1), first.saturating_add(2)]);
                     }
-                    if col.is_none() {
-                        all_colored = false;
-                    }
+                    let first = base.saturating_add(u32::try_from(3 * f).unwrap_or(u32::MAX));
+                    out.triangles.push([first, first.saturating_add(1), first.saturating_add(2)]);
                 }
             }
         }
     }
-    if triangles.is_empty() {
-        return Err(format_error("glTF file has no triangles", None));
-    }
-    let mesh = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
-    if all_colored && colors.len() == mesh.n_vertices() {
-        mesh.try_with_colors(colors)
-    } else {
-        Ok(mesh)
-    }
+    Ok(())
 }

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
-//! Mesh files: writing a [`TriangleMesh`] as Wavefront OBJ or glTF 2.0 (`.gltf` + `.bin`, or
-//! `.glb`) and reading such files back, so that "most computer graphics software will be able
-//! to import the surface" (Hardy 2005, §1.4) in polygonal form (§5.5).
+//! Mesh files: writing a [`TriangleMesh`], or a scene of several named meshes, as Wavefront
+//! OBJ or glTF 2.0 (`.gltf` + `.bin`, or `.glb`) and reading such files back, so that "most
+//! computer graphics software will be able to import the surface" (Hardy 2005, §1.4) in
+//! polygonal form (§5.5).
 //!
 //! | what | where |
 //! |---|---|
 //! | by file extension: `.obj`, `.gltf` (+ `.bin` beside it), `.glb` | [`save`], [`load`] |
 //! | to any writer | [`write_obj`], [`write_gltf`], [`write_glb`], [`write_glb_with_edges`] |
 //! | read back, compare with the mesh in memory | [`read_back`], [`compare`], [`ReadBackReport`] |
+//! | a scene of named parts (one glTF node, one OBJ object each), by file extension | [`NamedMesh`], [`save_scene`], [`load_scene`], [`check_part_names`] |
+//! | a scene to any writer | [`write_scene_obj`], [`write_scene_gltf`], [`write_scene_glb`] |
+//! | read a scene back, compare part by part | [`read_back_scene`], [`compare_scene`], [`SceneReadBackReport`] |
 //!
 //! **What is written.** Every value is rounded once from the mesh's f64 to f32. glTF: one
 //! buffer with tightly packed, 4-byte aligned views of `POSITION` (with the min and max of the
@@ -18,6 +22,12 @@
 //! colours, the convention of `MeshLab` and Blender), `vt s (1 − t)` (OBJ's t runs up the
 //! image), `vn`, and `f a/a/a b/b/b c/c/c`.
 //!
+//! **Scenes.** A scene is a slice of [`NamedMesh`] parts, each written as a mesh alone is, in
+//! one file: glTF has one buffer, then per part its own accessors, a mesh and a node of the
+//! part's name, all in one scene; OBJ has an object (`o name`) per part. A single mesh is
+//! written by the same code, as a scene of one part. Parts may be closed or open; nothing
+//! is assumed of their shape. [`load_scene`] reads one named mesh per glTF node or OBJ object.
+//!
 //! **Reading back** uses the `gltf` and `tobj` crates. glTF returns the mesh exactly (to the f32
 //! written); OBJ returns the same triangles with the vertices renumbered (`tobj` orders them by
 //! first use), UVs to 6·10⁻⁸ (one rounding of 1 − t) and colours to about 10⁻⁷ (the sRGB
@@ -26,6 +36,7 @@
 #[cfg(feature = "gltf")]
 mod gltf;
 mod obj;
+mod scene;
 
 use std::fmt;
 use std::fs::File;
@@ -35,9 +46,14 @@ use std::path::{Path, PathBuf};
 #[cfg(feature = "gltf")]
 pub use self::gltf::{
     accessor_problem, parse_gltf, placed_meshes, primitive_triangles, write_glb,
-    write_glb_with_edges, write_gltf,
+    write_glb_with_edges, write_gltf, write_scene_glb, write_scene_gltf,
 };
-pub use self::obj::write_obj;
+pub use self::obj::{write_obj, write_scene_obj};
+use self::scene::check_scene;
+pub use self::scene::{
+    NamedMesh, SceneReadBackReport, check_part_names, compare_scene, load_scene, read_back_scene,
+    save_scene,
+};
 use crate::{Error, TriangleMesh};
 
 /// The `asset.generator` of glTF files and the first comment of OBJ files.
@@ -195,7 +211,8 @@ fn create(path: &Path) -> Result<BufWriter<File>, Error> {
 
 /// Writes `mesh` to `path` in the format its extension names, and returns the files written:
 /// for `.gltf` the JSON file and its buffer, the same path with extension `.bin` (replacing
-/// any file there).
+/// any file there). The file is that of a scene ([`save_scene`]) of one part, named
+/// `harmonic surface` in glTF and `harmonic_surface` in OBJ.
 ///
 /// # Errors
 ///
@@ -217,18 +234,32 @@ fn create(path: &Path) -> Result<BufWriter<File>, Error> {
 /// ```
 pub fn save(mesh: &TriangleMesh, path: impl AsRef<Path>) -> Result<Vec<PathBuf>, Error> {
     let path = path.as_ref();
+    let name = match MeshFormat::from_path(path)? {
+        MeshFormat::Obj => obj::SINGLE_NAME,
+        MeshFormat::Gltf | MeshFormat::Glb => SINGLE_GLTF_NAME,
+    };
+    save_parts(&[NamedMesh::new(name, mesh)], path)
+}
+
+/// The mesh and node name of a single mesh written as glTF.
+const SINGLE_GLTF_NAME: &str = "harmonic surface";
+
+/// Writes `parts` (names not checked) to `path` in the format its extension names: the one
+/// writer of files behind [`save`] and [`save_scene`].
+fn save_parts(parts: &[NamedMesh<'_>], path: &Path) -> Result<Vec<PathBuf>, Error> {
     let finish = |mut w: BufWriter<File>, p: &Path| w.flush().map_err(|e| io_error(&e, Some(p)));
     match MeshFormat::from_path(path)? {
         MeshFormat::Obj => {
+            obj::check_colors(parts)?; // before the file is created
             let mut w = create(path)?;
-            write_obj(mesh, &mut w).map_err(|e| at_path(e, path))?;
+            obj::write_parts(parts, &mut w).map_err(|e| at_path(e, path))?;
             finish(w, path)?;
             Ok(vec![path.to_path_buf()])
         }
         #[cfg(feature = "gltf")]
         MeshFormat::Glb => {
             let mut w = create(path)?;
-            write_glb(mesh, &mut w).map_err(|e| at_path(e, path))?;
+            gltf::write_glb_parts(&gltf::unedged(parts), &mut w).map_err(|e| at_path(e, path))?;
             finish(w, path)?;
             Ok(vec![path.to_path_buf()])
         }
@@ -244,16 +275,21 @@ pub fn save(mesh: &TriangleMesh, path: impl AsRef<Path>) -> Result<Vec<PathBuf>,
             let uri = percent_encode(bin_name);
             let mut w = create(path)?;
             let mut b = create(&bin_path)?;
-            write_gltf(mesh, &mut w, &mut b, &uri).map_err(|e| at_path(e, path))?;
+            gltf::write_gltf_parts(&gltf::unedged(parts), &mut w, &mut b, &uri)
+                .map_err(|e| at_path(e, path))?;
             finish(w, path)?;
             finish(b, &bin_path)?;
             Ok(vec![path.to_path_buf(), bin_path])
         }
         #[cfg(not(feature = "gltf"))]
-        MeshFormat::Gltf | MeshFormat::Glb => {
-            Err(FileError::FeatureDisabled { path: path.to_path_buf(), feature: "gltf" }.into())
-        }
+        MeshFormat::Gltf | MeshFormat::Glb => Err(feature_disabled(path, "gltf")),
     }
+}
+
+/// [`FileError::FeatureDisabled`] for `path`.
+#[cfg(not(all(feature = "gltf", feature = "obj")))]
+fn feature_disabled(path: &Path, feature: &'static str) -> Error {
+    FileError::FeatureDisabled { path: path.to_path_buf(), feature }.into()
 }
 
 /// A file name as a relative URI: every byte but ASCII letters, digits and `-._~` as `%XX`.
@@ -289,15 +325,48 @@ pub fn load(path: impl AsRef<Path>) -> Result<TriangleMesh, Error> {
         #[cfg(feature = "gltf")]
         MeshFormat::Gltf | MeshFormat::Glb => gltf::read_gltf(path),
         #[cfg(not(feature = "obj"))]
-        MeshFormat::Obj => {
-            Err(FileError::FeatureDisabled { path: path.to_path_buf(), feature: "obj" }.into())
-        }
+        MeshFormat::Obj => Err(feature_disabled(path, "obj")),
         #[cfg(not(feature = "gltf"))]
-        MeshFormat::Gltf | MeshFormat::Glb => {
-            Err(FileError::FeatureDisabled { path: path.to_path_buf(), feature: "gltf" }.into())
-        }
+        MeshFormat::Gltf | MeshFormat::Glb => Err(feature_disabled(path, "gltf")),
     };
     mesh.map_err(|e| at_path(e, path))
+}
+
+/// A triangle mesh gathered from a file, one object or primitive after another, checked by
+/// [`TriangleMesh::try_new`] at the end.
+#[cfg(any(feature = "gltf", feature = "obj"))]
+#[derive(Debug, Default)]
+struct MeshBuilder {
+    positions: Vec<glam::DVec3>,
+    normals: Vec<glam::DVec3>,
+    uvs: Vec<glam::DVec2>,
+    colors: Vec<[f32; 3]>,
+    triangles: Vec<[u32; 3]>,
+    /// Some object or primitive had no colours: the mesh gets none.
+    uncolored: bool,
+}
+
+#[cfg(any(feature = "gltf", feature = "obj"))]
+impl MeshBuilder {
+    /// The index the next vertex gets.
+    fn next_vertex(&self) -> Result<u32, Error> {
+        u32::try_from(self.positions.len()).map_err(|_| format_error("too many vertices", None))
+    }
+
+    /// No triangle yet.
+    fn is_empty(&self) -> bool {
+        self.triangles.is_empty()
+    }
+
+    /// The mesh, with its colours when every part gathered had them.
+    fn finish(self) -> Result<TriangleMesh, Error> {
+        let mesh = TriangleMesh::try_new(self.positions, self.normals, self.uvs, self.triangles)?;
+        if !self.uncolored && !self.colors.is_empty() && self.colors.len() == mesh.n_vertices() {
+            mesh.try_with_colors(self.colors)
+        } else {
+            Ok(mesh)
+        }
+    }
 }
 
 /// Whether two meshes have the same triangles over the same vertices.
