@@ -486,6 +486,13 @@ pub(crate) struct FitArgs {
     /// (default 1e-4 of the diagonal of the image's bounding box).
     #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]
     pub(crate) tolerance: Option<f64>,
+    /// Fit every part that has holes as a closed surface, its holes capped [default: a part is
+    /// an open sheet when the cap of its widest hole would span a quarter of its area].
+    #[arg(long, conflicts_with = "open")]
+    pub(crate) closed: bool,
+    /// Fit every part that has a boundary as an open sheet (a disc over the mirrored square).
+    #[arg(long)]
+    pub(crate) open: bool,
     /// Also write the summary as JSON to this file.
     #[arg(long, value_name = "R.json")]
     pub(crate) report: Option<PathBuf>,

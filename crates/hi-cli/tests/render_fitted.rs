@@ -37,7 +37,8 @@ fn bezier_and_interval_agree_on_a_fitted_scan() {
         error: ErrorMeasure::Off,
         ..FitOptions::thesis()
     };
-    let surface = fit(&bumpy_scan(30_000), &options, &mut |_| {}).expect("fits").surface;
+    let surface =
+        fit(&bumpy_scan(30_000), &options, &mut |_| {}).expect("fits").parts.remove(0).surface;
     let patches = surface
         .to_bezier(
             BezierScheme::Hermite(HermiteDegree::Cubic),

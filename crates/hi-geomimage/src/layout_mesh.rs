@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
-//! A closed triangle mesh of the harmonic surface of a geometry image: the part of the parameter
+//! The triangle mesh of the harmonic surface of a geometry image: the part of the parameter
 //! domain that covers the object once, sampled on the image's grid (refined `per_texel` times),
 //! with the points that are the same point of the object welded into one vertex, so that the
-//! mesh is watertight and wound outward in every [`Layout`].
+//! mesh is watertight and wound outward in every [`Layout`] of the sphere and on the torus, and
+//! an open sheet with one rim on the [`Domain::Sheet`].
 //!
-//! | layout | window | what meets what |
+//! | domain | window | what meets what |
 //! |---|---|---|
 //! | [`Layout::Sphere`] | u ∈ [0, ½], v ∈ [0, 1] | v wraps; the rows u = 0 and u = ½ are the poles, one vertex each |
 //! | [`Layout::FlatOctahedron`] | u ∈ [0, ½], v ∈ [0, 1] | v wraps; the rows u = 0 and u = ½ fold onto themselves (the image's half-turn symmetry) |
 //! | [`Layout::Octahedron`] | the octahedral square, half a texel beyond the texel centres | each edge of the square folds onto itself about its midpoint, and the four corners meet |
+//! | [`Domain::Torus`] | u, v ∈ [0, 1] | both wrap: the last row is the first, the last column the first |
+//! | [`Domain::Sheet`] | u, v ∈ [0, ½] | nothing: the window's edges are the sheet's rim |
 //!
 //! Which grid points meet is decided by the layout's own map to directions: two points are
 //! welded when they look along the same direction (to 10⁻⁹, far below the spacing of any grid
@@ -21,8 +24,9 @@
 //!
 //! Positions come from the surface sampled over its whole period by FFT
 //! ([`HarmonicSurface::sample_uniform`]); normals are the area-weighted means of the normals of
-//! the triangles around each vertex. The mesh is wound so that it encloses a positive volume
-//! (outward), whatever the orientation of the parameterisation.
+//! the triangles around each vertex. A closed mesh is wound so that it encloses a positive
+//! volume (outward), whatever the orientation of the parameterisation; a sheet is wound so that
+//! its normals are pᵤ × pᵥ.
 
 use std::collections::HashMap;
 
@@ -30,28 +34,30 @@ use glam::{DVec2, DVec3};
 use hi_mesh::TriangleMesh;
 use hi_surface::HarmonicSurface;
 
+use crate::domain::Domain;
 use crate::spherical::{Layout, octahedral_direction};
 use crate::{Error, MAX_TEXELS};
 
-/// A closed mesh of a fitted surface, with the texel each vertex lies nearest to.
+/// The mesh of a fitted surface, with the texel each vertex lies nearest to.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LayoutMesh {
-    /// The mesh: closed, 2-manifold, wound outward.
+    /// The mesh: 2-manifold; closed and wound outward but on the [`Domain::Sheet`].
     pub mesh: TriangleMesh,
     /// For each vertex, the row-major index of the image texel nearest to it in the parameter
     /// domain (for masks such as the texels that bridge holes).
     pub texel: Vec<u32>,
 }
 
-/// The closed mesh of `surface`, an image's harmonic surface in `layout`, sampled `per_texel`
-/// times per texel along each axis; see the module documentation.
+/// The mesh of `surface`, an image's harmonic surface over `domain` (a [`Layout`] of the
+/// sphere, or a [`Domain`]), sampled `per_texel` times per texel along each axis; see the
+/// module documentation.
 ///
 /// # Errors
 ///
 /// [`Error::InvalidOption`] for `per_texel` 0 or a grid over 2²⁶ samples, or an odd
 /// `per_texel` with the plain octahedron (its square's edges lie half a texel from the texel
-/// centres); [`Error::InvalidResolution`] for an odd number of rows in a doubled layout;
-/// errors of the surface layer.
+/// centres); [`Error::InvalidResolution`] for an odd number of rows in a doubled layout or an
+/// odd number of rows or columns on the sheet; errors of the surface layer.
 ///
 /// # Examples
 ///
@@ -72,9 +78,15 @@ pub struct LayoutMesh {
 /// ```
 pub fn layout_mesh(
     surface: &HarmonicSurface<DVec3>,
-    layout: Layout,
+    domain: impl Into<Domain>,
     per_texel: usize,
 ) -> Result<LayoutMesh, Error> {
+    let domain = domain.into();
+    // The sphere's layout, where there is one (the torus and the sheet look along no direction).
+    let layout = match domain {
+        Domain::Sphere(layout) => Some(layout),
+        Domain::Torus | Domain::Sheet => None,
+    };
     let (m, n) = (surface.m(), surface.n());
     let k = per_texel;
     let (rows, cols) = (k.saturating_mul(m), k.saturating_mul(n));
@@ -85,32 +97,41 @@ pub fn layout_mesh(
             expected: "at least 1, and at most 2²⁶ samples in all",
         });
     }
-    if layout == Layout::Octahedron && k % 2 == 1 {
+    if layout == Some(Layout::Octahedron) && k % 2 == 1 {
         return Err(Error::InvalidOption {
             name: "samples per texel",
             value: k as f64,
             expected: "even for the plain octahedron (its edges lie half a texel off the grid)",
         });
     }
-    if layout != Layout::Octahedron && m % 2 == 1 {
+    if matches!(layout, Some(Layout::Sphere | Layout::FlatOctahedron)) && m % 2 == 1 {
         return Err(Error::InvalidResolution {
             rows: m,
             cols: n,
             expected: "an even number of rows (both poles are texels)",
         });
     }
+    if domain == Domain::Sheet && (m % 2 == 1 || n % 2 == 1) {
+        return Err(Error::InvalidResolution {
+            rows: m,
+            cols: n,
+            expected: "an even number of rows and columns (a sheet's image is mirrored)",
+        });
+    }
     let value = surface.sample_uniform(rows, cols, 0, 0)?.values;
     // The window's grid: (row, column) offsets, unwrapped; its direction and sample index.
-    let (row_range, col_range): (Vec<i64>, Vec<i64>) = match layout {
-        Layout::Sphere | Layout::FlatOctahedron => {
+    let (row_range, col_range): (Vec<i64>, Vec<i64>) = match domain {
+        Domain::Sphere(Layout::Sphere | Layout::FlatOctahedron) => {
             ((0..=rows as i64 / 2).collect(), (0..=cols as i64).collect())
         }
-        Layout::Octahedron => {
+        Domain::Sphere(Layout::Octahedron) => {
             let (h_r, h_c) = ((k / 2) as i64, (k / 2) as i64);
             ((-h_r..=rows as i64 - h_r).collect(), (-h_c..=cols as i64 - h_c).collect())
         }
+        Domain::Torus => ((0..=rows as i64).collect(), (0..=cols as i64).collect()),
+        Domain::Sheet => ((0..=rows as i64 / 2).collect(), (0..=cols as i64 / 2).collect()),
     };
-    let direction = |i: i64, j: i64| -> DVec3 {
+    let direction = |layout: Layout, i: i64, j: i64| -> DVec3 {
         match layout {
             Layout::Octahedron => {
                 // Texel (a, b) of the image is at s = −1 + (2a + 1)/m: the grid point i is at
@@ -136,7 +157,7 @@ pub fn layout_mesh(
     // square).
     let last = |count: usize| ((count - 1) * k) as i64;
     let source = |i: i64, j: i64| match layout {
-        Layout::Octahedron => wrap(i.clamp(0, last(m)), j.clamp(0, last(n))),
+        Some(Layout::Octahedron) => wrap(i.clamp(0, last(m)), j.clamp(0, last(n))),
         _ => wrap(i, j),
     };
     let (nr, nc) = (row_range.len(), col_range.len());
@@ -144,6 +165,7 @@ pub fn layout_mesh(
     // last column (the first again) and the two boundary rows (each folded onto itself, or a
     // pole) can meet another point: the interior is numbered directly and only those are
     // compared by direction. In the plain octahedron every point of the square's border can.
+    // On the torus the last row and column are the first again; on the sheet nothing meets.
     let key = |d: DVec3| d.to_array().map(|x| (x * 1e9).round() as i64);
     let mut vertex_of = vec![0u32; nr * nc];
     // Per vertex: the sum of its grid points' values, how many, and the first one's sample.
@@ -154,8 +176,9 @@ pub fn layout_mesh(
     for (a, &i) in row_range.iter().enumerate() {
         for (b, &j) in col_range.iter().enumerate() {
             let border = match layout {
-                Layout::Octahedron => a == 0 || b == 0 || a + 1 == nr || b + 1 == nc,
-                _ => a == 0 || a + 1 == nr,
+                Some(Layout::Octahedron) => a == 0 || b == 0 || a + 1 == nr || b + 1 == nc,
+                Some(_) => a == 0 || a + 1 == nr,
+                None => false,
             };
             let s = source(i, j);
             let mut new_vertex = || {
@@ -164,12 +187,16 @@ pub fn layout_mesh(
                 first.push(s);
                 (sum.len() - 1) as u32
             };
-            let g = if border {
-                *by_key.entry(key(direction(i, j))).or_insert_with(new_vertex)
-            } else if layout != Layout::Octahedron && b + 1 == nc {
-                vertex_of[a * nc] // the column that wraps around
-            } else {
-                new_vertex()
+            let g = match layout {
+                Some(layout) if border => {
+                    *by_key.entry(key(direction(layout, i, j))).or_insert_with(new_vertex)
+                }
+                // The column that wraps around.
+                Some(Layout::Sphere | Layout::FlatOctahedron) if b + 1 == nc => vertex_of[a * nc],
+                None if domain == Domain::Torus && b + 1 == nc => vertex_of[a * nc],
+                // The row that wraps around.
+                None if domain == Domain::Torus && a + 1 == nr => vertex_of[b],
+                _ => new_vertex(),
             };
             sum[g as usize] += value[s];
             count[g as usize] += 1;
@@ -194,7 +221,7 @@ pub fn layout_mesh(
             }
         }
     }
-    // Outward: a positive enclosed volume.
+    // Outward: a positive enclosed volume (a sheet keeps pᵤ × pᵥ).
     let centre = positions.iter().copied().sum::<DVec3>() / positions.len().max(1) as f64;
     let volume: f64 = triangles
         .iter()
@@ -203,7 +230,7 @@ pub fn layout_mesh(
             a.dot(b.cross(c))
         })
         .sum();
-    let flip = volume < 0.0;
+    let flip = domain.is_closed() && volume < 0.0;
     if flip {
         for t in &mut triangles {
             t.swap(1, 2);

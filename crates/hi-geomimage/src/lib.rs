@@ -14,7 +14,8 @@
 //! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
 //! | shrink-wrapping a point set: the zero set of its signed distance, parameterised, projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
 //! | spectral regularisation to the scan's noise (discrepancy principle, GCV) | beyond §5.4 | [`regularise`] |
-//! | the closed, outward mesh of a fitted surface in every layout | §5.3 | [`layout_mesh`] |
+//! | the parameter domains: the sphere in its layouts, the torus, the open sheet | §5.3, beyond | [`Domain`] |
+//! | the mesh of a fitted surface over every domain: closed and outward, or an open sheet | §5.3 | [`layout_mesh`] |
 //! | geometry images and their harmonic surfaces | §5.3 | [`GeometryImage`] |
 //! | ray-cast geometry images (algorithm 2): spherical, octahedral and flattened octahedral layouts, with star-shape and hole diagnostics | §5.3 | [`spherical`], [`Layout`] |
 //! | periodic smoothing (box, Gaussian), Theorem 5.3 resampling with the reduction error | §5.4 | [`Smoothing`], [`GeometryImage::smoothed`], [`GeometryImage::resampled`] |
@@ -39,6 +40,7 @@
 
 pub mod contours;
 pub mod distance;
+pub mod domain;
 mod error;
 mod filter;
 pub mod fit;
@@ -55,6 +57,7 @@ pub mod spherical;
 /// The data-parallel calls, as `hi-scan` runs them (rayon behind the `parallel` feature).
 use hi_scan::par;
 
+pub use domain::Domain;
 pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;
 pub use fit::{

@@ -49,6 +49,7 @@ use hi_scan::implicit::{CELL, PointSurface, vertex_normals};
 use hi_scan::repair::ClosedMesh;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
+use crate::domain::Domain;
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, NonFiniteInput};
 
@@ -183,7 +184,7 @@ pub fn shrink_wrap(
         // Else the coarse radial image wrapped, then its mesh parameterised: the texels of the
         // final image spread over the wrapped surface evenly, however the rays crowded them.
         let (coarse, _) =
-            wrap(&patches, start.image.texels().to_vec(), None, layout, cr, cc, iterations);
+            wrap(&patches, start.image.texels().to_vec(), None, layout.into(), cr, cc, iterations);
         // Every patch faces out as the wrapped surface does.
         patches.orient_to(&coarse, &grid_normals(&coarse, cr, cc));
         let resampled = GeometryImage::try_new(cr, cc, coarse)
@@ -212,29 +213,67 @@ pub fn shrink_wrap(
     } else {
         iterations
     };
-    let (mut x, filled) =
-        wrap(&patches, first.clone(), on_fills.as_deref(), layout, rows, cols, rounds);
-    let pulled = pull(&patches, points, &mut x, &filled, layout, rows, cols);
-    // Each direction once, for the fractions.
-    let distinct = match layout {
-        Layout::Sphere | Layout::FlatOctahedron => rows / 2 * cols,
-        Layout::Octahedron => rows * cols,
-    };
-    let filled_fraction =
-        filled[..distinct].iter().filter(|&&f| f).count() as f64 / distinct as f64;
-    let rms_move = (x.iter().zip(&first).map(|(a, b)| a.distance_squared(*b)).sum::<f64>()
-        / x.len() as f64)
-        .sqrt();
+    let settled = settle(
+        &patches,
+        points,
+        first,
+        on_fills.as_deref(),
+        Domain::Sphere(layout),
+        (rows, cols),
+        rounds,
+    );
     Ok(ShrinkWrapImage {
-        image: GeometryImage::try_new(rows, cols, x)?,
-        filled,
-        filled_fraction,
+        image: GeometryImage::try_new(rows, cols, settled.texels)?,
+        filled: settled.filled,
+        filled_fraction: settled.filled_fraction,
         non_star_fraction: start.non_star_fraction,
         implicit_start,
         reparameterised,
-        rms_move,
-        pulled,
+        rms_move: settled.rms_move,
+        pulled: settled.pulled,
     })
+}
+
+/// An image settled onto a point set's surface ([`settle`]).
+pub(crate) struct Settled {
+    /// The texels.
+    pub(crate) texels: Vec<DVec3>,
+    /// Texels with no point near, or on a patch bridging a hole.
+    pub(crate) filled: Vec<bool>,
+    /// The fraction of the distinct texels filled.
+    pub(crate) filled_fraction: f64,
+    /// The root mean square move of the texels.
+    pub(crate) rms_move: f64,
+    /// Texels pulled onto points (each once).
+    pub(crate) pulled: usize,
+}
+
+/// Steps 2 and 3 of the module documentation on the texels `first` of a `rows × cols` image
+/// over `domain`: `rounds` of projection and spreading onto the local surface `patches` of
+/// `points` (0 for an image sampled from a parameterisation of their zero set, whose texels
+/// `on_fills` flags those on the patches closing holes; each move then at most [`MAX_MOVE`]
+/// point spacings), then the pull into the creases the texels passed by.
+pub(crate) fn settle(
+    patches: &PointSurface,
+    points: &[DVec3],
+    first: Vec<DVec3>,
+    on_fills: Option<&[bool]>,
+    domain: Domain,
+    (rows, cols): (usize, usize),
+    rounds: usize,
+) -> Settled {
+    let (mut x, filled) = wrap(patches, first.clone(), on_fills, domain, rows, cols, rounds);
+    let pulled = pull(patches, points, &mut x, &filled, domain, rows, cols);
+    // Each point of the object once, for the fractions.
+    let owner = domain.owners(rows, cols);
+    let distinct = owner.iter().enumerate().filter(|&(t, &o)| o == t).count().max(1);
+    let filled_fraction = owner.iter().enumerate().filter(|&(t, &o)| o == t && filled[t]).count()
+        as f64
+        / distinct as f64;
+    let rms_move = (x.iter().zip(&first).map(|(a, b)| a.distance_squared(*b)).sum::<f64>()
+        / x.len().max(1) as f64)
+        .sqrt();
+    Settled { texels: x, filled, filled_fraction, rms_move, pulled }
 }
 
 /// The zero set of the points' signed distance on a grid of [`CELL`] point spacings
@@ -265,20 +304,6 @@ fn grid_normals(x: &[DVec3], rows: usize, cols: usize) -> Vec<DVec3> {
         .collect()
 }
 
-/// Each texel's representative in a `rows × cols` image of `layout`: itself, or its mirror
-/// where that comes first (the doubled layouts look along each direction twice).
-fn owners(layout: Layout, rows: usize, cols: usize) -> Vec<usize> {
-    let mirror = layout.mirror(rows, cols);
-    (0..rows * cols)
-        .map(|t| {
-            mirror.as_ref().map_or(t, |m| {
-                let (a, b) = m(t / cols, t % cols);
-                t.min(a * cols + b)
-            })
-        })
-        .collect()
-}
-
 /// How far off the surface, in point spacings along the normal of its nearest texel, a point
 /// must lie to pull that texel onto it.
 const PULL_FROM: f64 = 0.75;
@@ -300,11 +325,11 @@ fn pull(
     points: &[DVec3],
     x: &mut [DVec3],
     filled: &[bool],
-    layout: Layout,
+    domain: Domain,
     rows: usize,
     cols: usize,
 ) -> usize {
-    let owner = owners(layout, rows, cols);
+    let owner = domain.owners(rows, cols);
     let owners: Vec<usize> = (0..rows * cols).filter(|&t| owner[t] == t && !filled[t]).collect();
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(
         &owners.iter().map(|&t| x[t].to_array()).collect::<Vec<_>>(),
@@ -343,6 +368,29 @@ fn pull(
     sum.iter().filter(|s| s.1 > 0).count()
 }
 
+/// Each texel and the copies of it a doubled image holds take their mean (the doubled images'
+/// symmetry restored); on the latitude–longitude sphere each pole row becomes one point.
+fn symmetrise(v: &mut [DVec3], owner: &[usize], domain: Domain, rows: usize, cols: usize) {
+    if domain == Domain::Sphere(Layout::Sphere) {
+        // The pole rows are one point each.
+        for i in [0, rows / 2] {
+            let mean = v[i * cols..(i + 1) * cols].iter().copied().sum::<DVec3>() / cols as f64;
+            v[i * cols..(i + 1) * cols].iter_mut().for_each(|x| *x = mean);
+        }
+    }
+    let mut sum = vec![(DVec3::ZERO, 0u32); v.len()];
+    for (t, x) in v.iter().enumerate() {
+        sum[owner[t]].0 += *x;
+        sum[owner[t]].1 += 1;
+    }
+    for (t, x) in v.iter_mut().enumerate() {
+        let (total, count) = sum[owner[t]];
+        if count > 1 {
+            *x = total / f64::from(count);
+        }
+    }
+}
+
 /// The side of the coarse wrap.
 const COARSE: usize = 96;
 
@@ -350,46 +398,25 @@ const COARSE: usize = 96;
 const FINE_ROUNDS: usize = 2;
 
 /// `rounds` of projection and spreading of the texels `x` of a `rows × cols` image (the last
-/// step a projection), with the doubled layouts' symmetry kept; the texels and which of them
+/// step a projection), with the doubled images' symmetry kept; the texels and which of them
 /// had no point near. `on_fills` is given for an image of the implicit start: it flags the
 /// texels on the patches that close the scan's holes, which have no data either (whatever
 /// points are near the hole's rim), and every other texel moves at most [`MAX_MOVE`] point
 /// spacings.
+#[expect(clippy::too_many_arguments, reason = "private; two call sites")]
 fn wrap(
     patches: &PointSurface,
     mut x: Vec<DVec3>,
     on_fills: Option<&[bool]>,
-    layout: Layout,
+    domain: Domain,
     rows: usize,
     cols: usize,
     rounds: usize,
 ) -> (Vec<DVec3>, Vec<bool>) {
     // Beyond this from every point a texel has no data.
     let reach = 4.0 * patches.spacing();
-    let mirror = layout.mirror(rows, cols);
-    let symmetrise = |v: &mut [DVec3]| {
-        if layout == Layout::Sphere {
-            // The pole rows are one point each.
-            for i in [0, rows / 2] {
-                let mean = v[i * cols..(i + 1) * cols].iter().copied().sum::<DVec3>() / cols as f64;
-                v[i * cols..(i + 1) * cols].iter_mut().for_each(|x| *x = mean);
-            }
-        }
-        if let Some(mirror) = &mirror {
-            for i in 0..rows {
-                for j in 0..cols {
-                    let (a, b) = mirror(i, j);
-                    let (s, t) = (i * cols + j, a * cols + b);
-                    if s < t {
-                        let mean = 0.5 * (v[s] + v[t]);
-                        v[s] = mean;
-                        v[t] = mean;
-                    }
-                }
-            }
-        }
-    };
-    let owner = owners(layout, rows, cols);
+    let owner = domain.owners(rows, cols);
+    let symmetrise = |v: &mut [DVec3]| symmetrise(v, &owner, domain, rows, cols);
     let mut filled = vec![false; rows * cols];
     let neighbours_of = |t: usize| {
         let (i, j) = (t / cols, t % cols);

@@ -104,7 +104,7 @@ fn fitting_an_ellipsoid() {
         ..Scan::default()
     };
     let mut stages = Vec::new();
-    let result = fit(&scan, &FitOptions::thesis(), &mut |s| stages.push(s)).unwrap();
+    let result = fit(&scan, &FitOptions::thesis(), &mut |p| stages.push(p.stage)).unwrap();
     let names: Vec<&str> = stages.iter().map(|s| s.name()).collect();
     assert_eq!(names, ["geometry image", "harmonic surface", "rasterisation (4×)", "fit error"]);
     let timed: Vec<StageKind> = result.stages.iter().map(|s| s.kind).collect();
@@ -118,8 +118,8 @@ fn fitting_an_ellipsoid() {
     let [mean, rms, max] = errors.relative();
     assert!(mean < 2e-4 && rms < 3e-4 && max < 2e-3, "relative errors {mean:e} {rms:e} {max:e}");
     // The surface passes through the texels (harmonic interpolation, no solve).
-    let s = &result.surface;
-    assert!(s.eval(3.0 / 128.0, 5.0 / 128.0).distance(result.image.get(3, 5)) < 1e-12);
+    let s = &result.largest().surface;
+    assert!(s.eval(3.0 / 128.0, 5.0 / 128.0).distance(result.largest().image.get(3, 5)) < 1e-12);
 
     let options = FitOptions {
         smoothing: Some(Smoothing::Box { radius: 1 }),
@@ -224,8 +224,8 @@ fn fitting_real_meshes_by_their_parameterisation() {
         // its triangles) without measuring them; measured, they are, to rounding.
         let (points, triangles) = (&scan.points, &scan.triangles);
         let (all, _) = fit::measure_fit(
-            &result.surface,
-            result.layout,
+            &result.largest().surface,
+            result.largest().domain,
             None,
             points,
             triangles,
@@ -238,53 +238,64 @@ fn fitting_real_meshes_by_their_parameterisation() {
     }
 }
 
-/// A torus is not a sphere, so the thesis's geometry images cannot hold it as it is: the fit
-/// cuts its handle (the repair's step 7), closes both cuts, and parameterises the result. Every
-/// vertex of the torus then lies near the fitted surface, measured here by a brute-force
-/// nearest vertex of the written mesh, and the surface's own vertices lie on the torus
-/// (|√((√(x²+y²) − R)² + z²) − r| small) except across the tube at the cut.
+/// A tensor-product harmonic surface is periodic in u and in v: it is a torus. A torus scan is
+/// fitted over the flat torus, with no cut: every vertex of the scan lies near the fitted mesh
+/// (measured here by a brute-force nearest vertex), every vertex of that mesh lies on the torus
+/// (|√((√(x²+y²) − R)² + z²) − r| small), the mesh is closed of genus 1 (V − E + F = 0, its
+/// edges counted here), and the surface and its normal are the same on both sides of every
+/// edge of the image (u = 0 against u = 1, v = 0 against v = 1).
 #[test]
-fn a_torus_is_fitted_through_its_mesh_with_its_handle_cut() {
+fn a_torus_is_fitted_over_the_torus_with_no_seam() {
     let (big, small) = (1.0, 0.4);
     let (points, triangles) = common::torus(96, 32, big, small);
     let scan = Scan { points, normals: None, triangles, dropped_points: 0, dropped_faces: 0 };
     let result = fit(&scan, &FitOptions::default(), &mut |_| {}).unwrap();
     let r = &result.report;
     assert_eq!(r.method, Method::Mesh, "{}", r.method_reason);
-    assert!(r.method_reason.contains("1 handle"), "{}", r.method_reason);
-    let mesh = &result.mesh.as_ref().expect("the fit's mesh").mesh;
+    assert_eq!(r.parts.len(), 1);
+    assert_eq!(r.parts[0].domain, hi_geomimage::Domain::Torus, "{}", r.method_reason);
+    assert_eq!((r.parts[0].genus, r.parts[0].repair.handles_cut), (1, 0));
+    let part = result.largest();
+    let mesh = &part.mesh.as_ref().expect("the fit's mesh").mesh;
     let vertices = mesh.positions();
     // The bounding box is 2(R + r) × 2(R + r) × 2r.
     let diagonal = 2.0 * (2.0 * (big + small) * (big + small) + small * small).sqrt();
     let nearest = |p: DVec3| vertices.iter().map(|q| q.distance(p)).fold(f64::INFINITY, f64::min);
     let worst = scan.points.iter().map(|&p| nearest(p)).fold(0.0, f64::max);
-    // (The farthest lie along the seam of the cut.)
-    assert!(worst < 0.015 * diagonal, "a torus vertex {worst} from the surface");
-    // On the torus, away from the cut: every vertex whose texel is more than three texels
-    // from one the caps cover (flagged as filled).
-    let hi_geomimage::SourceImage::Mesh(source) = &result.source else { unreachable!() };
-    let (rows, cols) = (source.image.rows(), source.image.cols());
-    let near_cut = |t: usize| {
-        let (i, j) = ((t / cols) as isize, (t % cols) as isize);
-        (-3..=3).any(|di: isize| {
-            (-3..=3).any(|dj: isize| {
-                let (a, b) =
-                    ((i + di).rem_euclid(rows as isize), (j + dj).rem_euclid(cols as isize));
-                source.filled[a as usize * cols + b as usize]
-            })
-        })
-    };
-    assert!(source.filled.iter().any(|&f| f), "the caps are flagged");
+    assert!(worst < 0.005 * diagonal, "a torus vertex {worst} from the surface");
     let off = |p: DVec3| ((p.x.hypot(p.y) - big).hypot(p.z) - small).abs();
-    let mut away = 0;
-    for (p, &t) in vertices.iter().zip(&result.mesh.as_ref().expect("mesh").texel) {
-        if near_cut(t as usize) {
-            continue;
+    let farthest = vertices.iter().map(|&p| off(p)).fold(0.0, f64::max);
+    assert!(farthest < 0.002 * diagonal, "a vertex {farthest} off the torus");
+    // Closed, genus 1: every edge on two triangles, V − E + F = 0.
+    let mut edges = std::collections::HashMap::new();
+    for t in mesh.triangles() {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            *edges.entry((a.min(b), a.max(b))).or_insert(0) += 1;
         }
-        away += 1;
-        assert!(off(*p) < 0.005 * diagonal, "{p} is {} off the torus", off(*p));
     }
-    assert!(away as f64 > 0.8 * vertices.len() as f64, "{away} of {} vertices", vertices.len());
+    assert!(edges.values().all(|&c| c == 2), "closed");
+    assert_eq!(vertices.len() as i64 - edges.len() as i64 + mesh.triangles().len() as i64, 0);
+    // No seam: position and normal agree across every edge of the image.
+    let s = &part.surface;
+    let normal = |u: f64, v: f64| {
+        let (_, pu, pv) = s.eval_with_partials(u, v);
+        pu.cross(pv).normalize()
+    };
+    for k in 0..64 {
+        let t = k as f64 / 64.0 + 0.003;
+        for (a, b) in [((0.0, t), (1.0, t)), ((t, 0.0), (t, 1.0))] {
+            assert!(s.eval(a.0, a.1).distance(s.eval(b.0, b.1)) < 1e-12 * diagonal, "{a:?} {b:?}");
+            assert!(normal(a.0, a.1).distance(normal(b.0, b.1)) < 1e-10, "{a:?} {b:?}");
+        }
+    }
+    // The normal points away from the tube's core circle.
+    for k in 0..200 {
+        let (u, v) = ((k as f64 * 0.618_034) % 1.0, (k as f64 * 0.414_214) % 1.0);
+        let p = s.eval(u, v);
+        let core = DVec3::new(p.x, p.y, 0.0).normalize() * big;
+        assert!(normal(u, v).dot(p - core) > 0.0, "inward at ({u}, {v})");
+    }
 }
 
 /// Every layout gives a surface whose normals pᵤ × pᵥ point outwards: the mesh of its
@@ -307,6 +318,7 @@ fn every_layout_faces_outwards() {
         let result = fit(&scan, &options, &mut |_| {}).unwrap();
         let u = layout.covering_window();
         let mesh = result
+            .largest()
             .surface
             .to_mesh(&hi_surface::MeshOptions {
                 n_u: 64,

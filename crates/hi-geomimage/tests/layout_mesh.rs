@@ -49,7 +49,7 @@ fn bumpy_surface(layout: Layout, rows: usize, cols: usize) -> HarmonicSurface<DV
         error: ErrorMeasure::Off,
         ..FitOptions::default()
     };
-    fit(&Scan { points, ..Scan::default() }, &options, &mut |_| {}).unwrap().surface
+    fit(&Scan { points, ..Scan::default() }, &options, &mut |_| {}).unwrap().parts.remove(0).surface
 }
 
 #[test]

@@ -302,10 +302,8 @@ impl NearMesh {
     /// ```
     pub fn try_new(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Self, Error> {
         check_mesh(vertices, triangles)?;
-        let tree = kiddo::ImmutableKdTree::new_from_slice(
-            &vertices.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
-        )
-        .map_err(|_| Error::Degenerate { what: "the vertices do not form a kd-tree" })?;
+        let tree = kiddo::ImmutableKdTree::new_from_slice(crate::distance::as_arrays(vertices))
+            .map_err(|_| Error::Degenerate { what: "the vertices do not form a kd-tree" })?;
         let mut start = vec![0u32; vertices.len() + 1];
         for t in triangles {
             for &k in t {
@@ -326,18 +324,30 @@ impl NearMesh {
         Ok(Self { tree, vertices: vertices.to_vec(), start, around, triangles: triangles.to_vec() })
     }
 
-    /// The distance from `p` to the mesh (see the type's documentation).
+    /// The closest point to `p` on the triangles around its nearest vertex (see the type's
+    /// documentation); for a vertex no triangle uses, that vertex, on triangle `u32::MAX`.
     #[must_use]
-    pub fn distance(&self, p: DVec3) -> f64 {
+    pub fn closest(&self, p: DVec3) -> Closest {
         let nearest =
             self.tree.query(&p.to_array()).nearest_one::<kiddo::SquaredEuclidean<f64>>().execute();
         let v = nearest.item as usize;
-        let mut best = nearest.distance;
+        // Every triangle around v holds v, so its closest point is no farther than v.
+        let mut best = (nearest.distance, self.vertices[v], u32::MAX);
         for &f in &self.around[self.start[v] as usize..self.start[v + 1] as usize] {
             let [a, b, c] = self.triangles[f as usize].map(|x| self.vertices[x as usize]);
-            best = best.min(closest_point_on_triangle(p, a, b, c).distance_squared(p));
+            let q = closest_point_on_triangle(p, a, b, c);
+            let d = q.distance_squared(p);
+            if best.2 == u32::MAX || d < best.0 {
+                best = (d, q, f);
+            }
         }
-        best.sqrt()
+        Closest { point: best.1, distance: best.0.sqrt(), triangle: best.2 }
+    }
+
+    /// The distance from `p` to the mesh (see the type's documentation).
+    #[must_use]
+    pub fn distance(&self, p: DVec3) -> f64 {
+        self.closest(p).distance
     }
 
     /// The distance from each of `points` to the mesh, in parallel.

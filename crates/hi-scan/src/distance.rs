@@ -38,6 +38,20 @@ impl Distances {
         Self { per_point, mean, rms, max, diagonal }
     }
 
+    /// The summary of `values` alone (mean, RMS, maximum; [`Distances::per_point`] left empty),
+    /// relative numbers against `diagonal`: for a summary that need not hold every distance.
+    pub fn summary_of(values: impl IntoIterator<Item = f64>, diagonal: f64) -> Self {
+        let (mut n, mut sum, mut squares, mut max) = (0usize, 0.0, 0.0, 0.0f64);
+        for d in values {
+            n += 1;
+            sum += d;
+            squares += d * d;
+            max = max.max(d);
+        }
+        let n = n.max(1) as f64;
+        Self { per_point: Vec::new(), mean: sum / n, rms: (squares / n).sqrt(), max, diagonal }
+    }
+
     /// Mean, RMS and maximum divided by the diagonal.
     #[must_use]
     pub fn relative(&self) -> [f64; 3] {
@@ -96,6 +110,12 @@ pub fn closest_point_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec
     a + ab * (vb / denom) + ac * (vc / denom)
 }
 
+/// The points as `[x, y, z]` arrays, without a copy (glam's `DVec3` is three `f64` in that
+/// order).
+pub(crate) fn as_arrays(points: &[DVec3]) -> &[[f64; 3]] {
+    bytemuck::cast_slice(points)
+}
+
 fn check_points(points: &[DVec3], what: fn(usize) -> NonFiniteInput) -> Result<(), Error> {
     if let Some(k) = points.iter().position(|p| !p.is_finite()) {
         return Err(Error::NonFinite { what: what(k) });
@@ -114,9 +134,8 @@ pub fn nearest_point_distances(queries: &[DVec3], points: &[DVec3]) -> Result<Ve
     if points.is_empty() {
         return Err(Error::TooFewPoints { found: 0, needed: 1 });
     }
-    let tree: ImmutableKdTree<f64, 3> =
-        ImmutableKdTree::new_from_slice(&points.iter().map(|p| p.to_array()).collect::<Vec<_>>())
-            .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
+    let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(as_arrays(points))
+        .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
     Ok(queries
         .par_iter()
         .with_min_len(256)

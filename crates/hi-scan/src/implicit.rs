@@ -63,6 +63,9 @@ pub struct PointSurface {
     spacing: f64,
 }
 
+/// The neighbours whose disc gives a point's spacing ([`PointSurface::spacing`]).
+const SPACING_NEIGHBOURS: usize = 8;
+
 /// Patches blended per projection.
 const BLEND: usize = 3;
 
@@ -96,7 +99,8 @@ impl PointSurface {
     /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
     /// let (q, _) = surface.project(DVec3::new(7.3, 9.6, 3.0), DVec3::Z);
     /// assert!((q - DVec3::new(7.3, 9.6, 1.0)).length() < 1e-9);
-    /// assert!((surface.spacing() - 1.0).abs() < 1e-12);
+    /// // The 8th neighbour on the grid is √2 away: a spacing of √(π/4), about 0.89.
+    /// assert!((surface.spacing() - (std::f64::consts::PI / 4.0).sqrt()).abs() < 1e-12);
     /// ```
     pub fn try_new(
         points: &[DVec3],
@@ -127,10 +131,9 @@ impl PointSurface {
 
     /// The patches, sides as given or as a first guess (away from the centroid).
     fn fitted(points: &[DVec3], normals: Option<&[DVec3]>, k: usize) -> Result<Self, Error> {
-        let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(
-            &points.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
-        )
-        .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
+        let tree: ImmutableKdTree<f64, 3> =
+            ImmutableKdTree::new_from_slice(crate::distance::as_arrays(points))
+                .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
         let k = NonZero::new(k.max(8)).unwrap_or(NonZero::<usize>::MIN);
         let given = normals.filter(|n| n.len() == points.len());
         let fitted: Vec<(Patch, f64)> = points
@@ -139,7 +142,13 @@ impl PointSurface {
             .map(|(i, p)| {
                 let near =
                     tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
-                let spacing = near.get(1).map_or(0.0, |n| n.distance.sqrt());
+                // The side of the square each point has to itself, from the disc that holds its
+                // nearest SPACING_NEIGHBOURS: 1/√density whether the points lie on a grid
+                // (√(π/4) of a unit grid's step) or are scattered at random (whose nearest
+                // neighbour is half as far).
+                let spacing = near.get(SPACING_NEIGHBOURS).map_or(0.0, |n| {
+                    (std::f64::consts::PI * n.distance / SPACING_NEIGHBOURS as f64).sqrt()
+                });
                 let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
                 let normal = given
                     .and_then(|n| n[i].try_normalize())
@@ -165,7 +174,10 @@ impl PointSurface {
         Ok(Self { tree, patches, spacing })
     }
 
-    /// The median distance from a point to its nearest neighbour.
+    /// The points' spacing: the median over the points of √(π r² / 8), r the distance to a
+    /// point's 8th nearest neighbour: the side of the square each point has to itself on the
+    /// surface, 1/√density whether the points lie on a grid (√(π/4) of its step) or are
+    /// scattered at random (whose nearest neighbours lie about half as far).
     #[must_use]
     pub const fn spacing(&self) -> f64 {
         self.spacing
@@ -306,9 +318,9 @@ impl PointSurface {
         if samples.len() != normals.len() {
             return;
         }
-        let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(
-            &samples.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
-        ) else {
+        let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> =
+            ImmutableKdTree::new_from_slice(crate::distance::as_arrays(samples))
+        else {
             return;
         };
         self.patches.par_iter_mut().for_each(|patch| {

@@ -12,6 +12,7 @@
 //! | distances between point sets and meshes, summarised | [`distance`] |
 //! | a point set's local surface: quadric patches, projection, signed distance, its zero set | [`implicit`] |
 //! | the zero set of a function sampled on a grid (surface nets) | [`surfacenets`] |
+//! | large point clouds summarised on a grid, the grid sized for the detail wanted | [`cloud`] |
 //! | the noise level of a point set | [`noise`] |
 //! | more points on the triangles of sparse meshes | [`sampling`] |
 //!
@@ -23,6 +24,7 @@
 //! | `serde` | no | `Serialize` and `Deserialize` for scans and reports (a report's per-point distances are left out, so it stays small) |
 
 pub mod closest;
+pub mod cloud;
 pub mod distance;
 mod error;
 pub mod implicit;

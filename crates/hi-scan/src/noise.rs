@@ -55,7 +55,7 @@ pub fn noise_estimate(points: &[DVec3]) -> f64 {
         return 0.0;
     }
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> =
-        ImmutableKdTree::new_from_slice(&points.iter().map(|p| p.to_array()).collect::<Vec<_>>())
+        ImmutableKdTree::new_from_slice(crate::distance::as_arrays(points))
     else {
         return 0.0;
     };

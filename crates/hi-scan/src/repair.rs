@@ -1,33 +1,39 @@
 // SPDX-License-Identifier: MIT
-//! Closing a scan's triangle mesh into a surface of genus 0, ready for a spherical
-//! parameterisation (`hi-geomimage`'s `sphereparam`). The thesis (§5.3) casts rays from a centre and
-//! so needs a star-shaped object; a parameterisation of the surface itself needs instead a
-//! closed, connected, consistently oriented 2-manifold of genus 0, which real scans seldom
-//! are: they have repeated points, holes (the Stanford bunny's base), loose parts, faces
-//! listed twice or wound the wrong way, and vertices where two sheets touch.
+//! Closing a scan's triangle mesh into the surface a parameterisation needs: a sphere (genus 0,
+//! `hi-geomimage`'s `sphereparam`), a torus (genus 1) or a disc (one boundary loop). The thesis
+//! (§5.3) casts rays from a centre and so needs a star-shaped object; a parameterisation of the
+//! surface itself needs instead a connected, consistently oriented 2-manifold of the right
+//! topology, which real scans seldom are: they have repeated points, holes (the Stanford bunny's
+//! base), loose parts, faces listed twice or wound the wrong way, and vertices where two
+//! sheets touch.
 //!
-//! [`close_mesh`] repairs what can be repaired without changing the surface, in this order,
-//! and counts every change in a [`Repair`]:
+//! What can be repaired without changing the surface is, in this order, and every change is
+//! counted ([`MeshParts`], [`Repair`]):
 //!
 //! 1. points at exactly the same position are welded into one vertex;
 //! 2. triangles with a repeated vertex and second copies of a triangle are dropped, and so is
 //!    every triangle that would be the third (or later) on an edge;
 //! 3. each connected part is wound consistently (faces flipped to agree with their
-//!    neighbours); a part that cannot be (a Möbius band) is an error;
-//! 4. the part with the largest area is kept and the others are dropped;
-//! 5. a vertex where several fans of triangles meet is split into one vertex per fan;
-//! 6. each hole (a loop of edges with a triangle on one side only) is closed by a fan of
-//!    triangles around a new vertex at the loop's centroid, flagged in
-//!    [`ClosedMesh::filled`];
-//! 7. handles are cut, one at a time, each along the shortest loop found that does not
-//!    separate the surface (searched within blocks of [`HANDLE_BLOCKS`] mean edge lengths and
-//!    over the whole mesh: the tunnels and bridges a zero set grows where two sheets of a scan
-//!    nearly touch, a tail that touches a body, the tube of a ring), and both cuts are closed as
-//!    holes are, so the genus drops by one. The caps of a cut lie on each other, so the shape
-//!    is kept: a ring stays a ring, closed across its tube at one place;
-//! 8. the Euler characteristic V − E + F must then be 2 (genus 0), else
+//!    neighbours); a part that cannot be (a Möbius band) is flagged — [`mesh_parts`] stops
+//!    here and returns every part, largest first, and [`part_topology`] tells a part's genus
+//!    and boundary loops;
+//! 4. [`close_mesh`] keeps the part with the largest area and drops the others;
+//! 5. [`close_part`], from here on: a vertex where several fans of triangles meet is split into
+//!    one vertex per fan;
+//! 6. each hole (a loop of edges with a triangle on one side only) is closed by rings of
+//!    triangles shrinking to a new vertex at the loop's centroid, flagged in
+//!    [`ClosedMesh::filled`] (for a [`Closing::Disc`], every hole but the one whose loop spans
+//!    the largest area: the disc's rim);
+//! 7. handles are cut (but a [`Closing::Torus`]'s), one at a time, each along the shortest loop
+//!    found that does not separate the surface (searched within blocks of [`HANDLE_BLOCKS`]
+//!    mean edge lengths and over the whole mesh: the tunnels and bridges a zero set grows where
+//!    two sheets of a scan nearly touch, a tail that touches a body, the tube of a ring), and
+//!    both cuts are closed as holes are, so the genus drops by one. The caps of a cut lie on
+//!    each other, so the shape is kept: a ring stays a ring, closed across its tube at one
+//!    place;
+//! 8. the Euler characteristic V − E + F must then be 2 (sphere), 0 (torus) or 1 (disc), else
 //!    [`Error::Topology`] says which genus the surface has;
-//! 9. the whole mesh is flipped if its signed volume is negative, so that it winds outward.
+//! 9. a closed result is flipped if its signed volume is negative, so that it winds outward.
 //!
 //! A loop is found as Erickson and Whittlesey find the shortest loops through a point (2005):
 //! within each block (faces grouped by their centroids, on two grids offset by half a block,
@@ -125,43 +131,62 @@ const fn edge_key(a: u32, b: u32) -> u64 {
     if a < b { ((a as u64) << 32) | b as u64 } else { ((b as u64) << 32) | a as u64 }
 }
 
-/// Closes the mesh (`points`, `triangles`) into a genus-0 surface; see the module
-/// documentation for the steps.
+/// One connected part of a scan's mesh ([`mesh_parts`]): its triangles wound consistently
+/// where that is possible, its vertices compacted.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshPart {
+    /// Vertex positions.
+    pub positions: Vec<DVec3>,
+    /// Triangles, wound consistently (unless [`MeshPart::one_sided`]), most of them as the scan
+    /// listed them.
+    pub triangles: Vec<[u32; 3]>,
+    /// For each vertex, the index of the scan point it is.
+    pub scan_vertex: Vec<u32>,
+    /// The part's area.
+    pub area: f64,
+    /// Whether the part cannot be oriented (a Möbius band).
+    pub one_sided: bool,
+    /// Triangles whose winding was reversed to agree with their neighbours.
+    pub reoriented_triangles: usize,
+}
+
+/// A scan's mesh cleaned and split into its connected parts ([`mesh_parts`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshParts {
+    /// The parts, largest area first.
+    pub parts: Vec<MeshPart>,
+    /// Scan points merged into another point at exactly the same position.
+    pub welded_points: usize,
+    /// Triangles dropped: a repeated vertex, a second copy, or a third triangle on an edge.
+    pub dropped_triangles: usize,
+}
+
+/// Steps 1 to 3 of the module documentation: the mesh (`points`, `triangles`) with coincident
+/// points welded, degenerate, repeated and non-manifold triangles dropped, split into its
+/// connected parts, each wound consistently (a part is turned over if most of its triangles
+/// would otherwise be), largest area first.
 ///
 /// # Errors
 ///
-/// [`Error::TooFewPoints`] for a mesh with no usable triangle; [`Error::NonFinite`] for a
-/// non-finite point; [`Error::InvalidOption`] for a triangle index out of range;
-/// [`Error::Topology`] when the largest part cannot be oriented or is not of genus 0 once its
-/// holes are closed and up to [`MAX_HANDLES`] handles cut.
+/// [`Error::NonFinite`] for a non-finite point; [`Error::InvalidOption`] for a triangle index
+/// out of range; [`Error::Topology`] for a mesh with no triangle of three distinct corners.
 ///
 /// # Examples
 ///
 /// ```
 /// use glam::DVec3;
-/// use hi_scan::repair::close_mesh;
+/// use hi_scan::repair::mesh_parts;
 ///
-/// // An open box: a cube without its top (10 triangles), listed with one face wound wrongly.
-/// let p = [
-///     [0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.],
-///     [0., 0., 1.], [1., 0., 1.], [1., 1., 1.], [0., 1., 1.],
-/// ]
-/// .map(DVec3::from_array)
-/// .to_vec();
-/// let t = vec![
-///     [0, 2, 1], [0, 3, 2], // bottom
-///     [0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5],
-///     [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 7, 4], // the last one is wound the wrong way
-/// ];
-/// let closed = close_mesh(&p, &t).unwrap();
-/// assert_eq!(closed.repair.holes, 1);
-/// assert_eq!(closed.repair.hole_edges, 4);
-/// assert_eq!(closed.repair.reoriented_triangles, 1);
-/// // The top is closed by new triangles, flat across the square hole.
-/// assert_eq!(closed.triangles.len(), 10 + closed.filled.iter().filter(|&&f| f).count());
-/// assert!((closed.volume() - 1.0).abs() < 1e-12);
+/// // Two triangles apart, and a third sharing an edge with the first.
+/// let p = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [5., 0., 0.], [6., 0., 0.], [5., 1., 0.], [1., 1., 0.]]
+///     .map(DVec3::from_array)
+///     .to_vec();
+/// let parts = mesh_parts(&p, &[[0, 1, 2], [3, 4, 5], [2, 1, 6]]).unwrap();
+/// assert_eq!(parts.parts.len(), 2);
+/// assert_eq!(parts.parts[0].triangles.len(), 2);
+/// assert!((parts.parts[0].area - 1.0).abs() < 1e-12);
 /// ```
-pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh, Error> {
+pub fn mesh_parts(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<MeshParts, Error> {
     if let Some(k) = points.iter().position(|p| !p.is_finite()) {
         return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
     }
@@ -172,8 +197,7 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
             expected: "below the number of points",
         });
     }
-    let mut repair = Repair::default();
-
+    let mut welded_points = 0;
     // 1. Weld points at the same position (the first copy stays).
     let mut order: Vec<([u64; 3], u32)> = points
         .iter()
@@ -185,7 +209,7 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
     for w in order.windows(2) {
         if w[0].0 == w[1].0 {
             weld[w[1].1 as usize] = weld[w[0].1 as usize];
-            repair.welded_points += 1;
+            welded_points += 1;
         }
     }
 
@@ -239,7 +263,6 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
             }
             faces.push(mapped[f]);
         }
-        repair.dropped_triangles = triangles.len() - faces.len();
     }
     if faces.is_empty() {
         return Err(Error::Topology {
@@ -292,81 +315,325 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
             }
         }
     }
-    repair.components = part_area.len();
-    let largest =
-        (0..part_area.len()).max_by(|&a, &b| part_area[a].total_cmp(&part_area[b])).unwrap_or(0);
-    if one_sided[largest] {
+    let dropped_triangles = triangles.len() - faces.len();
+    // Each part compacted, turned over if most of its faces were flipped (the seed's winding
+    // was the odd one out).
+    let mut members: Vec<Vec<usize>> = vec![Vec::new(); part_area.len()];
+    for (f, &id) in part.iter().enumerate() {
+        members[id].push(f);
+    }
+    let mut new_index = vec![u32::MAX; points.len()];
+    let mut parts: Vec<MeshPart> = members
+        .iter()
+        .enumerate()
+        .map(|(id, faces_of)| {
+            let mut kept: Vec<[u32; 3]> = faces_of.iter().map(|&f| faces[f]).collect();
+            let mut reoriented = faces_of.iter().filter(|&&f| flipped[f]).count();
+            if 2 * reoriented > kept.len() {
+                for t in &mut kept {
+                    t.swap(1, 2);
+                }
+                reoriented = kept.len() - reoriented;
+            }
+            let mut positions = Vec::new();
+            let mut scan_vertex = Vec::new();
+            for t in &mut kept {
+                for k in t.iter_mut() {
+                    if new_index[*k as usize] == u32::MAX {
+                        new_index[*k as usize] = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+                        positions.push(points[*k as usize]);
+                        scan_vertex.push(*k);
+                    }
+                    *k = new_index[*k as usize];
+                }
+            }
+            // Ready for the next part (whose vertices are others).
+            for &v in &scan_vertex {
+                new_index[v as usize] = u32::MAX;
+            }
+            MeshPart {
+                positions,
+                triangles: kept,
+                scan_vertex,
+                area: part_area[id],
+                one_sided: one_sided[id],
+                reoriented_triangles: reoriented,
+            }
+        })
+        .collect();
+    // Largest first; equal areas in the order found.
+    parts.sort_by(|a, b| b.area.total_cmp(&a.area));
+    Ok(MeshParts { parts, welded_points, dropped_triangles })
+}
+
+/// The surface [`close_part`] makes of a part.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Closing {
+    /// A closed surface of genus 0: every hole closed, every handle cut.
+    #[default]
+    Sphere,
+    /// A closed surface of genus 1: every hole closed, the handle kept.
+    Torus,
+    /// A disc: every hole closed but the one whose loop spans the largest area, every handle
+    /// cut.
+    Disc,
+}
+
+/// The topology of a part, its pinched vertices split ([`part_topology`]).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Topology {
+    /// The genus of the closed surface the part makes once its holes are closed.
+    pub genus: usize,
+    /// Its boundary loops, the one spanning the largest area first.
+    pub loops: Vec<BoundaryLoop>,
+    /// The part's area.
+    pub area: f64,
+}
+
+/// A boundary loop of a part: the rim of a hole, or of an open sheet.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BoundaryLoop {
+    /// Its edges.
+    pub edges: usize,
+    /// Its length.
+    pub length: f64,
+    /// The area of the fan from its centroid across it: about the area a cap over it needs.
+    pub span: f64,
+}
+
+/// The genus and boundary loops of `part` once its pinched vertices are split (step 5):
+/// χ = V − E + F = 2 − 2g − b for b loops.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::{mesh_parts, part_topology};
+///
+/// // One square of two triangles: a disc, one loop of four edges around an area of 1.
+/// let p = [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.]].map(DVec3::from_array).to_vec();
+/// let part = &mesh_parts(&p, &[[0, 1, 2], [0, 2, 3]]).unwrap().parts[0];
+/// let topology = part_topology(part);
+/// assert_eq!((topology.genus, topology.loops.len(), topology.loops[0].edges), (0, 1, 4));
+/// assert!((topology.loops[0].span - 1.0).abs() < 1e-12);
+/// ```
+#[must_use]
+pub fn part_topology(part: &MeshPart) -> Topology {
+    let mut faces = part.triangles.clone();
+    let mut positions = part.positions.clone();
+    let mut scan_vertex = part.scan_vertex.clone();
+    split_fans(&mut faces, &mut positions, &mut scan_vertex, &mut Repair::default());
+    let mut loops: Vec<BoundaryLoop> = boundary_loops(&faces, positions.len())
+        .iter()
+        .map(|lp| loop_measures(lp, &positions))
+        .collect();
+    loops.sort_by(|a, b| b.span.total_cmp(&a.span));
+    let edges = directed_edges(&faces).len() as i64;
+    let boundary_edges: i64 = loops.iter().map(|l| l.edges as i64).sum();
+    // Every interior edge is two half-edges, a boundary edge one.
+    let e = (edges + boundary_edges) / 2;
+    let chi = positions.len() as i64 - e + faces.len() as i64;
+    let genus = usize::try_from((2 - chi - loops.len() as i64).max(0) / 2).unwrap_or(0);
+    Topology { genus, loops, area: part.area }
+}
+
+/// The length and span of a boundary loop.
+fn loop_measures(lp: &[u32], positions: &[DVec3]) -> BoundaryLoop {
+    let m = lp.len();
+    let at = |i: usize| positions[lp[i % m] as usize];
+    let centre = (0..m).map(at).sum::<DVec3>() / m.max(1) as f64;
+    BoundaryLoop {
+        edges: m,
+        length: (0..m).map(|i| at(i).distance(at(i + 1))).sum(),
+        span: (0..m).map(|i| 0.5 * (at(i) - centre).cross(at(i + 1) - centre).length()).sum(),
+    }
+}
+
+/// Steps 5 to 9 of the module documentation for one part, making the surface `closing` asks
+/// for: pinched vertices split, holes closed (for a disc, all but the loop of largest span),
+/// handles cut (none for a torus), the Euler characteristic checked (2 for a sphere, 0 for a
+/// torus, 1 for a disc), and a closed result wound outward. For a disc the winding is the
+/// part's own.
+///
+/// # Errors
+///
+/// [`Error::Topology`] when the part is one-sided, has no boundary to keep open for a disc, or
+/// is not of the genus `closing` needs once its holes are closed and up to [`MAX_HANDLES`]
+/// handles cut.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::{Closing, close_part, mesh_parts};
+///
+/// // An open box (a cube without its top): closed as a sphere, or kept open as a disc.
+/// let p = [
+///     [0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.],
+///     [0., 0., 1.], [1., 0., 1.], [1., 1., 1.], [0., 1., 1.],
+/// ]
+/// .map(DVec3::from_array)
+/// .to_vec();
+/// let t = [[0, 2, 1], [0, 3, 2], [0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]];
+/// let part = &mesh_parts(&p, &t).unwrap().parts[0];
+/// let closed = close_part(part, Closing::Sphere).unwrap();
+/// assert_eq!(closed.repair.holes, 1);
+/// assert!((closed.volume() - 1.0).abs() < 1e-12);
+/// let disc = close_part(part, Closing::Disc).unwrap();
+/// assert_eq!((disc.repair.holes, disc.triangles.len()), (0, 10));
+/// assert!(close_part(part, Closing::Torus).is_err());
+/// ```
+pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error> {
+    if part.one_sided {
         return Err(Error::Topology {
-            what: "the mesh's largest part cannot be oriented (it is one-sided)".to_owned(),
+            what: "the part cannot be oriented (it is one-sided)".to_owned(),
         });
     }
-    // 4. Keep the largest part.
-    let mut kept: Vec<[u32; 3]> = Vec::with_capacity(n_faces);
-    for f in 0..n_faces {
-        if part[f] == largest {
-            kept.push(faces[f]);
-            repair.reoriented_triangles += usize::from(flipped[f]);
-        } else {
-            repair.dropped_component_triangles += 1;
-        }
-    }
-    // Orient the reoriented count against the majority: if most faces were flipped, the
-    // seed's winding was the odd one out.
-    let kept_len = kept.len();
-    if 2 * repair.reoriented_triangles > kept_len {
-        for t in &mut kept {
-            t.swap(1, 2);
-        }
-        repair.reoriented_triangles = kept_len - repair.reoriented_triangles;
-    }
-
-    // Compact the vertices to those used.
-    let mut new_index = vec![u32::MAX; points.len()];
-    let mut positions = Vec::new();
-    let mut scan_vertex = Vec::new();
-    for t in &mut kept {
-        for k in t.iter_mut() {
-            if new_index[*k as usize] == u32::MAX {
-                new_index[*k as usize] = u32::try_from(positions.len()).unwrap_or(u32::MAX);
-                positions.push(points[*k as usize]);
-                scan_vertex.push(*k);
-            }
-            *k = new_index[*k as usize];
-        }
-    }
+    let mut repair = Repair {
+        components: 1,
+        reoriented_triangles: part.reoriented_triangles,
+        ..Repair::default()
+    };
+    let mut kept = part.triangles.clone();
+    let mut positions = part.positions.clone();
+    let mut scan_vertex = part.scan_vertex.clone();
 
     // 5. Split vertices where several fans meet.
     split_fans(&mut kept, &mut positions, &mut scan_vertex, &mut repair);
 
-    // 6. Close the holes.
+    // 6. Close the holes (for a disc, all but the widest).
     let mut filled = vec![false; kept.len()];
-    close_holes(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
+    let mut loops = boundary_loops(&kept, positions.len());
+    let open = if closing == Closing::Disc {
+        let widest = (0..loops.len()).max_by(|&a, &b| {
+            loop_measures(&loops[a], &positions)
+                .span
+                .total_cmp(&loop_measures(&loops[b], &positions).span)
+        });
+        match widest {
+            Some(k) => Some(loops.swap_remove(k)),
+            None => {
+                return Err(Error::Topology {
+                    what: "the part is closed: it has no boundary to keep as a disc's".to_owned(),
+                });
+            }
+        }
+    } else {
+        None
+    };
+    for lp in &loops {
+        fill_hole(lp, &mut kept, &mut positions, &mut scan_vertex, &mut filled);
+        repair.holes += 1;
+        repair.hole_edges += lp.len();
+    }
 
-    // 7. Cut handles.
-    cut_handles(&mut kept, &mut positions, &mut scan_vertex, &mut filled, &mut repair);
+    // 7. Cut handles, but a torus's.
+    let chi_wanted = match closing {
+        Closing::Sphere => 2,
+        Closing::Torus => 0,
+        Closing::Disc => 1,
+    };
+    if closing != Closing::Torus {
+        cut_handles(
+            &mut kept,
+            &mut positions,
+            &mut scan_vertex,
+            &mut filled,
+            chi_wanted,
+            &mut repair,
+        );
+    }
 
-    // 8. Genus 0?
-    let v = positions.len() as i64;
-    let f = kept.len() as i64;
-    let e = 3 * f / 2;
-    let chi = v - e + f;
-    if chi != 2 {
+    // 8. The Euler characteristic (a disc's one boundary loop counts one edge per edge).
+    let boundary_edges = open.as_ref().map_or(0, Vec::len) as i64;
+    let e = (3 * kept.len() as i64 + boundary_edges) / 2;
+    let chi = positions.len() as i64 - e + kept.len() as i64;
+    if chi != chi_wanted {
+        let b = i64::from(open.is_some());
         return Err(Error::Topology {
             what: format!(
-                "the surface has genus {} once its holes are closed (Euler characteristic {chi}, not 2)",
-                (2 - chi) / 2
+                "the surface has genus {} once its holes are closed (Euler characteristic {chi}), not the genus {} a {} needs",
+                (2 - chi - b) / 2,
+                if closing == Closing::Torus { 1 } else { 0 },
+                match closing {
+                    Closing::Sphere => "sphere",
+                    Closing::Torus => "torus",
+                    Closing::Disc => "disc",
+                }
             ),
         });
     }
 
-    // 9. Outward.
-    if signed_volume(&positions, &kept) < 0.0 {
+    // 9. Outward, for a closed surface.
+    if closing != Closing::Disc && signed_volume(&positions, &kept) < 0.0 {
         for t in &mut kept {
             t.swap(1, 2);
         }
         repair.flipped = true;
     }
     Ok(ClosedMesh { positions, triangles: kept, scan_vertex, filled, repair })
+}
+
+/// Closes the mesh (`points`, `triangles`) into a genus-0 surface: its largest part
+/// ([`mesh_parts`]) closed as a sphere ([`close_part`]); see the module documentation for the
+/// steps.
+///
+/// # Errors
+///
+/// [`Error::TooFewPoints`] for a mesh with no usable triangle; [`Error::NonFinite`] for a
+/// non-finite point; [`Error::InvalidOption`] for a triangle index out of range;
+/// [`Error::Topology`] when the largest part cannot be oriented or is not of genus 0 once its
+/// holes are closed and up to [`MAX_HANDLES`] handles cut.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::close_mesh;
+///
+/// // An open box: a cube without its top (10 triangles), listed with one face wound wrongly.
+/// let p = [
+///     [0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.],
+///     [0., 0., 1.], [1., 0., 1.], [1., 1., 1.], [0., 1., 1.],
+/// ]
+/// .map(DVec3::from_array)
+/// .to_vec();
+/// let t = vec![
+///     [0, 2, 1], [0, 3, 2], // bottom
+///     [0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5],
+///     [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 7, 4], // the last one is wound the wrong way
+/// ];
+/// let closed = close_mesh(&p, &t).unwrap();
+/// assert_eq!(closed.repair.holes, 1);
+/// assert_eq!(closed.repair.hole_edges, 4);
+/// assert_eq!(closed.repair.reoriented_triangles, 1);
+/// // The top is closed by new triangles, flat across the square hole.
+/// assert_eq!(closed.triangles.len(), 10 + closed.filled.iter().filter(|&&f| f).count());
+/// assert!((closed.volume() - 1.0).abs() < 1e-12);
+/// ```
+pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh, Error> {
+    let cleaned = mesh_parts(points, triangles)?;
+    let components = cleaned.parts.len();
+    let dropped_component_triangles: usize =
+        cleaned.parts.iter().skip(1).map(|p| p.triangles.len()).sum();
+    let Some(largest) = cleaned.parts.first() else {
+        return Err(Error::TooFewPoints { found: 0, needed: 3 });
+    };
+    if largest.one_sided {
+        return Err(Error::Topology {
+            what: "the mesh's largest part cannot be oriented (it is one-sided)".to_owned(),
+        });
+    }
+    let mut closed = close_part(largest, Closing::Sphere)?;
+    closed.repair.welded_points = cleaned.welded_points;
+    closed.repair.dropped_triangles = cleaned.dropped_triangles;
+    closed.repair.components = components;
+    closed.repair.dropped_component_triangles = dropped_component_triangles;
+    Ok(closed)
 }
 
 /// For each half-edge 3f + k (from corner k to k + 1 of face f), the face across it, if
@@ -476,28 +743,22 @@ fn split_fans(
     }
 }
 
-/// Closes every boundary loop ([`fill_hole`]).
-fn close_holes(
-    faces: &mut Vec<[u32; 3]>,
-    positions: &mut Vec<DVec3>,
-    scan_vertex: &mut Vec<u32>,
-    filled: &mut Vec<bool>,
-    repair: &mut Repair,
-) {
-    // Directed edges present; a boundary edge a→b has no b→a.
+/// The boundary loops of `faces` (over `n` vertices, pinched vertices split), each in the order
+/// the triangles run along it: a boundary edge a → b has no b → a.
+fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
     let directed: Vec<u64> = directed_edges(faces).into_iter().map(|(key, _)| key).collect();
     let has =
         |a: u32, b: u32| directed.binary_search(&((u64::from(a) << 32) | u64::from(b))).is_ok();
     // After the fans are split, each boundary vertex starts exactly one boundary edge.
-    let mut next = vec![u32::MAX; positions.len()];
+    let mut next = vec![u32::MAX; n];
     for &e in &directed {
         let (a, b) = ((e >> 32) as u32, e as u32);
         if !has(b, a) {
             next[a as usize] = b;
         }
     }
-    let n = positions.len();
     let mut done = vec![false; n];
+    let mut loops = Vec::new();
     for start in 0..n {
         if next[start] == u32::MAX || done[start] {
             continue;
@@ -509,14 +770,12 @@ fn close_holes(
             lp.push(v as u32);
             v = next[v] as usize;
         }
-        if v != start || lp.len() < 3 {
-            // Not a closed loop (cannot happen for a split mesh); leave it.
-            continue;
+        if v == start && lp.len() >= 3 {
+            loops.push(lp);
         }
-        fill_hole(&lp, faces, positions, scan_vertex, filled);
-        repair.holes += 1;
-        repair.hole_edges += lp.len();
+        // Else not a closed loop (cannot happen for a split mesh); left alone.
     }
+    loops
 }
 
 /// Closes the boundary loop `lp` (in the order the mesh's triangles run along it) by rings of
@@ -600,6 +859,43 @@ fn fill_hole(
     }
 }
 
+/// The length of the shortest loop found on the closed mesh `mesh` that does not separate it
+/// (the loop [`close_part`] would cut first, found the same way), or `None` for a surface of
+/// genus 0. A handle's loop as short as a few edges is a tunnel between two sheets that nearly
+/// touch, not a handle of the object.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::{Closing, close_part, mesh_parts, shortest_handle};
+///
+/// // A torus of tube radius 0.25 about a circle of radius 1, 48 × 16 quads: the shortest
+/// // loop goes round the tube, 2π · 0.25 long (a little less on the polygon).
+/// let (nu, nv) = (48u32, 16u32);
+/// let at = |i: u32, j: u32| {
+///     let (a, b) = (std::f64::consts::TAU * f64::from(i % nu) / f64::from(nu), std::f64::consts::TAU * f64::from(j % nv) / f64::from(nv));
+///     DVec3::new((1.0 + 0.25 * b.cos()) * a.cos(), (1.0 + 0.25 * b.cos()) * a.sin(), 0.25 * b.sin())
+/// };
+/// let points: Vec<DVec3> = (0..nu * nv).map(|k| at(k / nv, k % nv)).collect();
+/// let id = |i: u32, j: u32| (i % nu) * nv + j % nv;
+/// let triangles: Vec<[u32; 3]> = (0..nu)
+///     .flat_map(|i| (0..nv).flat_map(move |j| [[id(i, j), id(i + 1, j), id(i + 1, j + 1)], [id(i, j), id(i + 1, j + 1), id(i, j + 1)]]))
+///     .collect();
+/// let torus = close_part(&mesh_parts(&points, &triangles).unwrap().parts[0], Closing::Torus).unwrap();
+/// let length = shortest_handle(&torus).unwrap();
+/// assert!((length / (std::f64::consts::TAU * 0.25) - 1.0).abs() < 0.03, "{length}");
+/// ```
+#[must_use]
+pub fn shortest_handle(mesh: &ClosedMesh) -> Option<f64> {
+    HANDLE_BLOCKS
+        .iter()
+        .chain(&[f64::INFINITY])
+        .filter_map(|&side| handle_loop(&mesh.triangles, &mesh.positions, side))
+        .map(|(length, _)| length)
+        .min_by(f64::total_cmp)
+}
+
 /// The sides of the blocks in which [`close_mesh`] looks for loops that cut handles (then over
 /// the whole mesh), in mean edge lengths of the mesh.
 pub const HANDLE_BLOCKS: [f64; 3] = [8.0, 32.0, 128.0];
@@ -610,10 +906,11 @@ pub const MAX_HANDLES: usize = 32;
 /// Roots tried per block: the first vertex of the block, then a vertex of the best loop so far.
 const HANDLE_ROOTS: usize = 3;
 
-/// V − E + F of a closed triangle mesh (every edge on two triangles).
-fn euler_characteristic(vertices: usize, faces: usize) -> i64 {
+/// V − E + F of a triangle mesh with `boundary_edges` edges on one triangle (every other edge
+/// on two).
+fn euler_characteristic(vertices: usize, faces: usize, boundary_edges: i64) -> i64 {
     let (v, f) = (vertices as i64, faces as i64);
-    v - 3 * f / 2 + f
+    v - (3 * f + boundary_edges) / 2 + f
 }
 
 /// Step 7 of [`close_mesh`] on a closed, consistently oriented mesh: while its genus is above
@@ -624,11 +921,20 @@ fn cut_handles(
     positions: &mut Vec<DVec3>,
     scan_vertex: &mut Vec<u32>,
     filled: &mut Vec<bool>,
+    chi_wanted: i64,
     repair: &mut Repair,
 ) {
+    let kept_open: Vec<Vec<u32>> = boundary_loops(faces, positions.len())
+        .into_iter()
+        .map(|mut lp| {
+            lp.sort_unstable();
+            lp
+        })
+        .collect();
+    let open = kept_open.iter().map(Vec::len).sum::<usize>() as i64;
     for _ in 0..MAX_HANDLES {
-        let chi = euler_characteristic(positions.len(), faces.len());
-        if chi >= 2 {
+        let chi = euler_characteristic(positions.len(), faces.len(), open);
+        if chi >= chi_wanted {
             return;
         }
         // The shortest loop found at any size of block (a loop may fit a block of one grid and
@@ -646,8 +952,15 @@ fn cut_handles(
         }
         filled.resize(faces.len(), false);
         // The two cuts are holes of their own; they are not the scan's, so not counted as such.
-        close_holes(faces, positions, scan_vertex, filled, &mut Repair::default());
-        if euler_characteristic(positions.len(), faces.len()) != chi + 2 {
+        // A boundary kept open (a disc's) stays open.
+        for lp in boundary_loops(faces, positions.len()) {
+            let mut key = lp.clone();
+            key.sort_unstable();
+            if !kept_open.contains(&key) {
+                fill_hole(&lp, faces, positions, scan_vertex, filled);
+            }
+        }
+        if euler_characteristic(positions.len(), faces.len(), open) != chi + 2 {
             // Cannot happen for a non-separating loop of a closed mesh; stop rather than loop.
             return;
         }

@@ -72,8 +72,10 @@ fn combined(scan: &Scan) -> Result<Combined> {
     let start = std::time::Instant::now();
     let fitted = fit(scan, &options, &mut |_| {})?;
     let converting = std::time::Instant::now();
-    let patches =
-        fitted.surface.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
+    let patches = fitted
+        .largest()
+        .surface
+        .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     let end = std::time::Instant::now();
     let mut stages: Vec<(String, f64)> =
         fitted.stages.iter().map(|s| (s.kind.name().to_owned(), s.seconds)).collect();

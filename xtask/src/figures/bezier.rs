@@ -98,8 +98,10 @@ fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
     let fitted = fit(&scan, &options, &mut |_| {})?;
     ensure!(fitted.report.non_star_fraction < 0.05, "the head is not star-shaped about its centre");
     ensure!(fitted.report.surface_size == (HEAD_IMAGE, HEAD_IMAGE), "reduced to a quarter");
-    let b =
-        fitted.surface.to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
+    let b = fitted
+        .largest()
+        .surface
+        .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     ensure!(b.report.max_deviation <= b.report.bound, "deviation above its bound");
     let u = Layout::FlatOctahedron.covering_window();
     let once = b.patches_in(u);

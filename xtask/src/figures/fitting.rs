@@ -82,7 +82,13 @@ fn sphere_fit() -> Result<Vec<u8>> {
         ..FitOptions::thesis()
     };
     let result = fit(&scan, &options, &mut |_| {})?;
-    let worst = result.image.texels().iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max);
+    let worst = result
+        .largest()
+        .image
+        .texels()
+        .iter()
+        .map(|p| (p.length() - 1.0).abs())
+        .fold(0.0, f64::max);
     ensure!(worst < 1e-12, "a texel is {worst} off the sphere");
     let u = Layout::Sphere.covering_window();
     let mesh_options = MeshOptions {
@@ -91,5 +97,5 @@ fn sphere_fit() -> Result<Vec<u8>> {
         window: ParamWindow::new(u, ParamRange::UNIT),
         ..MeshOptions::default()
     };
-    glb(&result.surface.to_mesh(&mesh_options)?)
+    glb(&result.largest().surface.to_mesh(&mesh_options)?)
 }

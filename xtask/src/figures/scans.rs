@@ -279,7 +279,7 @@ pub(crate) fn ensure_outward(mesh: &TriangleMesh, min: f64, what: &str) -> Resul
 /// The harmonic surface of a fit, meshed with 2×2 quads per texel.
 fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
-    glb(&covering_mesh(&result.surface, setup.layout, 2)?)
+    glb(&covering_mesh(&result.largest().surface, setup.layout, 2)?)
 }
 
 /// The image size of the real models' fits: below what `hi fit` picks for them, so that each
@@ -309,7 +309,8 @@ fn real_glb(file: &str) -> Result<Vec<u8>> {
         result.report.method.name(),
         result.report.method_reason
     );
-    let mesh = hi_geomimage::layout_mesh::layout_mesh(&result.surface, options.layout, 1)?.mesh;
+    let mesh =
+        hi_geomimage::layout_mesh::layout_mesh(&result.largest().surface, options.layout, 1)?.mesh;
     let volume = mesh.signed_volume();
     ensure!(volume > 0.0, "{file}: the fitted surface is wound inwards (volume {volume})");
     glb(&mesh)
@@ -320,7 +321,7 @@ fn real_glb(file: &str) -> Result<Vec<u8>> {
 fn texel_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
     // Meshing the surface at its own grid puts the vertices on the texels exactly.
-    let mesh = covering_mesh(&result.surface, setup.layout, 1)?;
+    let mesh = covering_mesh(&result.largest().surface, setup.layout, 1)?;
     let p = mesh.positions();
     let mut normals = vec![DVec3::ZERO; p.len()];
     for t in mesh.triangles() {
@@ -372,7 +373,7 @@ fn image_png(image: &GeometryImage, rows: usize, tiles: u32) -> Result<Vec<u8>> 
 /// interpolation treats as its continuation).
 fn fit_png(model: Model, setup: Setup, half: bool, tiles: u32) -> Result<Vec<u8>> {
     let result = fitted(&scan(model)?, setup, false)?;
-    let image = result.source.image();
+    let image = result.largest().source.image();
     image_png(image, if half { image.rows() / 2 } else { image.rows() }, tiles)
 }
 
@@ -409,7 +410,7 @@ fn surface_png(number: (u32, u32), setup: Setup) -> Result<Vec<u8>> {
 fn coarse_glb(densify: bool) -> Result<Vec<u8>> {
     let setup = Setup { densify, ..FLAT_SMOOTH };
     let result = fitted(&coarse_head()?, setup, false)?;
-    glb(&covering_mesh(&result.surface, setup.layout, 2)?)
+    glb(&covering_mesh(&result.largest().surface, setup.layout, 2)?)
 }
 
 /// The figures of this module.

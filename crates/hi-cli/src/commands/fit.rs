@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-//! `hi fit`: a harmonic surface fitted to a scan through a geometry image (§5.3, §5.4, §5.8),
-//! with a progress display, a summary and a warning when the scan is not star-shaped and the
-//! surface could only follow its outermost shell;
-//! `--param sections` goes to algorithm 1 instead ([`super::fit_sections`]).
+//! `hi fit`: a harmonic surface fitted to each part of a scan through a geometry image (§5.3,
+//! §5.4, §5.8), with a progress bar, a summary, and warnings naming what the fit changed or
+//! could not reach (parts left out, handles cut, points unreached, a scan that is not
+//! star-shaped where the surface follows its outermost shell); several parts are written as one
+//! scene of named meshes. `--param sections` goes to algorithm 1 instead
+//! ([`super::fit_sections`]).
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -10,11 +12,17 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
-use hi_geomimage::fit::{RowPoints, Stage, UNREACHED, mesh_oversample};
+use hi_geomimage::fit::{
+    Boundary, DroppedPart, FitErrors, PartReport, Progress, RowPoints, Stage, UNREACHED,
+    mesh_oversample,
+};
 use hi_geomimage::layout_mesh::layout_mesh;
 use hi_geomimage::regularise::{Regularisation, RegularisationReport};
-use hi_geomimage::{ErrorMeasure, Fit, FitOptions, Layout, Method, Smoothing, SourceImage, fit};
-use hi_mesh::export::{self, MeshFormat};
+use hi_geomimage::{
+    Domain, ErrorMeasure, Fit, FitOptions, Layout, Method, Smoothing, SourceImage, fit,
+};
+use hi_mesh::TriangleMesh;
+use hi_mesh::export::{self, MeshFormat, NamedMesh};
 use hi_scan::scan::read_scan;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -37,14 +45,86 @@ const UNREACHED_WARNING: f64 = 0.01;
 /// Samples per patch side in the mesh of `--bezier`.
 const BEZIER_SAMPLES: usize = 4;
 
-/// The warnings of a fit of `scan`, one line each: rays that met several shells where the
-/// surface follows the outermost one, and points of the scan the surface did not reach, with
-/// the cause when the fit knows it.
+/// Parts named one by one in a warning; more are counted.
+const NAMED_PARTS: usize = 5;
+
+/// `n thing` or `n things`.
+fn count(n: usize, one: &str, many: &str) -> String {
+    if n == 1 { format!("1 {one}") } else { format!("{n} {many}") }
+}
+
+/// The parts left out, named (the first few) with their size and why.
+fn dropped_list(dropped: &[DroppedPart]) -> String {
+    let mut names: Vec<String> = dropped
+        .iter()
+        .take(NAMED_PARTS)
+        .map(|d| format!("{} ({:.2}% of the area)", d.name, 100.0 * d.area_fraction))
+        .collect();
+    if dropped.len() > NAMED_PARTS {
+        names.push(format!("and {} more", dropped.len() - NAMED_PARTS));
+    }
+    names.join(", ")
+}
+
+/// What the fit found and did about a part's topology, in words, when there was anything to do
+/// (a torus, an open sheet, holes closed, handles cut).
+fn topology_note(part: &PartReport) -> Option<String> {
+    let r = &part.repair;
+    let mut did = Vec::new();
+    match part.domain {
+        Domain::Torus => did.push("fitted over the torus with no cut".to_owned()),
+        Domain::Sheet => did.push(format!(
+            "an open sheet ({}), fitted open",
+            count(part.boundary_loops, "boundary loop", "boundary loops")
+        )),
+        Domain::Sphere(_) => {}
+    }
+    if r.holes > 0 {
+        did.push(format!("{} closed", count(r.holes, "hole", "holes")));
+    }
+    if r.handles_cut > 0 {
+        did.push(format!(
+            "{} cut (genus {}), both sides of each cut closed",
+            count(r.handles_cut, "handle", "handles"),
+            part.genus
+        ));
+    }
+    (!did.is_empty()).then(|| format!("{}: {}", part.name, did.join("; ")))
+}
+
+/// The warnings and notes of a fit of `scan`, one line each: the topology found and what was
+/// done about it, parts left out, rays that met several shells where the surface follows the
+/// outermost one, and points of the scan the surface did not reach, with the cause when the
+/// fit knows it.
 fn warnings(fitted: &Fit, scan: &Path) -> Vec<String> {
     let report = &fitted.report;
     let mut lines = Vec::new();
-    let outer_shell =
-        fitted.source.follows_outer_shell() && report.non_star_fraction > NON_STAR_WARNING;
+    if report.parts.len() > 1 {
+        lines.push(format!(
+            "note: {} has {} parts above the floor ({}% of its area): each is fitted on its own, named part 1 to part {} by area",
+            scan.display(),
+            report.parts.len(),
+            100.0 * report.part_floor,
+            report.parts.len()
+        ));
+    }
+    for part in &report.parts {
+        if let Some(note) = topology_note(part) {
+            lines.push(format!("note: {note}"));
+        }
+    }
+    if !report.dropped_parts.is_empty() {
+        let area: f64 = report.dropped_parts.iter().map(|d| d.area_fraction).sum();
+        lines.push(format!(
+            "warning: {} of {} left out, {:.2}% of its area: {}",
+            count(report.dropped_parts.len(), "part", "parts"),
+            scan.display(),
+            100.0 * area,
+            dropped_list(&report.dropped_parts)
+        ));
+    }
+    let source = &fitted.largest().source;
+    let outer_shell = source.follows_outer_shell() && report.non_star_fraction > NON_STAR_WARNING;
     if outer_shell {
         lines.push(format!(
             "warning: {:.1}% of the rays meet {} more than once: it is not star-shaped about the centre, and the surface follows its outermost shell there",
@@ -55,17 +135,15 @@ fn warnings(fitted: &Fit, scan: &Path) -> Vec<String> {
     if let Some(errors) = &report.both_ways
         && errors.unreached_fraction > UNREACHED_WARNING
     {
-        let cause = match &fitted.source {
-            SourceImage::Mesh(m) if m.area_kept < 1.0 - 1e-9 => format!(
-                ": only the largest part of the mesh was fitted ({:.1}% of its area)",
-                100.0 * m.area_kept
-            ),
-            _ if outer_shell => ": they lie inside the outermost shell".to_owned(),
-            SourceImage::ShrinkWrap(_) => {
-                ": the wrap did not reach them (inner shells, separate parts, or parts thinner than its grid)"
-                    .to_owned()
-            }
-            _ => String::new(),
+        let cause = if !report.dropped_parts.is_empty() {
+            format!(": parts were left out ({})", dropped_list(&report.dropped_parts))
+        } else if outer_shell {
+            ": they lie inside the outermost shell".to_owned()
+        } else if matches!(source, SourceImage::ShrinkWrap(_)) {
+            ": the wrap did not reach them (inner shells, or parts thinner than its grid)"
+                .to_owned()
+        } else {
+            String::new()
         };
         lines.push(format!(
             "warning: {:.1}% of the points of {} are farther than {}% of the diagonal from the surface{cause}",
@@ -77,7 +155,72 @@ fn warnings(fitted: &Fit, scan: &Path) -> Vec<String> {
     lines
 }
 
-/// Fits, writes the surface and returns the summary (also written to `--report`).
+/// The progress bar on a terminal (hidden otherwise): the parts done of all, and the stage.
+fn progress_bar() -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(1);
+    if let Ok(style) =
+        ProgressStyle::with_template("{spinner} {elapsed} [{bar:24}] {pos}/{len} parts · {msg}")
+    {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.enable_steady_tick(std::time::Duration::from_millis(100));
+    bar
+}
+
+/// The fit's options from the command line.
+fn options(args: &FitArgs, layout: Layout) -> Result<FitOptions, Failure> {
+    let centre = match &args.centre {
+        None => None,
+        Some(list) => match list.0[..] {
+            [x, y, z] => Some(DVec3::new(x, y, z)),
+            _ => return Err(Failure::input("--centre: expected three numbers x,y,z")),
+        },
+    };
+    // --smooth 0: the thesis's interpolation, with no smoothing or regularisation at all.
+    let interpolate = args.smooth == Some(0.0);
+    if interpolate && args.regularise.is_some_and(|r| r != Regularisation::Off) {
+        return Err(Failure::input("--smooth 0 interpolates: it takes no --regularise"));
+    }
+    Ok(FitOptions {
+        method: match args.method {
+            MethodName::Auto => Method::Auto,
+            MethodName::Mesh => Method::Mesh,
+            MethodName::ShrinkWrap => Method::ShrinkWrap,
+            MethodName::Radial => Method::Radial,
+            MethodName::Contours => Method::Contours,
+        },
+        layout,
+        resolution: args.resolution.map(|s| (s.0, s.1)),
+        boundary: if args.closed {
+            Boundary::Closed
+        } else if args.open {
+            Boundary::Open
+        } else {
+            Boundary::Auto
+        },
+        centre,
+        smoothing: args.smooth.filter(|&s| s != 0.0).map(|sigma| Smoothing::Gaussian { sigma }),
+        regularisation: if interpolate {
+            Regularisation::Off
+        } else {
+            args.regularise.unwrap_or(Regularisation::Auto)
+        },
+        reduce: args.reduce,
+        error: if args.no_error {
+            ErrorMeasure::Off
+        } else if args.exact_error {
+            ErrorMeasure::Exact
+        } else {
+            ErrorMeasure::Fast
+        },
+        ..FitOptions::default()
+    })
+}
+
+/// Fits, writes the surfaces and returns the summary (also written to `--report`).
 ///
 /// # Errors
 ///
@@ -101,6 +244,11 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
                 "--method applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
             ));
         }
+        ParamName::Sections if args.closed || args.open => {
+            return Err(Failure::input(
+                "--closed and --open apply to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
+            ));
+        }
         ParamName::Sections => return super::fit_sections::run(args),
     };
     if args.slices.is_some() {
@@ -116,58 +264,16 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     if let Some(report) = &args.report {
         check_writable(report, "--report")?;
     }
-    let centre = match &args.centre {
-        None => None,
-        Some(list) => match list.0[..] {
-            [x, y, z] => Some(DVec3::new(x, y, z)),
-            _ => return Err(Failure::input("--centre: expected three numbers x,y,z")),
-        },
-    };
+    let options = options(args, layout)?;
+    let bar = progress_bar();
+    bar.set_message("reading the scan");
     let scan = read_scan(&args.scan)
         .map_err(|e| Failure::input(about_file(&args.scan, &e.to_string())))?;
-    // --smooth 0: the thesis's interpolation, with no smoothing or regularisation at all.
-    let interpolate = args.smooth == Some(0.0);
-    if interpolate && args.regularise.is_some_and(|r| r != Regularisation::Off) {
-        return Err(Failure::input("--smooth 0 interpolates: it takes no --regularise"));
-    }
-    let options = FitOptions {
-        method: match args.method {
-            MethodName::Auto => Method::Auto,
-            MethodName::Mesh => Method::Mesh,
-            MethodName::ShrinkWrap => Method::ShrinkWrap,
-            MethodName::Radial => Method::Radial,
-            MethodName::Contours => Method::Contours,
-        },
-        layout,
-        resolution: args.resolution.map(|s| (s.0, s.1)),
-        centre,
-        smoothing: args.smooth.filter(|&s| s != 0.0).map(|sigma| Smoothing::Gaussian { sigma }),
-        regularisation: if interpolate {
-            Regularisation::Off
-        } else {
-            args.regularise.unwrap_or(Regularisation::Auto)
-        },
-        reduce: args.reduce,
-        error: if args.no_error {
-            ErrorMeasure::Off
-        } else if args.exact_error {
-            ErrorMeasure::Exact
-        } else {
-            ErrorMeasure::Fast
-        },
-        ..FitOptions::default()
-    };
-    let bar = if std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new_spinner();
-        if let Ok(style) = ProgressStyle::with_template("{spinner} {elapsed} {msg}") {
-            bar.set_style(style);
-        }
-        bar.enable_steady_tick(std::time::Duration::from_millis(100));
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
-    let result = fit(&scan, &options, &mut |stage| bar.set_message(stage.name()));
+    let result = fit(&scan, &options, &mut |p: Progress| {
+        bar.set_length(p.parts as u64);
+        bar.set_position(p.part as u64);
+        bar.set_message(p.stage.name());
+    });
     bar.finish_and_clear();
     let mut fitted = result.map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
     for warning in warnings(&fitted, &args.scan) {
@@ -175,68 +281,144 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     }
     let mut bezier_report = None;
     let files: Vec<PathBuf> = if args.bezier {
-        let start = std::time::Instant::now();
-        let scheme = args.bezier_scheme.unwrap_or(BezierScheme::Hermite(HermiteDegree::Cubic));
-        let patches = fitted
-            .surface
-            .to_bezier(
-                scheme,
-                args.tolerance.map_or(
-                    hi_curve::bezier::DEFAULT_TOLERANCE,
-                    hi_curve::bezier::Tolerance::Absolute,
-                ),
-            )
-            .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
-        let seconds = start.elapsed().as_secs_f64();
-        let u = options.layout.covering_window();
-        let once = patches.patches_in(u);
-        let name = scheme.name();
-        let report = BezierOut {
-            report: surface_bezier::Report { scheme: name, report: &patches.report },
-            seconds,
-            patches_once: once.len(),
-        };
-        let files = if as_grid {
-            let file = surface_bezier::patches_json(name, &patches, &report)?;
-            write_file(&args.output, &file, false)?;
-            vec![args.output.clone()]
-        } else if ext.as_deref() == Some("obj") {
-            surface_bezier::write_obj(&patches, &once, &args.output)?;
-            vec![args.output.clone()]
-        } else {
-            let mesh = patches
-                .to_triangle_mesh_of(BEZIER_SAMPLES, &once)
-                .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
-            export::save(&mesh, &args.output)?
-        };
-        bezier_report = Some(json(&report)?);
+        let (files, report) = write_bezier(args, &fitted, ext.as_deref(), as_grid)?;
+        bezier_report = Some(report);
         files
     } else if as_grid {
-        write_file(&args.output, &grid_json(&fitted.surface.rows())?, false)?;
-        vec![args.output.clone()]
-    } else {
-        // The closed mesh the error was measured on, or the same made now.
-        let mesh = match fitted.mesh.take() {
-            Some(m) => m.mesh,
-            None => {
-                let per_texel = mesh_oversample(&fitted.surface);
-                let per_texel = if layout == Layout::Octahedron {
-                    per_texel.next_multiple_of(2)
-                } else {
-                    per_texel
-                };
-                layout_mesh(&fitted.surface, layout, per_texel)
-                    .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?
-                    .mesh
+        let grid = match &fitted.parts[..] {
+            [only] => grid_json(&only.surface.rows())?,
+            parts => {
+                let named: Vec<(String, Json)> = fitted
+                    .report
+                    .parts
+                    .iter()
+                    .zip(parts)
+                    .map(|(r, p)| Ok((r.name.clone(), grid_json(&p.surface.rows())?)))
+                    .collect::<Result<_, Failure>>()?;
+                json(&serde_json::json!({
+                    "parts": named.into_iter().map(|(name, grid)| serde_json::json!({"name": name, "grid": grid})).collect::<Vec<_>>()
+                }))?
             }
         };
-        export::save(&mesh, &args.output)?
+        write_file(&args.output, &grid, false)?;
+        vec![args.output.clone()]
+    } else {
+        // The meshes the error was measured on, or the same made now.
+        let mut meshes = Vec::with_capacity(fitted.parts.len());
+        for part in &mut fitted.parts {
+            let mesh = match part.mesh.take() {
+                Some(m) => m.mesh,
+                None => {
+                    let per_texel = mesh_oversample(&part.surface);
+                    let per_texel = if part.domain == Domain::Sphere(Layout::Octahedron) {
+                        per_texel.next_multiple_of(2)
+                    } else {
+                        per_texel
+                    };
+                    layout_mesh(&part.surface, part.domain, per_texel)
+                        .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?
+                        .mesh
+                }
+            };
+            meshes.push(mesh);
+        }
+        save_parts(&fitted, &meshes, &args.output)?
     };
     let summary = summary(args, &fitted, &files, bezier_report)?;
     if let Some(path) = &args.report {
         write_file(path, &summary, true)?;
     }
     Ok(summary)
+}
+
+/// Writes one mesh per part: the one mesh as it is, or several as one scene of named meshes.
+fn save_parts(
+    fitted: &Fit,
+    meshes: &[TriangleMesh],
+    output: &Path,
+) -> Result<Vec<PathBuf>, Failure> {
+    Ok(match meshes {
+        [only] => export::save(only, output)?,
+        _ => {
+            let named: Vec<NamedMesh<'_>> = fitted
+                .report
+                .parts
+                .iter()
+                .zip(meshes)
+                .map(|(r, m)| NamedMesh::new(&r.name, m))
+                .collect();
+            export::save_scene(&named, output)?
+        }
+    })
+}
+
+/// `--bezier`: each part's surface as Bézier patches, written as JSON or OBJ (one part) or as a
+/// mesh of the patches of one cover of each part; the files and the report of the largest.
+fn write_bezier(
+    args: &FitArgs,
+    fitted: &Fit,
+    ext: Option<&str>,
+    as_grid: bool,
+) -> Result<(Vec<PathBuf>, Json), Failure> {
+    let start = std::time::Instant::now();
+    let scheme = args.bezier_scheme.unwrap_or(BezierScheme::Hermite(HermiteDegree::Cubic));
+    let tolerance = args
+        .tolerance
+        .map_or(hi_curve::bezier::DEFAULT_TOLERANCE, hi_curve::bezier::Tolerance::Absolute);
+    let all = fitted
+        .parts
+        .iter()
+        .map(|p| p.surface.to_bezier(scheme, tolerance))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
+    let seconds = start.elapsed().as_secs_f64();
+    // The patches of one cover of each part.
+    let once: Vec<Vec<usize>> = all
+        .iter()
+        .zip(&fitted.parts)
+        .map(|(patches, part)| {
+            let w = part.domain.covering_window();
+            (0..patches.patches.len())
+                .filter(|&i| {
+                    let p = patches.window(i);
+                    p.u.start >= w.u.start - 1e-12
+                        && p.u.end <= w.u.end + 1e-12
+                        && p.v.start >= w.v.start - 1e-12
+                        && p.v.end <= w.v.end + 1e-12
+                })
+                .collect()
+        })
+        .collect();
+    let name = scheme.name();
+    let report = BezierOut {
+        report: surface_bezier::Report { scheme: name, report: &all[0].report },
+        seconds,
+        patches_once: once.iter().map(Vec::len).sum(),
+    };
+    let several = all.len() > 1;
+    let files = if (as_grid || ext == Some("obj")) && several {
+        return Err(Failure::input(format!(
+            "--bezier writes one surface's patches to .json or .obj, and {} has {} parts: write a .glb or .gltf scene",
+            args.scan.display(),
+            all.len()
+        )));
+    } else if as_grid {
+        let file = surface_bezier::patches_json(name, &all[0], &report)?;
+        write_file(&args.output, &file, false)?;
+        vec![args.output.clone()]
+    } else if ext == Some("obj") {
+        surface_bezier::write_obj(&all[0], &once[0], &args.output)?;
+        vec![args.output.clone()]
+    } else {
+        let meshes = all
+            .iter()
+            .zip(&once)
+            .map(|(patches, once)| patches.to_triangle_mesh_of(BEZIER_SAMPLES, once))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| Failure::input(format!("--bezier: {e}")))?;
+        save_parts(fitted, &meshes, &args.output)?
+    };
+    Ok((files, json(&report)?))
 }
 
 /// The report of `--bezier`: the conversion's, its time and the patches written.
@@ -248,7 +430,7 @@ struct BezierOut<'a> {
     patches_once: usize,
 }
 
-/// What `hi fit` did to a mesh scan before parameterising it.
+/// What `hi fit` did to the largest part of a mesh scan before parameterising it.
 #[derive(Serialize)]
 struct MeshOut {
     holes_filled: usize,
@@ -261,7 +443,7 @@ struct MeshOut {
     split_vertices: usize,
     handles_cut: usize,
     stretch_efficiency: f64,
-    levels: usize,
+    area_ratio: f64,
 }
 
 /// Both directions of the fit's error, as printed.
@@ -275,6 +457,20 @@ struct BothWaysOut {
     diagonal: f64,
 }
 
+impl BothWaysOut {
+    fn of(e: &FitErrors) -> Self {
+        let diagonal = e.scan_to_surface.diagonal;
+        Self {
+            scan_to_surface: DistancesOut::of(&e.scan_to_surface),
+            surface_to_scan: DistancesOut::of(&e.surface_to_scan),
+            filled_to_scan_max: e.filled_to_scan_max,
+            filled_to_scan_max_relative: relative(e.filled_to_scan_max, diagonal),
+            unreached_fraction: e.unreached_fraction,
+            diagonal,
+        }
+    }
+}
+
 /// The Hausdorff distance of an exact error measurement.
 #[derive(Serialize)]
 struct HausdorffOut {
@@ -282,6 +478,34 @@ struct HausdorffOut {
     relative: f64,
     scan_to_surface_max: f64,
     surface_to_scan_max: f64,
+}
+
+/// One part, as printed.
+#[derive(Serialize)]
+struct PartOut<'a> {
+    name: &'a str,
+    domain: &'static str,
+    why: &'a str,
+    area_fraction: f64,
+    genus: usize,
+    boundary_loops: usize,
+    holes_filled: usize,
+    handles_cut: usize,
+    image: [usize; 2],
+    surface: (usize, usize),
+    hole_fraction: f64,
+    both_ways: Option<BothWaysOut>,
+}
+
+/// The topology found, as printed.
+#[derive(Serialize)]
+struct TopologyOut {
+    parts: usize,
+    parts_dropped: usize,
+    part_floor: f64,
+    genus: Vec<usize>,
+    boundary_loops: Vec<usize>,
+    domains: Vec<&'static str>,
 }
 
 /// The printed summary of `hi fit`.
@@ -306,6 +530,9 @@ struct Summary<'a> {
     errors: Option<DistancesOut>,
     both_ways: Option<BothWaysOut>,
     hausdorff: Option<HausdorffOut>,
+    topology: TopologyOut,
+    parts: Vec<PartOut<'a>>,
+    dropped_parts: &'a [DroppedPart],
     files: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     bezier: Option<Json>,
@@ -324,7 +551,7 @@ fn summary(
     bezier: Option<Json>,
 ) -> Result<Json, Failure> {
     let r = &fitted.report;
-    let mesh = match &fitted.source {
+    let mesh = match &fitted.largest().source {
         SourceImage::Mesh(m) => Some(MeshOut {
             holes_filled: m.repair.holes,
             hole_edges: m.repair.hole_edges,
@@ -335,12 +562,12 @@ fn summary(
             reoriented_triangles: m.repair.reoriented_triangles,
             split_vertices: m.repair.split_vertices,
             handles_cut: m.repair.handles_cut,
-            stretch_efficiency: m.quality.stretch_efficiency,
-            levels: m.quality.levels,
+            stretch_efficiency: m.quality.stretch_efficiency(),
+            area_ratio: m.quality.area_ratio(),
         }),
         _ => None,
     };
-    let image = fitted.source.image();
+    let image = fitted.largest().source.image();
     json(&Summary {
         scan: args.scan.display().to_string(),
         method: r.method.name(),
@@ -359,23 +586,40 @@ fn summary(
         stages: &fitted.stages,
         reduction: r.reduction.as_ref(),
         errors: r.errors.as_ref().map(DistancesOut::of),
-        both_ways: r.both_ways.as_ref().map(|e| {
-            let diagonal = e.scan_to_surface.diagonal;
-            BothWaysOut {
-                scan_to_surface: DistancesOut::of(&e.scan_to_surface),
-                surface_to_scan: DistancesOut::of(&e.surface_to_scan),
-                filled_to_scan_max: e.filled_to_scan_max,
-                filled_to_scan_max_relative: relative(e.filled_to_scan_max, diagonal),
-                unreached_fraction: e.unreached_fraction,
-                diagonal,
-            }
-        }),
+        both_ways: r.both_ways.as_ref().map(BothWaysOut::of),
         hausdorff: r.hausdorff.as_ref().map(|h| HausdorffOut {
             distance: h.distance(),
             relative: relative(h.distance(), h.scan_to_surface.diagonal),
             scan_to_surface_max: h.scan_to_surface.max,
             surface_to_scan_max: h.surface_to_scan.max,
         }),
+        topology: TopologyOut {
+            parts: r.parts.len(),
+            parts_dropped: r.dropped_parts.len(),
+            part_floor: r.part_floor,
+            genus: r.parts.iter().map(|p| p.genus).collect(),
+            boundary_loops: r.parts.iter().map(|p| p.boundary_loops).collect(),
+            domains: r.parts.iter().map(|p| p.domain.name()).collect(),
+        },
+        parts: r
+            .parts
+            .iter()
+            .map(|p| PartOut {
+                name: &p.name,
+                domain: p.domain.name(),
+                why: &p.why,
+                area_fraction: p.area_fraction,
+                genus: p.genus,
+                boundary_loops: p.boundary_loops,
+                holes_filled: p.repair.holes,
+                handles_cut: p.repair.handles_cut,
+                image: [p.image_size.0, p.image_size.1],
+                surface: p.surface_size,
+                hole_fraction: p.hole_fraction,
+                both_ways: p.errors.as_ref().map(BothWaysOut::of),
+            })
+            .collect(),
+        dropped_parts: &r.dropped_parts,
         files: file_names(files),
         bezier,
     })

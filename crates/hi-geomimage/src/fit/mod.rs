@@ -1,0 +1,1162 @@
+// SPDX-License-Identifier: MIT
+//! The whole fitting pipeline: scan → its parts → a geometry image of each → (smoothing,
+//! regularisation) → (reduction by Theorem 5.3) → harmonic surfaces → a mesh of each, timed
+//! stage by stage, with the diagnostics and the fit's error both ways (§5.3–§5.4, §5.8, and
+//! past them).
+//!
+//! How the geometry images are made ([`Method`]):
+//!
+//! | method | from | texels | when [`Method::Auto`] picks it |
+//! |---|---|---|---|
+//! | [`Method::Mesh`] | a mesh | each part of the mesh ([`hi_scan::repair`]) parameterised over the domain its topology asks for ([`Domain`], [`parts`]), each texel the surface point its parameter falls on | the scan has triangles, and its parts above the floor ([`PART_FLOOR`]) hold at least half its area |
+//! | [`Method::ShrinkWrap`] | points | each part of the zero set of the points' signed distance ([`hi_scan::implicit`]) parameterised the same way, its texels projected onto the points and pulled into the creases it bridged ([`crate::shrinkwrap`]); a cloud larger than the images can hold is first summarised on a grid ([`hi_scan::cloud`]) | otherwise: point sets, and meshes the mesh method cannot take |
+//! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | never (the thesis's algorithm 2) |
+//! | [`Method::Contours`] | points | the scan point each ray located, rows made contours (§5.8, [`crate::contours`]) | never (the thesis's §5.8) |
+//!
+//! A scan of several parts (separate eyes, a lid, an aeroplane's wheels) gives a surface per
+//! part above the floor, each with its share of the texels; a part of genus 1 is fitted over
+//! the torus with no cut, an open sheet over the mirrored square (see [`parts`]). The ray
+//! methods fit the whole scan as one surface.
+//!
+//! Then, per part, the thesis's optional Gaussian smoothing, the regularisation
+//! ([`Regularisation`]: by default, for images made from points, a thin-plate penalty weighed
+//! so that the surface departs from the texels by the scan's own noise level
+//! ([`hi_scan::noise`]), and none for images sampled from a mesh, whose texels lie exactly on
+//! the scan's surface), the optional reduction, and the harmonic surface through the result.
+//!
+//! The defaults ([`FitOptions::default`]) are the best this crate knows; [`FitOptions::thesis`]
+//! reproduces the thesis's algorithm 2 (a 128² latitude–longitude image, no regularisation).
+
+mod measure;
+pub mod parts;
+mod source;
+mod stages;
+
+use std::borrow::Cow;
+use std::time::Instant;
+
+use glam::DVec3;
+use hi_curve::ReductionError;
+use hi_scan::cloud::{cell_for_count, summarise};
+use hi_scan::distance::{Distances, bounding_diagonal};
+use hi_scan::implicit::{CELL, PointSurface};
+use hi_scan::repair::{MeshParts, Repair, mesh_parts};
+use hi_scan::scan::Scan;
+use hi_surface::HarmonicSurface;
+
+pub use measure::measure_fit;
+pub use parts::{Boundary, DroppedPart, SHEET_SPAN};
+pub use source::{MapQuality, MeshSource, SourceImage};
+pub use stages::{Progress, Stage, StageKind};
+
+use crate::contours::contour_image;
+use crate::distance::{Hausdorff, distances_to_surface, hausdorff};
+use crate::domain::Domain;
+use crate::layout_mesh::LayoutMesh;
+use crate::regularise::{Regularisation, RegularisationReport, regularise};
+use crate::shrinkwrap::{ShrinkWrapImage, ShrinkWrapOptions, settle, shrink_wrap};
+use crate::spherical::{Layout, SphericalOptions, spherical_image};
+use crate::{Error, GeometryImage, Smoothing};
+use parts::{PlannedPart, part_image, plan};
+
+/// How the geometry image is made; see the module documentation.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Method {
+    /// A parameterisation of each part of the scan's mesh, when its parts above the floor hold
+    /// at least half its area; the shrink-wrap otherwise.
+    #[default]
+    Auto,
+    /// A parameterisation of each part of the scan's mesh (over the sphere, the torus or the
+    /// square, [`Domain`]).
+    Mesh,
+    /// A surface wrapped onto the points ([`crate::shrinkwrap`]): each part of the zero set of
+    /// their signed distance parameterised, its texels projected onto them and pulled into the
+    /// creases it bridged.
+    ShrinkWrap,
+    /// Rays from a centre, the distance along each averaged over the points about it
+    /// (algorithm 2).
+    Radial,
+    /// Rays from a centre, each keeping the scan point it located, rows made contours (§5.8).
+    Contours,
+}
+
+impl Method {
+    /// The name used in reports: "mesh", "shrink-wrap", "radial", "contours" ("auto" before
+    /// it is resolved).
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Auto => "auto",
+            Self::Mesh => "mesh",
+            Self::ShrinkWrap => "shrink-wrap",
+            Self::Radial => "radial",
+            Self::Contours => "contours",
+        }
+    }
+}
+
+/// How the fit's error is measured.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum ErrorMeasure {
+    /// Not measured.
+    Off,
+    /// Both ways against the surface sampled on a grid this many times finer than its own and
+    /// triangulated: scan points to that triangulation, its samples to the scan's triangles
+    /// (or nearest points).
+    Sampled(usize),
+    /// Both ways against the mesh the fit is written as ([`FitPart::mesh`], sampled
+    /// [`mesh_oversample`] times per texel): every scan point to its closest point on the
+    /// mesh, every mesh vertex to the scan's triangles (or nearest point), exactly, by a
+    /// bounding-volume hierarchy ([`hi_scan::closest`]).
+    #[default]
+    Fast,
+    /// As [`ErrorMeasure::Fast`] with the exact hierarchy both ways, then each scan point's
+    /// closest point on the mesh refined onto the harmonic surface itself by Gauss–Newton
+    /// steps (on the bicubic Hermite interpolant of its values and derivatives at the grid,
+    /// O(h⁴) from the surface): the distance to the surface, not to its mesh.
+    Exact,
+}
+
+/// The settings of [`fit`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FitOptions {
+    /// How the geometry image is made. Default [`Method::Auto`].
+    pub method: Method,
+    /// The parameterisation of the geometry image: spherical (algorithm 2), octahedral or
+    /// flattened octahedral (§5.3). Default [`Layout::FlatOctahedron`].
+    pub layout: Layout,
+    /// Geometry image rows × columns (rows even but for the plain octahedron); `None` picks
+    /// a size from the scan ([`auto_resolution`]). A scan of several parts shares these texels
+    /// out among them by area, and a part over the torus or the square takes as many in the
+    /// aspect its map asks for. Default `None`.
+    pub resolution: Option<(usize, usize)>,
+    /// Which parts with a boundary are open sheets. Default [`Boundary::Auto`].
+    pub boundary: Boundary,
+    /// The centre of the rays; `None` for the mean of the points.
+    pub centre: Option<DVec3>,
+    /// A smoothing filter applied to the geometry image (§5.4), if any.
+    pub smoothing: Option<Smoothing>,
+    /// The regularisation of the surface through the image. Default
+    /// [`Regularisation::Auto`]: to the scan's noise level for images made from points, none
+    /// for images sampled from a mesh.
+    pub regularisation: Regularisation,
+    /// Keep about this fraction of the texels by Theorem 5.3 (each side scaled by its square
+    /// root; §5.8 keeps 0.25), if any. In (0, 1].
+    pub reduce: Option<f64>,
+    /// For the ray methods, a mesh with fewer points than this gets more, sampled on its
+    /// triangles ([`hi_scan::sampling::densify`]), for the geometry image (errors are still
+    /// measured against the scan's own points and mesh). Default 200 000; 0 turns it off.
+    pub densify: usize,
+    /// Time the 4× rasterisation of the surface that the thesis's Table 5.1 times as
+    /// "harmonic interpolation". Default false.
+    pub rasterise: bool,
+    /// How the error is measured. Default [`ErrorMeasure::Fast`].
+    pub error: ErrorMeasure,
+    /// Refuse a fit whose image has more than this fraction of filled texels (texels no scan
+    /// data reached), with [`Error::MostlyHoles`]: such a surface is mostly guesswork.
+    /// Default [`MAX_HOLE_FRACTION`]; 1 accepts any image with at least one measured texel
+    /// (an image with none is always refused).
+    pub max_hole_fraction: f64,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        Self {
+            method: Method::Auto,
+            layout: Layout::FlatOctahedron,
+            resolution: None,
+            boundary: Boundary::Auto,
+            centre: None,
+            smoothing: None,
+            regularisation: Regularisation::Auto,
+            reduce: None,
+            densify: 200_000,
+            rasterise: false,
+            error: ErrorMeasure::Fast,
+            max_hole_fraction: MAX_HOLE_FRACTION,
+        }
+    }
+}
+
+impl FitOptions {
+    /// The thesis's algorithm 2 as it stands: rays from the centroid over a 128 × 128
+    /// latitude–longitude image, interpolated with no regularisation, the 4× rasterisation of
+    /// Table 5.1 timed, the error measured on the surface sampled 4× finer; images with many
+    /// holes are fitted (the thesis fills them, and shows what that does, Figure 5.24).
+    #[must_use]
+    pub fn thesis() -> Self {
+        Self {
+            method: Method::Radial,
+            layout: Layout::Sphere,
+            resolution: Some((128, 128)),
+            regularisation: Regularisation::Off,
+            rasterise: true,
+            error: ErrorMeasure::Sampled(4),
+            max_hole_fraction: 1.0,
+            ..Self::default()
+        }
+    }
+}
+
+/// The image size [`fit`] picks for a scan of `points` points: square, a multiple of 32, with
+/// about eight distinct texels per point (half the texels of a doubled layout), from 64² to
+/// 512². Even a good parameterisation samples some parts of a surface a few times more
+/// densely than others, and the sparsest parts must still see every point of the scan.
+///
+/// # Examples
+///
+/// ```
+/// use hi_geomimage::fit::auto_resolution;
+///
+/// assert_eq!(auto_resolution(100), (64, 64));
+/// assert_eq!(auto_resolution(3_000), (224, 224));
+/// assert_eq!(auto_resolution(10_000), (416, 416));
+/// assert_eq!(auto_resolution(35_000), (512, 512));
+/// ```
+#[must_use]
+pub fn auto_resolution(points: usize) -> (usize, usize) {
+    // side²/2 ≈ 8·points.
+    let side = (16.0 * points as f64).sqrt();
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
+    let side = ((side / 32.0).ceil() as usize * 32).clamp(64, 512);
+    (side, side)
+}
+
+/// The image size [`fit`] picks for a point set of `points` points: square, a multiple of 32,
+/// about two distinct texels per point (half the texels of a doubled layout), from 64² to 512².
+/// A point set's texels are projections onto the surface its points sample, no denser than
+/// the points themselves can support.
+///
+/// # Examples
+///
+/// ```
+/// use hi_geomimage::fit::auto_resolution_points;
+///
+/// assert_eq!(auto_resolution_points(3_000), (128, 128));
+/// assert_eq!(auto_resolution_points(18_000), (288, 288));
+/// ```
+#[must_use]
+pub fn auto_resolution_points(points: usize) -> (usize, usize) {
+    auto_resolution(points / 4)
+}
+
+/// How many distinct located points the rows of a §5.8 image had.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct RowPoints {
+    /// The fewest in a row.
+    pub min: usize,
+    /// The mean over the rows.
+    pub mean: f64,
+    /// The most in a row (at most the number of columns).
+    pub max: usize,
+    /// Rows that located no point (filled from their neighbours).
+    pub empty_rows: usize,
+}
+
+/// The fit's error both ways.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FitErrors {
+    /// From each scan point (for a mesh: each point its triangles use) to the surface.
+    pub scan_to_surface: Distances,
+    /// From each sample of the surface, except those on filled texels, to the scan (its
+    /// triangles, or its nearest point for a point set).
+    pub surface_to_scan: Distances,
+    /// The largest distance from a sample on filled texels to the scan (0 when none was
+    /// filled): how far the surface had to bridge gaps in the data.
+    pub filled_to_scan_max: f64,
+    /// The fraction of the scan points farther from the surface than [`UNREACHED`] of the
+    /// diagonal: parts of the scan the surface did not reach.
+    pub unreached_fraction: f64,
+}
+
+/// What was done with one part of the scan, and how well its surface fits.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PartReport {
+    /// Its name: `part 1`, `part 2`, … by area, largest first (the ray methods' one surface is
+    /// `part 1`).
+    pub name: String,
+    /// The domain it was fitted over.
+    pub domain: Domain,
+    /// Why that domain, in words.
+    pub why: String,
+    /// Its share of the scan's area (1 for a surface of the whole scan).
+    pub area_fraction: f64,
+    /// Its genus once its holes are closed (before any handle is cut).
+    pub genus: usize,
+    /// Its boundary loops, before any was closed.
+    pub boundary_loops: usize,
+    /// What was repaired to make it the surface its domain needs (holes filled, handles cut).
+    pub repair: Repair,
+    /// The image size (rows, columns).
+    pub image_size: (usize, usize),
+    /// The grid of the final surface (rows, columns).
+    pub surface_size: (usize, usize),
+    /// The fraction of the rays from the centre that met several shells (0 where no rays were
+    /// cast).
+    pub non_star_fraction: f64,
+    /// The fraction of the image with no data, filled (holes, cuts).
+    pub hole_fraction: f64,
+    /// The regularisation applied.
+    pub regularisation: RegularisationReport,
+    /// The error of the reduction, if one was made.
+    pub reduction: Option<ReductionError>,
+    /// Both ways: the scan points nearest this part's surface to it, and its samples to the
+    /// scan, if measured (summaries: the per-point distances are in [`FitReport::errors`]).
+    pub errors: Option<FitErrors>,
+}
+
+/// What [`fit`] did and how well the result fits.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FitReport {
+    /// How the images were made (never [`Method::Auto`]).
+    pub method: Method,
+    /// Why [`Method::Auto`] chose it, or why the mesh could not be used.
+    pub method_reason: String,
+    /// Points of the scan (finite ones; for a mesh, those its triangles use).
+    pub points: usize,
+    /// Points of a mesh that no triangle uses, left out of the fit and its error.
+    pub unused_points: usize,
+    /// Points the geometry images were built from: for the ray methods, the scan's and those
+    /// sampled on its triangles when it was sparse; for a large point cloud, its summary.
+    pub image_points: usize,
+    /// Points the reader dropped for a non-finite coordinate.
+    pub dropped_points: usize,
+    /// The parts fitted, largest first.
+    pub parts: Vec<PartReport>,
+    /// The parts left out: below the floor, or not to be made a surface.
+    pub dropped_parts: Vec<DroppedPart>,
+    /// The floor: the least share of the scan's area a part needs to be fitted.
+    pub part_floor: f64,
+    /// The image size of the largest part (rows, columns).
+    pub image_size: (usize, usize),
+    /// The fraction of rays from the centre that met several shells: the scan is not
+    /// star-shaped about the centre there. Where [`SourceImage::follows_outer_shell`], the fit
+    /// follows the outermost shell in those directions; otherwise it is only a description of
+    /// the scan's shape (0 where no rays were cast).
+    pub non_star_fraction: f64,
+    /// The fraction of the largest part's image with no data, filled (holes).
+    pub hole_fraction: f64,
+    /// For [`Method::Contours`], the distinct located points per row.
+    pub row_points: Option<RowPoints>,
+    /// The scan's noise level as estimated for the regularisation ([`hi_scan::noise`]), when
+    /// it was.
+    pub noise: Option<f64>,
+    /// The regularisation applied to the largest part.
+    pub regularisation: RegularisationReport,
+    /// The grid of the largest part's final surface (rows, columns).
+    pub surface_size: (usize, usize),
+    /// The error of the largest part's reduction, if one was made.
+    pub reduction: Option<ReductionError>,
+    /// Distances from every scan point to the nearest surface, if measured.
+    pub errors: Option<Distances>,
+    /// Both ways, over every part, if measured (its scan → surface without the per-point
+    /// distances, which are in [`FitReport::errors`]).
+    pub both_ways: Option<FitErrors>,
+    /// Both-way distances to the scan's mesh (thesis measurement with
+    /// [`ErrorMeasure::Sampled`] on a mesh scan), if measured.
+    pub hausdorff: Option<Hausdorff>,
+}
+
+/// One fitted part: its surface, images and mesh.
+#[derive(Clone, Debug)]
+pub struct FitPart {
+    /// The harmonic surface; [`Domain`] says which (u, v) cover the part once.
+    pub surface: HarmonicSurface<DVec3>,
+    /// The raw geometry image with its diagnostic maps (before smoothing and reduction).
+    pub source: SourceImage,
+    /// The geometry image the surface interpolates (after smoothing, regularisation and
+    /// reduction).
+    pub image: GeometryImage,
+    /// The domain of the image.
+    pub domain: Domain,
+    /// The mesh of the surface the error was measured on (and that `hi fit` writes), when
+    /// the error was measured by [`ErrorMeasure::Fast`] or [`ErrorMeasure::Exact`].
+    pub mesh: Option<LayoutMesh>,
+}
+
+/// The fitted parts of a scan with their report and stage times.
+#[derive(Clone, Debug)]
+pub struct Fit {
+    /// The parts, largest first (the ray methods give one).
+    pub parts: Vec<FitPart>,
+    /// Diagnostics and errors: the same for the same input and options.
+    pub report: FitReport,
+    /// The stages, in order, with their wall-clock times (which differ from run to run, and
+    /// so are kept out of the report); a stage of several parts is timed over all of them.
+    pub stages: Vec<Stage>,
+}
+
+impl Fit {
+    /// The largest part (every fit has one).
+    #[must_use]
+    pub fn largest(&self) -> &FitPart {
+        &self.parts[0]
+    }
+}
+
+/// The number of mesh samples per texel along each axis for the mesh of a fitted surface
+/// (and its error measured with [`ErrorMeasure::Fast`]): enough for at least 192 samples
+/// around the longer axis, so that a coarse image still gives a mesh that follows its surface,
+/// and 1 from 192² up, where the texels are as close as the scan's points.
+#[must_use]
+pub fn mesh_oversample(surface: &HarmonicSurface<DVec3>) -> usize {
+    192usize.div_ceil(surface.m().max(surface.n()).max(1)).max(1)
+}
+
+/// A part of the scan with less than this share of its area is not fitted (it is named in
+/// [`FitReport::dropped_parts`]): loose scraps and specks.
+pub const PART_FLOOR: f64 = 0.002;
+
+/// A part with fewer vertices than this is not fitted.
+pub const PART_MIN_VERTICES: usize = 12;
+
+/// Below this share of the scan's area in the parts above the floor, [`Method::Auto`] does not
+/// parameterise the mesh's parts but wraps its points: the scraps are most of the scan.
+const MIN_AREA_KEPT: f64 = 0.5;
+
+/// A scan point farther than this fraction of the diagonal from the surface is unreached.
+pub const UNREACHED: f64 = 0.02;
+
+/// Above this fraction of filled texels a fit is refused by default
+/// ([`FitOptions::max_hole_fraction`]): the image is mostly guesswork.
+pub const MAX_HOLE_FRACTION: f64 = 0.5;
+
+/// Points in each local quadric fit of a point set.
+const NEIGHBOURS: usize = 16;
+
+/// A cloud is summarised ([`hi_scan::cloud`]) to about this many points per distinct texel of
+/// its images: enough for the local surface the texels settle on to follow what the image can
+/// hold (a finer summary changes the fit by less than the scan's noise), few enough that the
+/// zero set and its parameterisation cost what the image does.
+const SUMMARY_POINTS: f64 = 0.5;
+
+/// A cloud with more than this many times the points of its summary is summarised; a smaller
+/// one is used as it is.
+const SUMMARY_RATIO: f64 = 2.0;
+
+/// The points its triangles use, the triangles renumbered, and how many were unused; a point
+/// set as it is.
+fn referenced(scan: &Scan) -> (Cow<'_, [DVec3]>, Vec<[u32; 3]>, usize) {
+    if scan.triangles.is_empty() {
+        return (Cow::Borrowed(&scan.points), Vec::new(), 0);
+    }
+    let mut index = vec![u32::MAX; scan.points.len()];
+    let mut points = Vec::with_capacity(scan.points.len());
+    let triangles: Vec<[u32; 3]> = scan
+        .triangles
+        .iter()
+        .map(|t| {
+            t.map(|k| {
+                let k = k as usize;
+                if index[k] == u32::MAX {
+                    index[k] = u32::try_from(points.len()).unwrap_or(u32::MAX);
+                    points.push(scan.points[k]);
+                }
+                index[k]
+            })
+        })
+        .collect();
+    let unused = scan.points.len() - points.len();
+    (Cow::Owned(points), triangles, unused)
+}
+
+/// Times the stages of a fit and tells the progress display.
+struct Clock<'a> {
+    stages: Vec<Stage>,
+    on_stage: &'a mut dyn FnMut(Progress),
+}
+
+impl Clock<'_> {
+    /// Runs `work` as `stage` of part `part` of `parts`, adding its time to the stage's.
+    fn run<T>(
+        &mut self,
+        stage: StageKind,
+        (part, parts): (usize, usize),
+        work: impl FnOnce() -> T,
+    ) -> T {
+        (self.on_stage)(Progress { stage, part, parts });
+        let start = Instant::now();
+        let out = work();
+        let seconds = start.elapsed().as_secs_f64();
+        match self.stages.iter_mut().find(|s| s.kind == stage) {
+            Some(s) => s.seconds += seconds,
+            None => self.stages.push(Stage { kind: stage, seconds }),
+        }
+        out
+    }
+}
+
+/// The options [`fit`] checks before it starts.
+fn check_options(options: &FitOptions) -> Result<(), Error> {
+    if let Some(r) = options.reduce
+        && !(r > 0.0 && r <= 1.0)
+    {
+        return Err(Error::InvalidOption {
+            name: "reduce",
+            value: r,
+            expected: "0 < fraction ≤ 1",
+        });
+    }
+    if !(0.0..=1.0).contains(&options.max_hole_fraction) {
+        return Err(Error::InvalidOption {
+            name: "max_hole_fraction",
+            value: options.max_hole_fraction,
+            expected: "0 ≤ fraction ≤ 1",
+        });
+    }
+    if let Some((rows, cols)) = options.resolution {
+        crate::image::check_resolution(rows, cols)?;
+    }
+    Ok(())
+}
+
+/// Refuses points that span no surface: all on a line (for any fit), or all on a plane when
+/// every part must be closed (a closed surface needs a volume).
+fn check_spread(points: &[DVec3], boundary: Boundary) -> Result<(), Error> {
+    let n = points.len().max(1) as f64;
+    let centre = points.iter().copied().sum::<DVec3>() / n;
+    let mut m = glam::DMat3::ZERO;
+    for p in points {
+        let d = *p - centre;
+        m += glam::DMat3::from_cols(d * d.x, d * d.y, d * d.z);
+    }
+    let m = m * (1.0 / n);
+    // The covariance's eigenvalues λ₁ ≥ λ₂ ≥ λ₃ from its invariants.
+    let trace = m.x_axis.x + m.y_axis.y + m.z_axis.z;
+    let diagonal = bounding_diagonal(points);
+    let tiny = (1e-9 * diagonal).powi(2);
+    let a = m.to_cols_array();
+    let minors = a[0] * a[4] - a[1] * a[3] + a[0] * a[8] - a[2] * a[6] + a[4] * a[8] - a[5] * a[7];
+    // λ₂ + λ₃ is small iff the points lie near a line: minors ≈ λ₁(λ₂ + λ₃).
+    if trace <= tiny || minors <= tiny * trace {
+        return Err(Error::Degenerate { what: "the points lie on a line: they span no surface" });
+    }
+    if boundary == Boundary::Closed && m.determinant().abs() <= tiny * minors {
+        return Err(Error::Degenerate {
+            what: "the points lie on a plane: a closed surface needs a volume (fit them as an open sheet)",
+        });
+    }
+    Ok(())
+}
+
+/// A part's image, and what is known of the part before its surface.
+struct Sourced {
+    name: String,
+    domain: Domain,
+    why: String,
+    area_fraction: f64,
+    genus: usize,
+    boundary_loops: usize,
+    repair: Repair,
+    source: SourceImage,
+}
+
+/// The images of a scan's parts, and how they were made.
+struct Sources {
+    parts: Vec<Sourced>,
+    dropped: Vec<DroppedPart>,
+    method: Method,
+    reason: String,
+    /// The points the images were made from (the scan's, or its summary).
+    image_points: Vec<DVec3>,
+}
+
+/// The texels a part with `area_fraction` of the fitted parts' area gets of `texels`.
+fn share(texels: usize, area_fraction: f64, kept: f64) -> usize {
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a fraction of a count"
+    )]
+    let t = (texels as f64 * area_fraction / kept.max(f64::MIN_POSITIVE)).round() as usize;
+    t.max(1)
+}
+
+/// The user's image size, for the one part of a scan whose one part is a sphere.
+fn user_size(options: &FitOptions, planned: &[PlannedPart]) -> Option<(usize, usize)> {
+    match planned {
+        [only] if matches!(only.domain, Domain::Sphere(_)) => options.resolution,
+        _ => None,
+    }
+}
+
+/// A sentence on what the planned parts are: how many, what was dropped.
+fn parts_sentence(planned: &[PlannedPart], dropped: &[DroppedPart]) -> String {
+    let mut s = match planned.len() {
+        1 => String::new(),
+        n => format!("; {n} parts, each fitted on its own"),
+    };
+    if !dropped.is_empty() {
+        s.push_str(&format!(
+            "; {} {} left out",
+            dropped.len(),
+            if dropped.len() == 1 { "part" } else { "parts" }
+        ));
+    }
+    s
+}
+
+/// The images of a mesh's parts, each parameterised over its domain; `Ok(Err(why))` when the
+/// mesh cannot stand for the scan (its parts above the floor hold too little of its area, or
+/// none can be made a surface) and `force` is off.
+fn mesh_sources(
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    options: &FitOptions,
+    texels: usize,
+    force: bool,
+    clock: &mut Clock<'_>,
+) -> Result<Result<Sources, String>, Error> {
+    let parts: MeshParts = clock.run(StageKind::Parts, (0, 1), || mesh_parts(points, triangles))?;
+    let (planned, dropped) = clock.run(StageKind::Parts, (0, 1), || {
+        plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+    });
+    let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
+    if planned.is_empty() || (!force && kept < MIN_AREA_KEPT) {
+        let why = if planned.is_empty() {
+            match dropped.first() {
+                Some(d) => {
+                    format!("the scan's mesh gives no part to fit ({}: {})", d.name, d.reason)
+                }
+                None => "the scan's mesh gives no part to fit".to_owned(),
+            }
+        } else {
+            format!(
+                "the scan's mesh has {} parts and those above the floor hold only {:.1} % of its area",
+                parts.parts.len(),
+                100.0 * kept
+            )
+        };
+        if force {
+            return Err(Error::Topology { what: why });
+        }
+        return Ok(Err(why));
+    }
+    let n = planned.len();
+    let size = user_size(options, &planned);
+    let mut out = Vec::with_capacity(n);
+    for (k, part) in planned.iter().enumerate() {
+        let image = clock.run(StageKind::GeometryImage, (k, n), || {
+            part_image(part, share(texels, part.area_fraction, kept), size)
+        })?;
+        let mut repair = part.closed.repair;
+        repair.welded_points = parts.welded_points;
+        repair.dropped_triangles = parts.dropped_triangles;
+        repair.components = parts.parts.len();
+        out.push(Sourced {
+            name: part.name.clone(),
+            domain: part.domain,
+            why: part.why.clone(),
+            area_fraction: part.area_fraction,
+            genus: part.topology.genus,
+            boundary_loops: part.topology.loops.len(),
+            repair,
+            source: SourceImage::Mesh(MeshSource {
+                image: image.image,
+                repair,
+                area_kept: part.area_fraction,
+                quality: image.quality,
+                filled: image.filled,
+                filled_fraction: image.filled_fraction,
+            }),
+        });
+    }
+    let single = &planned[0];
+    let mut reason = match (n, single.domain) {
+        (1, Domain::Sphere(_)) => format!("the scan's mesh is one part: {}", single.why),
+        (1, _) => format!("the scan's mesh is one part, {}", single.why),
+        _ => "the scan's mesh is parameterised part by part".to_owned(),
+    };
+    reason.push_str(&parts_sentence(&planned, &dropped));
+    Ok(Ok(Sources {
+        parts: out,
+        dropped,
+        method: Method::Mesh,
+        reason,
+        image_points: points.to_vec(),
+    }))
+}
+
+/// The images of a point set's parts: the zero set of its signed distance split into parts,
+/// each parameterised over its domain and settled onto the points; the radial image wrapped
+/// where the zero set gives no part. A cloud larger than the images can hold is summarised
+/// first.
+fn point_sources(
+    points: &[DVec3],
+    normals: Option<&[DVec3]>,
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    texels: usize,
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "a count")]
+    let target = (texels as f64 * SUMMARY_POINTS) as usize;
+    let (reps, rep_normals) = if points.len() as f64 > SUMMARY_RATIO * target as f64 {
+        clock.run(StageKind::Summary, (0, 1), || -> Result<_, Error> {
+            let cell = cell_for_count(points, target)?;
+            let summary = summarise(points, normals, cell)?;
+            Ok((summary.points, summary.normals))
+        })?
+    } else {
+        (points.to_vec(), normals.map(<[DVec3]>::to_vec))
+    };
+    let built = clock.run(StageKind::Parts, (0, 1), || -> Result<_, Error> {
+        let surface = PointSurface::try_new(&reps, rep_normals.as_deref(), NEIGHBOURS)?;
+        let parts =
+            surface.zero_set(CELL * surface.spacing()).and_then(|(v, t)| mesh_parts(&v, &t));
+        let planned = parts.map(|parts| {
+            plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+        });
+        Ok((surface, planned))
+    })?;
+    let (mut surface, planned) = built;
+    let (planned, dropped) = match planned {
+        Ok((planned, dropped)) if !planned.is_empty() => (planned, dropped),
+        outcome => {
+            // No part of the zero set to parameterise: the rays, wrapped.
+            let why = match outcome {
+                Err(e) => format!("their zero set gave no surface ({e})"),
+                Ok((_, dropped)) => match dropped.first() {
+                    Some(d) => {
+                        format!("their zero set gave no part to fit ({}: {})", d.name, d.reason)
+                    }
+                    None => "their zero set is empty".to_owned(),
+                },
+            };
+            let wrap = ShrinkWrapOptions {
+                layout: options.layout,
+                rows,
+                cols,
+                centre: options.centre,
+                ..ShrinkWrapOptions::default()
+            };
+            let image = clock.run(StageKind::GeometryImage, (0, 1), || {
+                shrink_wrap(&reps, rep_normals.as_deref(), &wrap)
+            })?;
+            let reason = format!("the points shrink-wrapped from the rays: {why}");
+            return Ok(Sources {
+                parts: vec![Sourced {
+                    name: "part 1".to_owned(),
+                    domain: Domain::Sphere(options.layout),
+                    why: "rays from the centre, wrapped onto the points".to_owned(),
+                    area_fraction: 1.0,
+                    genus: 0,
+                    boundary_loops: 0,
+                    repair: Repair::default(),
+                    source: SourceImage::ShrinkWrap(image),
+                }],
+                dropped: Vec::new(),
+                method: Method::ShrinkWrap,
+                reason,
+                image_points: reps,
+            });
+        }
+    };
+    // Every patch faces out as the parts' surfaces do.
+    let (samples, outward) = parts::outward_samples(&planned);
+    surface.orient_to(&samples, &outward);
+    let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
+    let n = planned.len();
+    let size = user_size(options, &planned);
+    let mut out = Vec::with_capacity(n);
+    for (k, part) in planned.iter().enumerate() {
+        let image = clock.run(StageKind::GeometryImage, (k, n), || -> Result<_, Error> {
+            let image = part_image(part, share(texels, part.area_fraction, kept), size)?;
+            let (r, c) = (image.image.rows(), image.image.cols());
+            let settled = settle(
+                &surface,
+                &reps,
+                image.image.texels().to_vec(),
+                Some(&image.filled),
+                part.domain,
+                (r, c),
+                0,
+            );
+            Ok(ShrinkWrapImage {
+                image: GeometryImage::try_new(r, c, settled.texels)?,
+                filled: settled.filled,
+                filled_fraction: settled.filled_fraction,
+                non_star_fraction: 0.0,
+                implicit_start: true,
+                reparameterised: true,
+                rms_move: settled.rms_move,
+                pulled: settled.pulled,
+            })
+        })?;
+        out.push(Sourced {
+            name: part.name.clone(),
+            domain: part.domain,
+            why: part.why.clone(),
+            area_fraction: part.area_fraction,
+            genus: part.topology.genus,
+            boundary_loops: part.topology.loops.len(),
+            repair: part.closed.repair,
+            source: SourceImage::ShrinkWrap(image),
+        });
+    }
+    let mut reason = format!(
+        "the points shrink-wrapped: the zero set of their signed distance{}",
+        if n == 1 { format!(", {}", planned[0].why) } else { " split into parts".to_owned() }
+    );
+    if reps.len() < points.len() {
+        reason.push_str(&format!(" (from a summary of {} points)", reps.len()));
+    }
+    reason.push_str(&parts_sentence(&planned, &dropped));
+    Ok(Sources { parts: out, dropped, method: Method::ShrinkWrap, reason, image_points: reps })
+}
+
+/// The one image of the ray methods (algorithm 2, §5.8) over the whole scan, its sparse mesh
+/// densified first.
+fn ray_sources(
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    let dense = if triangles.is_empty() {
+        points.to_vec()
+    } else {
+        hi_scan::sampling::densify(
+            &Scan { points: points.to_vec(), triangles: triangles.to_vec(), ..Scan::default() },
+            options.densify,
+        )
+    };
+    let rays = SphericalOptions {
+        layout: options.layout,
+        rows,
+        cols,
+        centre: options.centre,
+        ..SphericalOptions::default()
+    };
+    let source = clock.run(StageKind::GeometryImage, (0, 1), || -> Result<_, Error> {
+        Ok(match options.method {
+            Method::Contours => SourceImage::Contours(contour_image(&dense, &rays)?),
+            _ => SourceImage::Radial(spherical_image(&dense, &rays)?),
+        })
+    })?;
+    Ok(Sources {
+        parts: vec![Sourced {
+            name: "part 1".to_owned(),
+            domain: Domain::Sphere(options.layout),
+            why: "rays from the centre".to_owned(),
+            area_fraction: 1.0,
+            genus: 0,
+            boundary_loops: 0,
+            repair: Repair::default(),
+            source,
+        }],
+        dropped: Vec::new(),
+        method: options.method,
+        reason: format!("{} asked for", options.method.name()),
+        image_points: dense,
+    })
+}
+
+/// A part's surface, from its image through smoothing, regularisation and reduction.
+struct Surfaced {
+    surface: HarmonicSurface<DVec3>,
+    image: GeometryImage,
+    regularisation: RegularisationReport,
+    reduction: Option<ReductionError>,
+}
+
+/// Smoothing, regularisation (`how`) and reduction of a part's image, and its surface.
+fn surface_of(
+    source: &SourceImage,
+    options: &FitOptions,
+    how: Regularisation,
+    part: (usize, usize),
+    clock: &mut Clock<'_>,
+) -> Result<Surfaced, Error> {
+    let mut image = source.image().clone();
+    if let Some(filter) = options.smoothing {
+        image = clock.run(StageKind::Smoothing, part, || image.smoothed(filter))?;
+    }
+    let regularisation = if how == Regularisation::Off {
+        RegularisationReport { lambda: 0.0, kept: 1.0, rms_change: 0.0, max_change: 0.0 }
+    } else {
+        let (smooth, report) =
+            clock.run(StageKind::Regularisation, part, || regularise(&image, how))?;
+        image = smooth;
+        report
+    };
+    let mut reduction = None;
+    if let Some(fraction) = options.reduce.filter(|&f| f < 1.0) {
+        let scale = fraction.sqrt();
+        // Keep the rows even, so that both poles stay texels of a spherical image.
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "0 < scale < 1 times a size ≤ 2²⁶"
+        )]
+        let (rows, cols) = (
+            (((image.rows() as f64 * scale) / 2.0).round() as usize * 2).max(2),
+            (((image.cols() as f64 * scale) / 2.0).round() as usize * 2).max(2),
+        );
+        let (reduced, error) =
+            clock.run(StageKind::Reduction, part, || image.resampled(rows, cols))?;
+        image = reduced;
+        reduction = Some(error);
+    }
+    let surface = clock.run(StageKind::HarmonicSurface, part, || image.surface())?;
+    if options.rasterise {
+        clock.run(StageKind::Rasterisation, part, || -> Result<(), Error> {
+            let raster = surface.sample_uniform(2 * surface.m(), 2 * surface.n(), 0, 0)?;
+            std::hint::black_box(&raster);
+            Ok(())
+        })?;
+    }
+    Ok(Surfaced { surface, image, regularisation, reduction })
+}
+
+/// The flags of the source image's filled texels on the surface's grid (they differ after a
+/// reduction).
+fn filled_on_grid(source: &SourceImage, surface: &HarmonicSurface<DVec3>) -> Option<Vec<bool>> {
+    source.filled().map(|f| {
+        let (rows, cols) = (source.image().rows(), source.image().cols());
+        let (sm, sn) = (surface.m(), surface.n());
+        (0..sm * sn).map(|t| f[(t / sn * rows / sm) * cols + (t % sn) * cols / sn]).collect()
+    })
+}
+
+/// Fits a harmonic surface to each part of a scan; see the module documentation. `on_stage`
+/// is told each stage as it starts, and of which part (for a progress display).
+///
+/// # Errors
+///
+/// [`Error::InvalidOption`] for `reduce` outside (0, 1] or `max_hole_fraction` outside
+/// [0, 1]; [`Error::InvalidResolution`] for a bad `resolution`; [`Error::TooFewPoints`] for a
+/// scan with fewer than 4 points; [`Error::Degenerate`] for points all on a line, or all on a
+/// plane with [`Boundary::Closed`]; [`Error::Topology`] when [`Method::Mesh`] is asked for and
+/// no part of the mesh can be parameterised; [`Error::MostlyHoles`] when more than
+/// [`FitOptions::max_hole_fraction`] of every part's image (or all of it) had no data; the
+/// errors of the image builders, [`GeometryImage::smoothed`], [`regularise`] and
+/// [`GeometryImage::resampled`].
+pub fn fit(
+    scan: &Scan,
+    options: &FitOptions,
+    on_stage: &mut dyn FnMut(Progress),
+) -> Result<Fit, Error> {
+    check_options(options)?;
+    let (points, triangles, unused_points) = referenced(scan);
+    if points.len() < 4 {
+        return Err(Error::TooFewPoints { found: points.len(), needed: 4 });
+    }
+    check_spread(&points, options.boundary)?;
+    let (rows, cols) = options.resolution.unwrap_or_else(|| {
+        if triangles.is_empty() {
+            auto_resolution_points(points.len())
+        } else {
+            auto_resolution(points.len())
+        }
+    });
+    let texels = Domain::Sphere(options.layout).distinct_texels(rows, cols);
+    let mut clock = Clock { stages: Vec::new(), on_stage };
+    let normals = if triangles.is_empty() { scan.normals.as_deref() } else { None };
+    let sources = match options.method {
+        Method::Radial | Method::Contours => {
+            ray_sources(&points, &triangles, options, (rows, cols), &mut clock)?
+        }
+        Method::Auto | Method::Mesh if !triangles.is_empty() => {
+            match mesh_sources(
+                &points,
+                &triangles,
+                options,
+                texels,
+                options.method == Method::Mesh,
+                &mut clock,
+            )? {
+                Ok(sources) => sources,
+                Err(why) => {
+                    let mut s =
+                        point_sources(&points, normals, options, (rows, cols), texels, &mut clock)?;
+                    s.reason = format!("{why}; {}", s.reason);
+                    s
+                }
+            }
+        }
+        Method::Mesh => {
+            return Err(Error::Topology {
+                what: "the scan has no triangles to parameterise".to_owned(),
+            });
+        }
+        Method::Auto | Method::ShrinkWrap => {
+            let mut s = point_sources(&points, normals, options, (rows, cols), texels, &mut clock)?;
+            if triangles.is_empty() && options.method == Method::Auto {
+                s.reason = format!("the scan has no triangles; {}", s.reason);
+            }
+            s
+        }
+    };
+    let Sources { parts: mut sourced, mut dropped, method, reason: method_reason, image_points } =
+        sources;
+    // Parts whose images are mostly guesswork are left out; if every part's is, the fit is.
+    let worst = sourced.iter().map(|p| p.source.hole_fraction()).fold(0.0, f64::max);
+    if sourced.iter().all(|p| {
+        p.source.hole_fraction() > options.max_hole_fraction || p.source.hole_fraction() >= 1.0
+    }) {
+        return Err(Error::MostlyHoles { fraction: worst });
+    }
+    sourced.retain(|p| {
+        let bad =
+            p.source.hole_fraction() > options.max_hole_fraction || p.source.hole_fraction() >= 1.0;
+        if bad {
+            dropped.push(DroppedPart {
+                name: p.name.clone(),
+                vertices: 0,
+                area_fraction: p.area_fraction,
+                reason: format!(
+                    "{:.0} % of its image found no scan data",
+                    100.0 * p.source.hole_fraction()
+                ),
+            });
+        }
+        !bad
+    });
+    // Images sampled from a mesh lie on the scan's surface: nothing to smooth away. Images made
+    // from points carry the points' scatter: smooth it away, and no more.
+    let mut noise = None;
+    let how = match (options.regularisation, method) {
+        (Regularisation::Auto, Method::Mesh) => Regularisation::Off,
+        (Regularisation::Auto, _) => {
+            let sigma = hi_scan::noise::noise_estimate(&image_points);
+            noise = Some(sigma);
+            Regularisation::Noise(sigma)
+        }
+        (r, _) => r,
+    };
+    let n = sourced.len();
+    let mut surfaced = Vec::with_capacity(n);
+    for (k, part) in sourced.iter().enumerate() {
+        surfaced.push(surface_of(&part.source, options, how, (k, n), &mut clock)?);
+    }
+    // The error.
+    let (mut errors, mut both_ways, mut both_mesh) = (None, None, None);
+    let mut by_part: Vec<Option<FitErrors>> = vec![None; n];
+    let mut meshes: Vec<Option<LayoutMesh>> = vec![None; n];
+    match options.error {
+        ErrorMeasure::Off => {}
+        ErrorMeasure::Sampled(oversample) if method != Method::Mesh && n == 1 => {
+            // The thesis's measurement, as the figures of §5.3 report it.
+            let surface = &surfaced[0].surface;
+            clock.run(StageKind::FitError, (0, 1), || -> Result<(), Error> {
+                if triangles.is_empty() {
+                    errors = Some(distances_to_surface(surface, &points, oversample)?);
+                } else {
+                    let h = hausdorff(surface, &points, &triangles, oversample)?;
+                    errors = Some(h.scan_to_surface.clone());
+                    both_mesh = Some(h);
+                }
+                Ok(())
+            })?;
+        }
+        measure => {
+            let filled: Vec<Option<Vec<bool>>> = sourced
+                .iter()
+                .zip(&surfaced)
+                .map(|(p, s)| filled_on_grid(&p.source, &s.surface))
+                .collect();
+            let measured: Vec<measure::Measured<'_>> = sourced
+                .iter()
+                .zip(&surfaced)
+                .zip(&filled)
+                .map(|((p, s), f)| measure::Measured {
+                    surface: &s.surface,
+                    domain: p.domain,
+                    filled: f.as_deref(),
+                    // An image of a mesh's parameterisation left as it was sampled has its
+                    // texels on the scan's triangles.
+                    texels_on_scan: method == Method::Mesh
+                        && s.regularisation.lambda == 0.0
+                        && options.smoothing.is_none()
+                        && s.reduction.is_none(),
+                })
+                .collect();
+            let (all, each, part_meshes) = clock.run(StageKind::FitError, (0, 1), || {
+                measure::measure_parts(&measured, &points, &triangles, measure)
+            })?;
+            // The per-point distances once, in `errors`.
+            let mut all = all;
+            let per_point = std::mem::take(&mut all.scan_to_surface.per_point);
+            errors = Some(Distances { per_point, ..all.scan_to_surface.clone() });
+            both_ways = Some(all);
+            by_part = each.into_iter().map(Some).collect();
+            meshes = part_meshes.into_iter().map(Some).collect();
+        }
+    }
+    let reports: Vec<PartReport> = sourced
+        .iter()
+        .zip(&surfaced)
+        .zip(by_part)
+        .map(|((p, s), e)| PartReport {
+            name: p.name.clone(),
+            domain: p.domain,
+            why: p.why.clone(),
+            area_fraction: p.area_fraction,
+            genus: p.genus,
+            boundary_loops: p.boundary_loops,
+            repair: p.repair,
+            image_size: (p.source.image().rows(), p.source.image().cols()),
+            surface_size: (s.surface.m(), s.surface.n()),
+            non_star_fraction: p.source.non_star_fraction(),
+            hole_fraction: p.source.hole_fraction(),
+            regularisation: s.regularisation,
+            reduction: s.reduction,
+            errors: e,
+        })
+        .collect();
+    let first = &sourced[0];
+    let report = FitReport {
+        method,
+        method_reason,
+        points: points.len(),
+        unused_points,
+        image_points: image_points.len(),
+        dropped_points: scan.dropped_points,
+        image_size: (first.source.image().rows(), first.source.image().cols()),
+        non_star_fraction: first.source.non_star_fraction(),
+        hole_fraction: first.source.hole_fraction(),
+        row_points: match &first.source {
+            SourceImage::Contours(c) => Some(RowPoints {
+                min: c.row_points.iter().copied().min().unwrap_or(0),
+                mean: c.row_points.iter().sum::<usize>() as f64 / c.row_points.len().max(1) as f64,
+                max: c.row_points.iter().copied().max().unwrap_or(0),
+                empty_rows: c.empty_rows.len(),
+            }),
+            _ => None,
+        },
+        noise,
+        regularisation: surfaced[0].regularisation,
+        surface_size: (surfaced[0].surface.m(), surfaced[0].surface.n()),
+        reduction: surfaced[0].reduction,
+        errors,
+        both_ways,
+        hausdorff: both_mesh,
+        parts: reports,
+        dropped_parts: dropped,
+        part_floor: PART_FLOOR,
+    };
+    let parts = sourced
+        .into_iter()
+        .zip(surfaced)
+        .zip(meshes)
+        .map(|((p, s), mesh)| FitPart {
+            surface: s.surface,
+            source: p.source,
+            image: s.image,
+            domain: p.domain,
+            mesh,
+        })
+        .collect();
+    Ok(Fit { parts, report, stages: clock.stages })
+}

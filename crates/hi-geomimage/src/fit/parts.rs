@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: MIT
+//! A scan's parts and the surface each becomes: every connected part above a size floor is
+//! fitted on its own, over the domain its topology asks for ([`Domain`]):
+//!
+//! | the part | its surface | its domain |
+//! |---|---|---|
+//! | an open sheet: a boundary loop whose cap would span at least [`SHEET_SPAN`] of the part's area (or any boundary, with [`Boundary::Open`]) | a disc, the other holes closed, handles cut | [`Domain::Sheet`] |
+//! | closed (holes closed) of genus 1 | the torus, no cut | [`Domain::Torus`] |
+//! | closed (holes closed) of any other genus | a sphere, handles cut | [`Domain::Sphere`] |
+//!
+//! A handle whose shortest loop is tiny ([`TORUS_MIN_LOOP`], [`TORUS_MIN_EDGES`]) is two sheets that nearly touch,
+//! not a ring: it is cut. Should a part not be made the surface its topology asks for, the next
+//! one is tried, the sphere last; a part that cannot be made any (one-sided) is left out, and
+//! said so.
+
+use glam::DVec3;
+use hi_scan::repair::{
+    ClosedMesh, Closing, MeshParts, Topology, close_part, part_topology, shortest_handle,
+};
+
+use super::source::MapQuality;
+use crate::discparam::{
+    DiscParamOptions, parameterise_disc, reflect_periodic, reflect_periodic_mask,
+};
+use crate::domain::Domain;
+use crate::par::*;
+use crate::sphereparam::{SphereParamOptions, parameterise};
+use crate::spherical::Layout;
+use crate::torusparam::{TorusParamOptions, parameterise_torus};
+use crate::{Error, GeometryImage};
+
+/// A part whose widest boundary loop would need a cap of at least this share of the part's own
+/// area is an open sheet (a terrain, a face mask, a range image: about 1); a closed scan's
+/// holes need far less (a head open at the neck: under 0.1).
+pub const SHEET_SPAN: f64 = 0.25;
+
+/// A part of genus 1 whose handle's shortest loop is shorter than this share of the square root
+/// of its area (or than [`TORUS_MIN_EDGES`] of its edges) is not a ring but two sheets that
+/// nearly touch (a tunnel of a zero set, a limb grazing a body): its handle is cut rather than
+/// fitted over the torus. A mug's handle or a kitten's tail loop is several times longer.
+pub const TORUS_MIN_LOOP: f64 = 0.04;
+
+/// A part of genus 1 whose handle's shortest loop is shorter than this many of its mean edge
+/// lengths is taken for a tunnel, as with [`TORUS_MIN_LOOP`].
+pub const TORUS_MIN_EDGES: usize = 12;
+
+/// Whether the one handle of the closed genus-1 mesh `closed` (of scan area `area`) is a tunnel
+/// between sheets that nearly touch ([`TORUS_MIN_LOOP`], [`TORUS_MIN_EDGES`]).
+fn is_tunnel(closed: &ClosedMesh, area: f64) -> bool {
+    let edges: f64 = closed
+        .triangles
+        .iter()
+        .map(|t| {
+            (0..3)
+                .map(|k| {
+                    closed.positions[t[k] as usize]
+                        .distance(closed.positions[t[(k + 1) % 3] as usize])
+                })
+                .sum::<f64>()
+        })
+        .sum::<f64>()
+        / (3 * closed.triangles.len()).max(1) as f64;
+    let floor = (TORUS_MIN_LOOP * area.sqrt()).max(TORUS_MIN_EDGES as f64 * edges);
+    shortest_handle(closed).is_some_and(|l| l < floor)
+}
+
+/// Which parts with a boundary are fitted as open sheets.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Boundary {
+    /// A part whose widest boundary loop spans at least [`SHEET_SPAN`] of its area is an open
+    /// sheet; every other part is closed.
+    #[default]
+    Auto,
+    /// Every part is closed, its holes capped.
+    Closed,
+    /// Every part with a boundary is an open sheet.
+    Open,
+}
+
+/// A part of the scan left out of the fit.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct DroppedPart {
+    /// Its name (`part k`, numbered with the fitted parts, largest first).
+    pub name: String,
+    /// Its vertices.
+    pub vertices: usize,
+    /// Its share of the scan's area.
+    pub area_fraction: f64,
+    /// Why it was left out.
+    pub reason: String,
+}
+
+/// A part to fit: its repaired surface and the domain it is parameterised over.
+#[derive(Clone, Debug)]
+pub(crate) struct PlannedPart {
+    /// `part k`.
+    pub(crate) name: String,
+    /// The surface its domain needs.
+    pub(crate) closed: ClosedMesh,
+    /// Its domain.
+    pub(crate) domain: Domain,
+    /// Its topology before repair.
+    pub(crate) topology: Topology,
+    /// Its share of the scan's area.
+    pub(crate) area_fraction: f64,
+    /// Why the domain, in words.
+    pub(crate) why: String,
+}
+
+/// The surfaces a part may become, best first, and why.
+fn choices(
+    topology: &Topology,
+    boundary: Boundary,
+    layout: Layout,
+) -> Vec<(Closing, Domain, String)> {
+    let sphere = (Closing::Sphere, Domain::Sphere(layout));
+    let widest =
+        topology.loops.first().map_or(0.0, |l| l.span / topology.area.max(f64::MIN_POSITIVE));
+    let open = match boundary {
+        Boundary::Auto => widest >= SHEET_SPAN,
+        Boundary::Closed => false,
+        Boundary::Open => !topology.loops.is_empty(),
+    };
+    let loops = |n: usize| {
+        if n == 1 { "1 boundary loop".to_owned() } else { format!("{n} boundary loops") }
+    };
+    let mut out = Vec::new();
+    if open {
+        out.push((
+            Closing::Disc,
+            Domain::Sheet,
+            format!(
+                "an open sheet: {}, the widest spanning {:.0} % of its area",
+                loops(topology.loops.len()),
+                100.0 * widest
+            ),
+        ));
+    }
+    if topology.genus == 1 {
+        out.push((
+            Closing::Torus,
+            Domain::Torus,
+            "genus 1: fitted over the torus, with no cut".to_owned(),
+        ));
+    }
+    let why = match (topology.genus, topology.loops.len()) {
+        (0, 0) => "closed, genus 0".to_owned(),
+        (0, n) => format!("genus 0 once its {} closed", loops(n)),
+        (g, 0) => format!("genus {g}: its handles cut"),
+        (g, n) => format!("genus {g} once its {} closed: its handles cut", loops(n)),
+    };
+    out.push((sphere.0, sphere.1, why));
+    out
+}
+
+/// The parts of `parts` to fit, each made the surface its topology asks for, and those left
+/// out: parts with less than `floor` of the area or fewer than `min_vertices` vertices, and
+/// parts that cannot be made any surface.
+pub(crate) fn plan(
+    parts: &MeshParts,
+    boundary: Boundary,
+    layout: Layout,
+    floor: f64,
+    min_vertices: usize,
+) -> (Vec<PlannedPart>, Vec<DroppedPart>) {
+    let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
+    let outcomes: Vec<Result<PlannedPart, DroppedPart>> = parts
+        .parts
+        .par_iter()
+        .enumerate()
+        .map(|(k, part)| {
+            let name = format!("part {}", k + 1);
+            let area_fraction = part.area / total;
+            let dropped = |reason: String| DroppedPart {
+                name: name.clone(),
+                vertices: part.positions.len(),
+                area_fraction,
+                reason,
+            };
+            if area_fraction < floor || part.positions.len() < min_vertices {
+                return Err(dropped(format!(
+                    "below the floor ({:.2} % of the area, {} vertices; a part needs {:.2} % and {min_vertices})",
+                    100.0 * area_fraction,
+                    part.positions.len(),
+                    100.0 * floor
+                )));
+            }
+            let topology = part_topology(part);
+            let mut last = String::new();
+            for (closing, domain, why) in choices(&topology, boundary, layout) {
+                match close_part(part, closing) {
+                    Ok(closed) if closing == Closing::Torus && is_tunnel(&closed, part.area) => {
+                        last = format!(
+                            "its handle's shortest loop is under {TORUS_MIN_EDGES} edges or {:.0} % of the square root of its area: two sheets that nearly touch, not a ring",
+                            100.0 * TORUS_MIN_LOOP
+                        );
+                    }
+                    Ok(closed) => {
+                        let why = if last.is_empty() { why } else { format!("{why} ({last})") };
+                        return Ok(PlannedPart { name, closed, domain, topology, area_fraction, why });
+                    }
+                    Err(e) => last = format!("not a {}: {e}", domain.name()),
+                }
+            }
+            Err(dropped(last))
+        })
+        .collect();
+    let mut planned = Vec::new();
+    let mut dropped = Vec::new();
+    for o in outcomes {
+        match o {
+            Ok(p) => planned.push(p),
+            Err(d) => dropped.push(d),
+        }
+    }
+    (planned, dropped)
+}
+
+/// A part's geometry image sampled from its parameterisation.
+#[derive(Clone, Debug)]
+pub(crate) struct PartImage {
+    /// The image (for a sheet, mirrored: doubly periodic).
+    pub(crate) image: GeometryImage,
+    /// Texels on triangles that close holes or cuts.
+    pub(crate) filled: Vec<bool>,
+    /// The fraction of the distinct texels filled.
+    pub(crate) filled_fraction: f64,
+    /// The quality of the map.
+    pub(crate) quality: MapQuality,
+}
+
+/// The smallest side of a part's image (rows and columns of the square or the sphere's
+/// layout; the torus's shorter side).
+const MIN_SIDE: usize = 16;
+
+/// The image of `part` over its domain, with about `texels` distinct texels (`resolution`, if
+/// given, for the sphere's layouts: rows × columns as the user asked).
+pub(crate) fn part_image(
+    part: &PlannedPart,
+    texels: usize,
+    resolution: Option<(usize, usize)>,
+) -> Result<PartImage, Error> {
+    let c = &part.closed;
+    match part.domain {
+        Domain::Sphere(layout) => {
+            let (rows, cols) = resolution.unwrap_or_else(|| sphere_side(layout, texels));
+            let param = parameterise(c, &SphereParamOptions::default())?;
+            let image = param.image(layout, rows, cols)?;
+            Ok(PartImage {
+                image: image.image,
+                filled: image.filled,
+                filled_fraction: image.filled_fraction,
+                quality: MapQuality::Sphere(param.quality()),
+            })
+        }
+        Domain::Torus => {
+            let param = parameterise_torus(
+                &c.positions,
+                &c.triangles,
+                &c.filled,
+                &TorusParamOptions::default(),
+            )?;
+            let (rows, cols) = param.resolution(texels.max(MIN_SIDE * MIN_SIDE));
+            let image = param.image(rows.max(MIN_SIDE), cols.max(MIN_SIDE))?;
+            Ok(PartImage {
+                image: image.image,
+                filled: image.filled,
+                filled_fraction: image.filled_fraction,
+                quality: MapQuality::Flat(param.quality()),
+            })
+        }
+        Domain::Sheet => {
+            let param = parameterise_disc(
+                &c.positions,
+                &c.triangles,
+                &c.filled,
+                &DiscParamOptions::default(),
+            )?;
+            let (rows, cols) = param.resolution(texels.max(MIN_SIDE * MIN_SIDE));
+            let (rows, cols) = (rows.max(MIN_SIDE), cols.max(MIN_SIDE));
+            let square = param.image(rows, cols)?;
+            Ok(PartImage {
+                image: reflect_periodic(&square.image)?,
+                filled: reflect_periodic_mask(&square.filled, rows, cols)?,
+                filled_fraction: square.filled_fraction,
+                quality: MapQuality::Flat(param.quality()),
+            })
+        }
+    }
+}
+
+/// The side of a square image of the sphere in `layout` with about `texels` distinct texels:
+/// a multiple of 8 (the doubled layouts mirror rows and columns), at least [`MIN_SIDE`] · 2.
+pub(crate) fn sphere_side(layout: Layout, texels: usize) -> (usize, usize) {
+    let per_side = if layout == Layout::Octahedron { 1.0 } else { 2.0 };
+    let side = (per_side * texels as f64).sqrt();
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
+    let side = ((side / 8.0).ceil() as usize * 8).clamp(2 * MIN_SIDE, 4096);
+    (side, side)
+}
+
+/// Area-weighted unit vertex normals of all the planned parts' surfaces, with their positions:
+/// the outward side of every part, for the point set's patches to face.
+pub(crate) fn outward_samples(parts: &[PlannedPart]) -> (Vec<DVec3>, Vec<DVec3>) {
+    let mut positions = Vec::new();
+    let mut normals = Vec::new();
+    for p in parts {
+        positions.extend_from_slice(&p.closed.positions);
+        normals.extend(hi_scan::implicit::vertex_normals(&p.closed.positions, &p.closed.triangles));
+    }
+    (positions, normals)
+}

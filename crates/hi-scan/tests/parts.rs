@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+//! A scan's parts and their topology: a mesh of a sphere, a torus and an open sheet with a
+//! small hole, split into its three parts; each part's genus and boundary loops against the
+//! construction; each made a sphere, a torus or a disc, with the Euler characteristic counted
+//! here from the edges; a Möbius band refused.
+
+use std::collections::HashMap;
+use std::f64::consts::TAU;
+
+use glam::DVec3;
+use hi_scan::repair::{Closing, close_part, mesh_parts, part_topology};
+
+/// A u × v grid of quads over `at(i, j)`, wrapping in u and/or v, as triangles; vertex (i, j)
+/// is `i * nv + j` (the unwrapped last row or column included).
+fn grid(
+    nu: u32,
+    nv: u32,
+    wrap: (bool, bool),
+    at: impl Fn(u32, u32) -> DVec3,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let (ru, rv) = (if wrap.0 { nu } else { nu + 1 }, if wrap.1 { nv } else { nv + 1 });
+    let points: Vec<DVec3> = (0..ru * rv).map(|k| at(k / rv, k % rv)).collect();
+    let id = |i: u32, j: u32| (i % ru) * rv + j % rv;
+    let mut triangles = Vec::new();
+    for i in 0..nu {
+        for j in 0..nv {
+            let q = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
+            triangles.push([q[0], q[1], q[2]]);
+            triangles.push([q[0], q[2], q[3]]);
+        }
+    }
+    (points, triangles)
+}
+
+/// Appends a mesh to another.
+fn append(into: &mut (Vec<DVec3>, Vec<[u32; 3]>), mesh: (Vec<DVec3>, Vec<[u32; 3]>)) {
+    let offset = into.0.len() as u32;
+    into.0.extend(mesh.0);
+    into.1.extend(mesh.1.into_iter().map(|t| t.map(|k| k + offset)));
+}
+
+/// V − E + F of a triangle mesh, its edges counted here.
+fn euler(points: usize, triangles: &[[u32; 3]]) -> i64 {
+    let mut edges: HashMap<(u32, u32), usize> = HashMap::new();
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+        }
+    }
+    points as i64 - edges.len() as i64 + triangles.len() as i64
+}
+
+/// The three parts: a UV sphere (poles welded), a torus, and a wavy sheet with a small square
+/// hole, far apart.
+fn three_parts() -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let mut scan = (Vec::new(), Vec::new());
+    // The sphere: rings of a UV grid, its poles welded (same positions).
+    append(
+        &mut scan,
+        grid(24, 32, (false, true), |i, j| {
+            let (a, b) = (std::f64::consts::PI * f64::from(i) / 24.0, TAU * f64::from(j) / 32.0);
+            DVec3::new(a.sin() * b.cos(), a.sin() * b.sin(), a.cos()) * 2.0
+        }),
+    );
+    append(
+        &mut scan,
+        grid(48, 16, (true, true), |i, j| {
+            let (a, b) = (TAU * f64::from(i) / 48.0, TAU * f64::from(j) / 16.0);
+            DVec3::new((1.0 + 0.3 * b.cos()) * a.cos(), (1.0 + 0.3 * b.cos()) * a.sin(), 0.3 * b.sin())
+                + DVec3::new(6.0, 0.0, 0.0)
+        }),
+    );
+    // The sheet, 20 × 20 quads over [0, 2]², with the two triangles of one quad removed.
+    let (p, mut t) = grid(20, 20, (false, false), |i, j| {
+        let (x, y) = (f64::from(i) / 10.0, f64::from(j) / 10.0);
+        DVec3::new(x - 1.0, y - 1.0, 0.2 * (3.0 * x).sin() * y.cos()) + DVec3::new(0.0, 6.0, 0.0)
+    });
+    t.drain(2 * (10 * 20 + 10)..2 * (10 * 20 + 10) + 2);
+    append(&mut scan, (p, t));
+    scan
+}
+
+#[test]
+fn a_scan_splits_into_its_parts_with_their_topology() {
+    let (points, triangles) = three_parts();
+    let parts = mesh_parts(&points, &triangles).unwrap();
+    // The sphere's pole rows are welded: 32 copies of each pole, 31 welded away each.
+    assert_eq!(parts.welded_points, 2 * 31);
+    assert_eq!(parts.parts.len(), 3);
+    // Largest first: the sphere (area ≈ 16π), then the torus (4π² · 0.3 ≈ 11.8), then the sheet
+    // (a little over 4).
+    let areas: Vec<f64> = parts.parts.iter().map(|p| p.area).collect();
+    assert!((areas[0] / (16.0 * std::f64::consts::PI) - 1.0).abs() < 0.02, "{areas:?}");
+    assert!((areas[1] / (TAU * TAU * 0.3) - 1.0).abs() < 0.02, "{areas:?}");
+    assert!(areas[2] > 4.0 && areas[2] < 4.6, "{areas:?}");
+    let topologies: Vec<_> = parts.parts.iter().map(part_topology).collect();
+    assert_eq!((topologies[0].genus, topologies[0].loops.len()), (0, 0));
+    assert_eq!((topologies[1].genus, topologies[1].loops.len()), (1, 0));
+    assert_eq!((topologies[2].genus, topologies[2].loops.len()), (0, 2));
+    // The sheet's rim first (80 edges around a cap of about 4), then the hole (4 edges).
+    let rim = &topologies[2].loops;
+    assert_eq!((rim[0].edges, rim[1].edges), (80, 4));
+    assert!(rim[0].span > 3.9 && (rim[1].span - 0.01).abs() < 1e-3, "{rim:?}");
+}
+
+#[test]
+fn each_part_becomes_the_surface_asked_for() {
+    let (points, triangles) = three_parts();
+    let parts = mesh_parts(&points, &triangles).unwrap().parts;
+    let sphere = close_part(&parts[0], Closing::Sphere).unwrap();
+    assert_eq!(euler(sphere.positions.len(), &sphere.triangles), 2);
+    assert!(sphere.volume() > 0.0);
+    // The torus kept whole, or cut to a sphere.
+    let torus = close_part(&parts[1], Closing::Torus).unwrap();
+    assert_eq!(euler(torus.positions.len(), &torus.triangles), 0);
+    assert_eq!(torus.repair.handles_cut, 0);
+    assert!((torus.volume() / (2.0 * std::f64::consts::PI.powi(2) * 0.09) - 1.0).abs() < 0.02);
+    let cut = close_part(&parts[1], Closing::Sphere).unwrap();
+    assert_eq!((euler(cut.positions.len(), &cut.triangles), cut.repair.handles_cut), (2, 1));
+    assert!(close_part(&parts[0], Closing::Torus).is_err(), "a sphere is no torus");
+    assert!(close_part(&parts[0], Closing::Disc).is_err(), "a sphere has no rim");
+    // The sheet: its hole closed, its rim kept as a disc's; or both closed as a sphere's.
+    let disc = close_part(&parts[2], Closing::Disc).unwrap();
+    assert_eq!((disc.repair.holes, euler(disc.positions.len(), &disc.triangles)), (1, 1));
+    assert_eq!(disc.filled.iter().filter(|&&f| f).count(), disc.triangles.len() - 798);
+    let closed = close_part(&parts[2], Closing::Sphere).unwrap();
+    assert_eq!((closed.repair.holes, euler(closed.positions.len(), &closed.triangles)), (2, 2));
+}
+
+#[test]
+fn a_moebius_band_is_refused() {
+    // A strip of 40 × 2 quads whose ends are joined with a half twist.
+    let n = 40u32;
+    let at = |i: u32, j: u32| {
+        let a = TAU * f64::from(i) / f64::from(n);
+        let w = f64::from(j) - 1.0;
+        let (c, s) = ((a / 2.0).cos(), (a / 2.0).sin());
+        DVec3::new((2.0 + 0.5 * w * c) * a.cos(), (2.0 + 0.5 * w * c) * a.sin(), 0.5 * w * s)
+    };
+    let points: Vec<DVec3> = (0..n * 3).map(|k| at(k / 3, k % 3)).collect();
+    let id = |i: u32, j: u32| if i == n { 2 - j } else { 3 * i + j };
+    let triangles: Vec<[u32; 3]> = (0..n)
+        .flat_map(|i| {
+            (0..2).flat_map(move |j| {
+                let q = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
+                [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]
+            })
+        })
+        .collect();
+    let parts = mesh_parts(&points, &triangles).unwrap();
+    assert!(parts.parts[0].one_sided);
+    let err = close_part(&parts.parts[0], Closing::Disc).unwrap_err().to_string();
+    assert!(err.contains("one-sided"), "{err}");
+}
