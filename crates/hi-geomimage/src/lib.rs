@@ -13,6 +13,8 @@
 //! | reading scans: OBJ, PLY, OFF, STL, XYZ, PTS, glTF, GLB | §5.8 | [`scan`] |
 //! | closing a scan mesh to one genus-0 surface (weld, clean, orient, fill holes, cut handles) | | [`repair`] |
 //! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
+//! | parameterisation of a genus-1 mesh over the flat torus (tree–cotree cohomology basis, harmonic one-forms, reduced period basis, stretch relaxation), geometry images sampled from it with no cut | beyond §5.3 | [`torusparam`] |
+//! | parameterisation of an open disc-like mesh over the unit square (Tutte–Floater), whole-sample images and their mirror doubling into periodic ones | beyond §5.3 | [`discparam`] |
 //! | shrink-wrapping a point set: the zero set of its signed distance, parameterised, projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
 //! | the zero set of a function sampled on a grid (surface nets) | | [`surfacenets`] |
 //! | noise estimate and spectral regularisation (discrepancy principle, GCV) | beyond §5.4 | [`noise`], [`regularise`] |
@@ -43,11 +45,14 @@
 
 pub mod closest;
 pub mod contours;
+pub mod discparam;
 pub mod distance;
 mod error;
 mod filter;
 pub mod fit;
+mod flat;
 mod image;
+mod laplace;
 pub mod layout_mesh;
 pub mod noise;
 mod par;
@@ -62,6 +67,7 @@ pub mod shrinkwrap;
 pub mod sphereparam;
 pub mod spherical;
 pub mod surfacenets;
+pub mod torusparam;
 
 pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;
