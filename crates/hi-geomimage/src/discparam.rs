@@ -49,14 +49,15 @@ use crate::{Error, GeometryImage, MAX_TEXELS};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DiscParamOptions {
     /// Reweighting rounds at most (one Laplacian solve each, the boundary held; the rounds
-    /// stop at the first that does not lower the stretch). Default 8; 0 with `sweeps` 0 keeps
-    /// the harmonic map.
+    /// stop at the first that does not lower the stretch, or after one that lowers it by less
+    /// than 2 %). Default 8; 0 with `sweeps` 0 keeps the harmonic map.
     pub rounds: usize,
     /// Newton sweeps over every vertex after the rounds, boundary vertices sliding along their
     /// sides. Default 2.
     pub sweeps: usize,
-    /// The relative residual at which a Laplacian solve stops (pushed down to 10⁻¹⁴ while the
-    /// map still folds), in (0, 0.01]. Default 10⁻⁸.
+    /// The relative residual at which the harmonic map's Laplacian solve stops (pushed down
+    /// to 10⁻¹⁴ while the map still folds; the relaxation rounds stop at 10⁻⁵ or this, if
+    /// looser), in (0, 0.01]. Default 10⁻⁸.
     pub tolerance: f64,
     /// Conjugate-gradient iterations at most per solve. Default 100 000.
     pub max_iterations: usize,

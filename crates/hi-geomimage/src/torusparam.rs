@@ -33,15 +33,19 @@
 //!
 //! **The relaxation** (on by default) evens out the area the map gives each part of the
 //! surface: a sphere with a thin handle (a mug, a kitten) is otherwise squeezed into a small
-//! part of the image. First rounds of reweighting (Yoshizawa, Belyaev and Seidel 2004, "A
-//! fast and simple stretch-minimizing mesh parameterization"): each triangle's weight
-//! factor divided by its RMS stretch, then the same solve, warm-started; each round's map is
-//! again harmonic for positive weights, so again an embedding, and a round is kept only if it
-//! raises the L² stretch efficiency. Then Newton moves of single vertices on the L² stretch
-//! (Sander, Snyder, Gortler and Hoppe 2001), which is a barrier against folds, as
-//! [`sphereparam`](crate::sphereparam) does on the sphere. The map from the surface to R²/Z²
-//! stays a bijection throughout (positively oriented triangles of total area 1 cover the
-//! torus once). The basis is reduced once more by the mean metric of the final map.
+//! part of the image. The stretch is measured on the domain scaled to the image's shape,
+//! (αu, v) with α the aspect below: an image of that shape has square texels, so what is left
+//! is the map's own anisotropy and area distortion (a long thin tube is not penalised for being
+//! long). First rounds of reweighting (Yoshizawa, Belyaev and Seidel 2004, "A fast and simple
+//! stretch-minimizing mesh parameterization"): each triangle's weight factor divided by its
+//! RMS stretch, then the same solve, warm-started (one multigrid hierarchy for all rounds);
+//! each round's map is again harmonic for positive weights, so again an embedding, and a
+//! round is kept only if it raises the L² stretch efficiency (the rounds end after one that
+//! gains less than 2 %: the next tends to overshoot). Then Newton moves of single vertices on
+//! the L² stretch (Sander, Snyder, Gortler and Hoppe 2001), which is a barrier against folds,
+//! as [`sphereparam`](crate::sphereparam) does on the sphere. The map from the surface to
+//! R²/Z² stays a bijection throughout (positively oriented triangles of total area 1 cover
+//! the torus once). The basis is reduced once more by the mean metric of the final map.
 //!
 //! **The image.** [`TorusParam::aspect`] is the rows/cols that makes texels square on the
 //! surface on average, √(∫|pᵤ|² / ∫|pᵥ|²) over the torus: for the conformal map
@@ -65,12 +69,14 @@ use crate::{Error, MAX_TEXELS};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TorusParamOptions {
     /// Reweighting rounds at most (one Laplacian solve each; the rounds stop at the first
-    /// that does not lower the stretch). Default 8; 0 with `sweeps` 0 keeps the harmonic map.
+    /// that does not lower the stretch, or after one that lowers it by less than 2 %).
+    /// Default 8; 0 with `sweeps` 0 keeps the harmonic map.
     pub rounds: usize,
     /// Newton sweeps over every vertex after the rounds. Default 2.
     pub sweeps: usize,
-    /// The relative residual at which a Laplacian solve stops (pushed down to 10⁻¹⁴ while the
-    /// map still folds), in (0, 0.01]. Default 10⁻⁸.
+    /// The relative residual at which the harmonic map's Laplacian solve stops (pushed down
+    /// to 10⁻¹⁴ while the map still folds; the relaxation rounds stop at 10⁻⁵ or this, if
+    /// looser), in (0, 0.01]. Default 10⁻⁸.
     pub tolerance: f64,
     /// Conjugate-gradient iterations at most per solve. Default 100 000.
     pub max_iterations: usize,

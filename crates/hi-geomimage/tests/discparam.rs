@@ -219,7 +219,8 @@ fn check_disc(param: &DiscParam, p: &[DVec3], t: &[[u32; 3]], label: &str) {
 #[test]
 fn a_hemisphere_maps_onto_the_square() {
     let mut rng = Rng(11);
-    let (p, t) = hemisphere(16, 64, &mut rng);
+    // 6401 vertices: the solves go through multigrid.
+    let (p, t) = hemisphere(40, 160, &mut rng);
     let filled = vec![false; t.len()];
     for options in [DiscParamOptions::harmonic(), DiscParamOptions::default()] {
         let param = parameterise_disc(&p, &t, &filled, &options).unwrap();
@@ -476,6 +477,31 @@ fn flaps_cut_off_by_an_edge_lie_flat_with_their_inner_vertices() {
     for x in image.image.texels() {
         assert!(x.z == 0.0 && x.x >= 0.0 && x.x <= 1.0 && x.y >= -0.1 && x.y <= 1.0, "texel {x}");
     }
+}
+
+#[test]
+fn a_single_quad_is_the_square_itself() {
+    // Two triangles, four boundary vertices, nothing inside: the corners are the square's, and
+    // the image is the two triangles' linear interpolation.
+    let p =
+        [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [2.0, 1.0, 0.5], [0.0, 1.0, 0.5]].map(DVec3::from_array);
+    let t = [[0, 1, 2], [0, 2, 3]];
+    let param = parameterise_disc(&p, &t, &[false, true], &DiscParamOptions::default()).unwrap();
+    let mut uv: Vec<DVec2> = param.uv().to_vec();
+    uv.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    assert_eq!(uv, [DVec2::ZERO, DVec2::Y, DVec2::X, DVec2::ONE], "the corners");
+    let image = param.image(5, 9).unwrap();
+    // Whichever corner went to (0, 0), every texel lies in the quad's plane z = y / 2.
+    for x in image.image.texels() {
+        assert!((x.z - 0.5 * x.y).abs() < 1e-15 && x.x >= 0.0 && x.x <= 2.0, "texel {x}");
+    }
+    assert!(
+        image.filled_fraction > 0.3 && image.filled_fraction < 0.7,
+        "{}",
+        image.filled_fraction
+    );
+    let e = parameterise_disc(&p, &t[..1], &[false], &DiscParamOptions::default()).unwrap_err();
+    assert!(e.to_string().contains("1 triangle cannot make a disc"), "{e}");
 }
 
 #[test]

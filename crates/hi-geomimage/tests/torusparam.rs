@@ -476,6 +476,49 @@ fn filled_triangles_are_flagged_in_the_image() {
     assert_eq!(counted, image.filled_fraction);
 }
 
+/// The same map and image on one thread as on all: every parallel loop writes its own slots
+/// or sums in fixed blocks.
+#[cfg(feature = "parallel")]
+#[test]
+fn results_do_not_depend_on_the_number_of_threads() {
+    let (p, t) = mug(128, 40);
+    let filled: Vec<bool> = (0..t.len()).map(|f| f % 7 == 0).collect();
+    let run = || {
+        let param = parameterise_torus(&p, &t, &filled, &TorusParamOptions::default()).unwrap();
+        let image = param.image(40, 96).unwrap();
+        (param.uv().to_vec(), param.offsets().to_vec(), param.report(), image)
+    };
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap().install(run);
+    let many = rayon::ThreadPoolBuilder::new().num_threads(4).build().unwrap().install(run);
+    assert!(one == many, "one thread and four differ");
+}
+
+/// Triangles of zero area (coincident vertices) and slivers: the clamped weights stay
+/// positive, so the map is still an embedding.
+#[test]
+fn degenerate_triangles_still_map_without_folds() {
+    let (m, n) = (48, 16);
+    let (mut p, t) = grid(m, n, &torus_point(1.0, 0.35), 0.0, None);
+    // Every fifth vertex of one ring onto its neighbour, a few onto the middle of an edge.
+    for j in (0..n).step_by(5) {
+        p[5 * n + j] = p[5 * n + (j + 1) % n];
+        p[20 * n + j] = 0.5 * (p[19 * n + j] + p[21 * n + j]);
+    }
+    let filled = vec![false; t.len()];
+    for options in [TorusParamOptions::harmonic(), TorusParamOptions::default()] {
+        let param = parameterise_torus(&p, &t, &filled, &options).unwrap();
+        let (folded, area) = uv_area(&param);
+        println!("degenerate: {:?}", param.report());
+        assert_eq!(folded, 0, "folds");
+        assert!((area - 1.0).abs() < 1e-9, "area {area}");
+        let image = param.image(24, 64).unwrap();
+        let chord = chord_bound(1.0, 0.35, 2.0 * TAU / m as f64, 2.0 * TAU / n as f64);
+        for x in image.image.texels() {
+            assert!(torus_distance(*x, 1.0, 0.35) <= chord, "texel {x} off the torus");
+        }
+    }
+}
+
 /// Timings of large tori, the best of five runs each (run with `--ignored --nocapture`, in
 /// release for real numbers).
 #[test]
