@@ -24,10 +24,12 @@ use crate::{Error, GeometryImage, NonFiniteInput};
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FlatQuality {
-    /// The L² stretch efficiency (Praun and Hoppe 2003): (surface area)² / ((u, v) area · E)
+    /// The L² stretch efficiency (Praun and Hoppe 2003): (surface area)² / (domain area · E)
     /// with E = Σ A (σ₁² + σ₂²)/2 over the triangles, A the triangle's surface area and σ the
-    /// singular values of the map from (u, v) to the surface (Sander et al. 2001); 1 for a
-    /// map with the same stretch everywhere, in (0, 1], higher is better.
+    /// singular values of the map from the domain to the surface (Sander et al. 2001); 1 for a
+    /// map with the same stretch everywhere, in (0, 1], higher is better. The domain is the
+    /// image's: (u, v) scaled to (αu, v), α the map's aspect (rows/cols for square texels),
+    /// so a shape that is simply long (a thin tube) is not counted as stretched.
     pub stretch_efficiency: f64,
     /// The ratio of the largest to the smallest ((u, v) area / surface area) over the
     /// triangles with a surface area above a millionth of the mean: how much denser the image

@@ -29,8 +29,9 @@
 //! for small systems; its iteration count grows with the mesh's diameter in edges (about 1250
 //! for a torus of 10⁵ vertices at a relative residual of 10⁻⁸), so above
 //! [`MULTIGRID_ABOVE`] free vertices it is one V-cycle of smoothed-aggregation multigrid
-//! (damped Jacobi smoothing, aggregates of strongly connected neighbours, Galerkin coarse
-//! matrices, a dense Cholesky factor at the bottom), which takes about a dozen at any size. Dot
+//! (damped Jacobi smoothing, aggregates of strongly connected neighbours, the prolongator
+//! smoothed with the filtered matrix, Galerkin coarse matrices, a dense Cholesky factor at the
+//! bottom), which takes about a dozen at any size. Dot
 //! products are summed in fixed blocks of rows and the blocks in order, and every other
 //! parallel loop writes its own rows, so the result does not depend on the number of threads.
 
@@ -1019,10 +1020,7 @@ impl Multigrid {
 #[expect(clippy::needless_range_loop, reason = "each pass reads and writes other rows' entries")]
 fn aggregate(a: &Csr) -> (Vec<u32>, usize) {
     let n = a.rows();
-    let strong = |i: usize, j: u32, v: f64| {
-        let d = a.diag[i] * a.diag[j as usize];
-        d > 0.0 && v * v >= 0.0064 * d
-    };
+    let strong = |i: usize, j: u32, v: f64| strong(a, i, j, v);
     let mut agg = vec![NONE; n];
     let mut count = 0u32;
     for i in 0..n {
@@ -1075,19 +1073,36 @@ fn aggregate(a: &Csr) -> (Vec<u32>, usize) {
     (agg, count as usize)
 }
 
-/// The smoothed prolongator P = (I − ω D⁻¹A) P₀, P₀ the aggregates' indicator: row i is
-/// (1 − ω) at i's aggregate plus ω (−aᵢⱼ / aᵢᵢ) at each neighbour j's.
+/// The smoothed prolongator P = (I − ω D̃⁻¹Ã) P₀, P₀ the aggregates' indicator and Ã the
+/// filtered matrix (the weak connections added to the diagonal, so that P keeps the stencil of
+/// the strong ones and constants stay constants): row i is (1 − ω) at i's aggregate plus
+/// ω (−aᵢⱼ / d̃) at each strong neighbour j's, d̃ = aᵢᵢ + Σ over weak j of aᵢⱼ. (Smoothing
+/// with A itself fills the coarse matrices in: on a hemisphere meshed by rings, with a pole of
+/// high degree and slivers around it, five times more entries two levels down.)
 fn prolongator(a: &Csr, agg: &[u32], count: usize) -> Csr {
     Csr::build(a.rows(), count, false, |i, cols, vals, mark| {
         accumulate(agg[i], 1.0 - OMEGA, cols, vals, mark);
-        let d = a.diag[i];
         let (c, v) = a.row(i);
+        let mut d = a.diag[i];
         for (&j, &x) in c.iter().zip(v) {
-            let w = if d > 0.0 { -OMEGA * x / d } else { 0.0 };
-            accumulate(agg[j as usize], w, cols, vals, mark);
+            if !strong(a, i, j, x) {
+                d += x;
+            }
+        }
+        for (&j, &x) in c.iter().zip(v) {
+            if strong(a, i, j, x) {
+                let w = if d > 0.0 { -OMEGA * x / d } else { 0.0 };
+                accumulate(agg[j as usize], w, cols, vals, mark);
+            }
         }
         0.0
     })
+}
+
+/// Whether aᵢⱼ = x is a strong connection: |aᵢⱼ| ≥ 0.08 √(aᵢᵢ aⱼⱼ).
+fn strong(a: &Csr, i: usize, j: u32, x: f64) -> bool {
+    let d = a.diag[i] * a.diag[j as usize];
+    d > 0.0 && x * x >= 0.0064 * d
 }
 
 /// The Cholesky factor of a small square matrix (dense, row-major, lower); a pivot that is

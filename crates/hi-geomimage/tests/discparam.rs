@@ -594,3 +594,39 @@ fn filled_triangles_are_flagged_in_the_image() {
         image.filled_fraction
     );
 }
+
+/// Timings of large hemispheres, the best of five runs each (run with `--ignored --nocapture`,
+/// in release for real numbers).
+#[test]
+#[ignore = "a timing to read, not a check"]
+fn timing_of_large_discs() {
+    for (rings, around) in [(50, 200), (158, 632)] {
+        let (p, t) = hemisphere(rings, around, &mut Rng(4));
+        let filled = vec![false; t.len()];
+        for (name, options) in
+            [("harmonic", DiscParamOptions::harmonic()), ("default", DiscParamOptions::default())]
+        {
+            let (mut took, mut sampled) = (f64::INFINITY, f64::INFINITY);
+            let mut last = None;
+            for _ in 0..5 {
+                let start = std::time::Instant::now();
+                let param = parameterise_disc(&p, &t, &filled, &options).unwrap();
+                took = took.min(start.elapsed().as_secs_f64());
+                let (rows, cols) = param.resolution(p.len());
+                let start = std::time::Instant::now();
+                let image = param.image(rows, cols).unwrap();
+                sampled = sampled.min(start.elapsed().as_secs_f64());
+                assert_eq!(image.image.rows(), rows, "image size");
+                last = Some((param, rows, cols));
+            }
+            let Some((param, rows, cols)) = last else { continue };
+            println!(
+                "{} vertices, {name}: parameterise {took:.3} s ({} CG iterations, {} rounds), image {rows}×{cols} {sampled:.3} s; {:?}",
+                p.len(),
+                param.report().solve_iterations,
+                param.report().rounds,
+                param.quality()
+            );
+        }
+    }
+}

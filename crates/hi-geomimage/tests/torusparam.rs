@@ -137,7 +137,14 @@ fn mesh_sample(param: &TorusParam, rng: &mut Rng) -> (DVec3, DVec2) {
 /// The torus of revolution R = 1, r = 0.35: no fold, area 1, every texel on the torus, the
 /// harmonic surface through the image near the torus and facing out, and the period ratio of
 /// the conformal map, r/√(R² − r²).
-fn check_analytic_torus(p: &[DVec3], t: &[[u32; 3]], da: f64, db: f64, label: &str) {
+fn check_analytic_torus(
+    p: &[DVec3],
+    t: &[[u32; 3]],
+    da: f64,
+    db: f64,
+    aspect_tolerance: f64,
+    label: &str,
+) {
     let (big, small) = (1.0, 0.35);
     let chord = chord_bound(big, small, da, db);
     let filled = vec![false; t.len()];
@@ -151,7 +158,7 @@ fn check_analytic_torus(p: &[DVec3], t: &[[u32; 3]], da: f64, db: f64, label: &s
         harmonic.report().solve_iterations
     );
     assert!(
-        (harmonic.aspect() / conformal - 1.0).abs() < 0.03,
+        (harmonic.aspect() / conformal - 1.0).abs() < aspect_tolerance,
         "{label}: aspect {}",
         harmonic.aspect()
     );
@@ -227,7 +234,8 @@ fn check_analytic_torus(p: &[DVec3], t: &[[u32; 3]], da: f64, db: f64, label: &s
 fn the_analytic_torus_maps_onto_the_flat_torus() {
     let (m, n) = (96, 32);
     let (p, t) = grid(m, n, &torus_point(1.0, 0.35), 0.0, None);
-    check_analytic_torus(&p, &t, TAU / m as f64, TAU / n as f64, "regular 96×32");
+    // The discrete conformal structure of a regular grid is close to the smooth one.
+    check_analytic_torus(&p, &t, TAU / m as f64, TAU / n as f64, 0.01, "regular 96×32");
 }
 
 #[test]
@@ -258,11 +266,14 @@ fn an_irregular_shuffled_torus_maps_the_same_way() {
         s.swap(k, (rng.next() * (k + 1) as f64) as usize);
     }
     let spread = 1.0 + 2.0 * jitter;
+    // Jittered cells with random diagonals have obtuse angles whose clamped weights bias the
+    // discrete conformal structure by a few per cent.
     check_analytic_torus(
         &q,
         &s,
         spread * TAU / m as f64,
         spread * TAU / n as f64,
+        0.05,
         "jittered, shuffled",
     );
     // The harmonic map does not depend on the order: same quality and aspect as unshuffled.
