@@ -12,6 +12,8 @@
 //! | what | thesis | where |
 //! |---|---|---|
 //! | spherical parameterisation of a genus-0 mesh, geometry images sampled from it | beyond §5.3 | [`sphereparam`] |
+//! | parameterisation of a genus-1 mesh over the flat torus (tree–cotree cohomology basis, harmonic one-forms, reduced period basis, stretch relaxation), geometry images sampled from it with no cut | beyond §5.3 | [`torusparam`] |
+//! | parameterisation of an open disc-like mesh over the unit square (Tutte–Floater), whole-sample images and their mirror doubling into periodic ones | beyond §5.3 | [`discparam`] |
 //! | shrink-wrapping a point set: the zero set of its signed distance, parameterised, projected onto local quadric patches | beyond §5.3 | [`shrinkwrap`] |
 //! | spectral regularisation to the scan's noise (discrepancy principle, GCV) | beyond §5.4 | [`regularise`] |
 //! | the parameter domains: the sphere in its layouts, the torus, the open sheet | §5.3, beyond | [`Domain`] |
@@ -39,12 +41,15 @@
 //! | `serde` | no | `Serialize` and `Deserialize` for scans, options, geometry images (`{"rows": [[t₀₀, …], …]}`, read back through [`GeometryImage::try_new`]) and reports; a report's per-point distances are left out, so it stays small |
 
 pub mod contours;
+pub mod discparam;
 pub mod distance;
 pub mod domain;
 mod error;
 mod filter;
 pub mod fit;
+mod flat;
 mod image;
+mod laplace;
 pub mod layout_mesh;
 pub mod regularise;
 pub mod sections;
@@ -53,6 +58,7 @@ mod serde_impls;
 pub mod shrinkwrap;
 pub mod sphereparam;
 pub mod spherical;
+pub mod torusparam;
 
 /// The data-parallel calls, as `hi-scan` runs them (rayon behind the `parallel` feature).
 use hi_scan::par;
@@ -60,6 +66,7 @@ use hi_scan::par;
 pub use domain::Domain;
 pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;
+pub use flat::{FlatImage, FlatQuality, FlatReport};
 pub use fit::{
     ErrorMeasure, Fit, FitErrors, FitOptions, FitReport, MeshSource, Method, RowPoints,
     SourceImage, Stage, StageKind, fit,
