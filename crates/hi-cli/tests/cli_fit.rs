@@ -85,17 +85,18 @@ fn an_ellipsoid_fits_and_its_grid_lies_on_it() {
     assert_eq!(doc.meshes().count(), 1);
 }
 
-/// Two nested spheres: whichever way the surface is made, it cannot pass through both, and the
-/// inner sphere's points (half of them, each 1 from the outer sphere, 14% of the diagonal) are
-/// named as unreached; under `--method radial`, whose surface follows the outer shell, the rays
-/// that met both are named as well.
+/// Two nested spheres: the default fit finds two parts and fits each on its own, so every point
+/// is reached and both spheres are written as named meshes; the rays of `--method radial`
+/// cannot pass through both, so that surface follows the outer shell, and the inner sphere's
+/// points (half of them, each 1 from the outer sphere, 14% of the diagonal) are named as
+/// unreached, and the rays that met both as well.
 #[test]
-fn nested_spheres_get_a_warning() {
+fn nested_spheres_are_two_parts_and_the_rays_get_a_warning() {
     let mut text = ellipsoid_xyz(5000, [1.0; 3]);
     text.push_str(&ellipsoid_xyz(5000, [2.0; 3]));
     let scan = scan_file(&text, "xyz");
-    let out_file = TempFile::path_with("obj");
-    let stderr = |method: &str| {
+    let out_file = TempFile::path_with("glb");
+    let fitted = |method: &str| {
         let out = run(&[
             "fit",
             scan.path(),
@@ -109,16 +110,26 @@ fn nested_spheres_get_a_warning() {
             method,
         ]);
         assert_eq!(out.status.code(), Some(0), "{method}");
-        String::from_utf8(out.stderr).expect("UTF-8")
+        let report: Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+        (report, String::from_utf8(out.stderr).expect("UTF-8"))
     };
-    let wrapped = stderr("auto");
+    let (report, stderr) = fitted("auto");
+    assert_eq!(report["topology"]["parts"], 2, "{report}");
+    assert_eq!(report["parts"][0]["name"], "part 1");
+    // The outer sphere has four times the inner one's area.
+    let share = num(&report["parts"][0]["area_fraction"]);
+    assert!((share - 0.8).abs() < 0.02, "{share}");
+    assert!(num(&report["both_ways"]["unreached_fraction"]) == 0.0, "{report}");
     assert!(
-        wrapped.starts_with("hi: warning: 50.0% of the points of")
-            && wrapped.contains("the wrap did not reach them")
-            && wrapped.matches('\n').count() == 1,
-        "{wrapped}"
+        stderr.starts_with("hi: note:")
+            && stderr.contains("2 parts")
+            && !stderr.contains("warning"),
+        "{stderr}"
     );
-    let radial = stderr("radial");
+    let (doc, _, _) = gltf::import(out_file.as_path()).expect("the GLB reads back");
+    let names: Vec<&str> = doc.nodes().filter_map(|n| n.name()).collect();
+    assert_eq!(names, ["part 1", "part 2"]);
+    let (_, radial) = fitted("radial");
     let lines: Vec<&str> = radial.lines().collect();
     assert_eq!(lines.len(), 2, "{radial}");
     assert!(lines[0].starts_with("hi: warning: 100.0% of the rays meet"), "{radial}");
@@ -130,15 +141,16 @@ fn nested_spheres_get_a_warning() {
 }
 
 /// The cactus's arms hide parts of it from the centre, but the shrink-wrap from the zero set of
-/// its signed distance reaches them: the rays' count is reported, with no warning that the
-/// surface follows the outermost shell, and every point is reached.
+/// its signed distance reaches them: no warning, every point reached, and the hole the scan
+/// leaves at its base named as closed.
 #[test]
-fn a_wrapped_scan_that_is_not_star_shaped_gets_no_outer_shell_warning() {
+fn a_wrapped_scan_that_is_not_star_shaped_gets_no_warning() {
     let scan = concat!(env!("CARGO_MANIFEST_DIR"), "/../../fixtures/models/cactus.pts");
     let glb = TempFile::path_with("glb");
     let out = run(&["fit", scan, "-o", glb.path()]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(out.stderr.is_empty(), "no warning: {}", String::from_utf8_lossy(&out.stderr));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("warning"), "no warning: {stderr}");
     let report: Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
     assert_eq!(report["method"], "shrink-wrap");
     assert!(
@@ -146,7 +158,11 @@ fn a_wrapped_scan_that_is_not_star_shaped_gets_no_outer_shell_warning() {
         "{}",
         report["method_reason"]
     );
-    assert!(num(&report["non_star_fraction"]) > 0.05, "{}", report["non_star_fraction"]);
+    assert_eq!(report["topology"]["genus"], serde_json::json!([0]));
+    let holes = report["parts"][0]["holes_filled"].as_u64().expect("holes");
+    if holes > 0 {
+        assert!(stderr.contains(&format!("part 1: {holes} hole")), "{stderr}");
+    }
     assert!(
         num(&report["both_ways"]["unreached_fraction"]) < 0.001,
         "{}",

@@ -66,11 +66,11 @@ use hi_scan::par;
 pub use domain::Domain;
 pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;
-pub use flat::{FlatImage, FlatQuality, FlatReport};
 pub use fit::{
     ErrorMeasure, Fit, FitErrors, FitOptions, FitReport, MeshSource, Method, RowPoints,
     SourceImage, Stage, StageKind, fit,
 };
+pub use flat::{FlatImage, FlatQuality, FlatReport};
 pub use image::{GeometryImage, MAX_TEXELS};
 pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};
 pub use spherical::Layout;

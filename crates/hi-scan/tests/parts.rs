@@ -67,8 +67,11 @@ fn three_parts() -> (Vec<DVec3>, Vec<[u32; 3]>) {
         &mut scan,
         grid(48, 16, (true, true), |i, j| {
             let (a, b) = (TAU * f64::from(i) / 48.0, TAU * f64::from(j) / 16.0);
-            DVec3::new((1.0 + 0.3 * b.cos()) * a.cos(), (1.0 + 0.3 * b.cos()) * a.sin(), 0.3 * b.sin())
-                + DVec3::new(6.0, 0.0, 0.0)
+            DVec3::new(
+                (1.0 + 0.3 * b.cos()) * a.cos(),
+                (1.0 + 0.3 * b.cos()) * a.sin(),
+                0.3 * b.sin(),
+            ) + DVec3::new(6.0, 0.0, 0.0)
         }),
     );
     // The sheet, 20 × 20 quads over [0, 2]², with the two triangles of one quad removed.

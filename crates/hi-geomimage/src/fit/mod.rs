@@ -439,6 +439,10 @@ const NEIGHBOURS: usize = 16;
 /// zero set and its parameterisation cost what the image does.
 const SUMMARY_POINTS: f64 = 0.5;
 
+/// A summary has at least this many points, however small the images (the zero set of the
+/// points' signed distance and its topology do not depend on them).
+const SUMMARY_MIN: usize = 50_000;
+
 /// A cloud with more than this many times the points of its summary is summarised; a smaller
 /// one is used as it is.
 const SUMMARY_RATIO: f64 = 2.0;
@@ -699,7 +703,7 @@ fn point_sources(
     clock: &mut Clock<'_>,
 ) -> Result<Sources, Error> {
     #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "a count")]
-    let target = (texels as f64 * SUMMARY_POINTS) as usize;
+    let target = ((texels as f64 * SUMMARY_POINTS) as usize).max(SUMMARY_MIN);
     let (reps, rep_normals) = if points.len() as f64 > SUMMARY_RATIO * target as f64 {
         clock.run(StageKind::Summary, (0, 1), || -> Result<_, Error> {
             let cell = cell_for_count(points, target)?;
