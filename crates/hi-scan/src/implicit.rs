@@ -32,6 +32,9 @@ struct Patch {
     e2: DVec3,
     normal: DVec3,
     c: [f64; 6],
+    /// The point's own spacing (see [`PointSurface::spacing`]), where the points about it are
+    /// denser or sparser than the median.
+    local: f64,
 }
 
 impl Patch {
@@ -154,7 +157,7 @@ impl PointSurface {
                     .and_then(|n| n[i].try_normalize())
                     .or_else(|| least_axis(&hood))
                     .unwrap_or(DVec3::Z);
-                (fit_patch(*p, normal, &hood), spacing)
+                (Patch { local: spacing, ..fit_patch(*p, normal, &hood) }, spacing)
             })
             .collect();
         let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
@@ -301,6 +304,12 @@ impl PointSurface {
     /// patches face out), and the distance from that point to x's foot on its tangent plane.
     #[must_use]
     pub fn signed_distance(&self, x: DVec3) -> (f64, f64) {
+        let (f, off, _) = self.signed_with_spacing(x);
+        (f, off)
+    }
+
+    /// [`PointSurface::signed_distance`], and the nearest point's own spacing.
+    fn signed_with_spacing(&self, x: DVec3) -> (f64, f64, f64) {
         let nearest =
             self.tree.query(&x.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
         let patch = &self.patches[nearest.item as usize];
@@ -308,7 +317,7 @@ impl PointSurface {
         let (u, v) = (d.dot(patch.e1), d.dot(patch.e2));
         let c = &patch.c;
         let h = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
-        (d.dot(patch.normal) - h, (d - patch.normal * d.dot(patch.normal)).length())
+        (d.dot(patch.normal) - h, (d - patch.normal * d.dot(patch.normal)).length(), patch.local)
     }
 
     /// Turns each patch to face as the nearest of `samples` (points of a surface wrapped round
@@ -356,7 +365,7 @@ fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
         }
     }
     let c = crate::noise::solve6(ata, atb).unwrap_or([0.0; 6]);
-    Patch { origin: p, e1, e2, normal, c }
+    Patch { origin: p, e1, e2, normal, c, local: 0.0 }
 }
 
 /// The unit eigenvector of the least eigenvalue of the points' covariance.
@@ -377,8 +386,12 @@ const TREE_NEIGHBOURS: usize = 8;
 /// detail, in point spacings.
 pub const CELL: f64 = 1.5;
 
-/// Grid cells about each point where the signed distance is evaluated.
+/// Grid cells about each point where the signed distance is evaluated, at least, and at most
+/// (where the points about it are sparser than the grid).
 const BAND: usize = 1;
+
+/// The most grid cells about a point where the signed distance is evaluated.
+const MAX_BAND: usize = 4;
 
 /// How far, in grid cells, a grid node's foot on the nearest point's tangent plane may lie
 /// from that point for the signed distance to count (2 point spacings at [`CELL`]).
@@ -387,9 +400,11 @@ const REACH: f64 = 2.0 / CELL;
 impl PointSurface {
     /// The zero set of the points' signed distance (Hoppe et al. 1992): the height over the
     /// patch of the nearest point, evaluated on a grid of spacing `cell` within one cell of a
-    /// point, and only where the node's foot on that patch's tangent plane is within 4/3 of a
-    /// cell of the point (so that the zero set ends at the rims of the scan's holes rather than
-    /// running on along tangent planes), meshed by [`crate::surfacenets`]: an open or closed
+    /// point (or 1.5 of its own spacing, where the points about it are sparser than the grid,
+    /// up to four cells), and only where the node's foot on that patch's tangent plane is
+    /// within 4/3 of a cell of the point, or twice its own spacing (so that the zero set ends at
+    /// the rims of the scan's holes rather than running on along tangent planes, wherever the
+    /// scan is sparser or denser), meshed by [`crate::surfacenets`]: an open or closed
     /// mesh whose triangles wind counter-clockwise seen from the side the patches face.
     /// A cell of [`CELL`] point spacings follows every detail the points resolve; a coarser one
     /// gives a coarser mesh at less cost.
@@ -430,10 +445,12 @@ impl PointSurface {
             });
         }
         let h = cell;
-        let points = || self.patches.iter().map(|p| p.origin);
-        let (lo, hi) = points()
+        let (lo, hi) = self
+            .patches
+            .iter()
+            .map(|p| p.origin)
             .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
-        let pad = (BAND + 2) as f64 * h;
+        let pad = (MAX_BAND + 2) as f64 * h;
         let origin = lo - DVec3::splat(pad);
         #[expect(
             clippy::cast_possible_truncation,
@@ -451,10 +468,12 @@ impl PointSurface {
         let [nx, ny, _] = dims;
         let index = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
         let mut band = vec![false; nodes];
-        let b = BAND as isize;
-        for p in points() {
+        for patch in &self.patches {
+            let p = patch.origin;
             #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
             let c = ((p - origin) / h).floor().to_array().map(|x| x as isize);
+            #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
+            let b = ((1.5 * patch.local / h).ceil() as usize).clamp(BAND, MAX_BAND) as isize;
             for dk in -b..=b + 1 {
                 for dj in -b..=b + 1 {
                     for di in -b..=b + 1 {
@@ -472,7 +491,7 @@ impl PointSurface {
         // Known within the band, where the node's foot on the nearest point's tangent plane is
         // near that point (Hoppe's test: the zero set stops where the points do, at the rims of
         // holes).
-        let reach = (REACH * h).max(2.0 * self.spacing);
+        let reach = REACH * h;
         let values: Vec<f64> = band
             .par_iter()
             .enumerate()
@@ -480,8 +499,8 @@ impl PointSurface {
                 if !in_band {
                     return f64::NAN;
                 }
-                let (f, off) = self.signed_distance(node_at(t));
-                if off <= reach { f } else { f64::NAN }
+                let (f, off, local) = self.signed_with_spacing(node_at(t));
+                if off <= reach.max(2.0 * local) { f } else { f64::NAN }
             })
             .collect();
         drop(band);

@@ -531,13 +531,16 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
         repair.hole_edges += lp.len();
     }
 
-    // 7. Cut handles, but a torus's.
+    // 7. Cut handles, but a torus's; none if there are more than can be cut.
     let chi_wanted = match closing {
         Closing::Sphere => 2,
         Closing::Torus => 0,
         Closing::Disc => 1,
     };
-    if closing != Closing::Torus {
+    let boundary_edges = open.as_ref().map_or(0, Vec::len) as i64;
+    let handles =
+        (chi_wanted - euler_characteristic(positions.len(), kept.len(), boundary_edges)) / 2;
+    if closing != Closing::Torus && handles <= MAX_HANDLES as i64 {
         cut_handles(
             &mut kept,
             &mut positions,
@@ -549,7 +552,6 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
     }
 
     // 8. The Euler characteristic (a disc's one boundary loop counts one edge per edge).
-    let boundary_edges = open.as_ref().map_or(0, Vec::len) as i64;
     let e = (3 * kept.len() as i64 + boundary_edges) / 2;
     let chi = positions.len() as i64 - e + kept.len() as i64;
     if chi != chi_wanted {

@@ -414,7 +414,7 @@ pub fn mesh_oversample(surface: &HarmonicSurface<DVec3>) -> usize {
 
 /// A part of the scan with less than this share of its area is not fitted (it is named in
 /// [`FitReport::dropped_parts`]): loose scraps and specks.
-pub const PART_FLOOR: f64 = 0.002;
+pub const PART_FLOOR: f64 = 0.0005;
 
 /// A part with fewer vertices than this is not fitted.
 pub const PART_MIN_VERTICES: usize = 12;
@@ -723,16 +723,18 @@ fn point_sources(
         Ok((surface, planned))
     })?;
     let (mut surface, planned) = built;
+    let kept = |planned: &[PlannedPart]| planned.iter().map(|p| p.area_fraction).sum::<f64>();
     let (planned, dropped) = match planned {
-        Ok((planned, dropped)) if !planned.is_empty() => (planned, dropped),
+        Ok((planned, dropped)) if kept(&planned) >= MIN_AREA_KEPT => (planned, dropped),
         outcome => {
             // No part of the zero set to parameterise: the rays, wrapped.
             let why = match outcome {
                 Err(e) => format!("their zero set gave no surface ({e})"),
                 Ok((_, dropped)) => match dropped.first() {
-                    Some(d) => {
-                        format!("their zero set gave no part to fit ({}: {})", d.name, d.reason)
-                    }
+                    Some(d) => format!(
+                        "the parts of their zero set that could be fitted hold too little of it ({}: {})",
+                        d.name, d.reason
+                    ),
                     None => "their zero set is empty".to_owned(),
                 },
             };
