@@ -403,7 +403,6 @@ const FINE_ROUNDS: usize = 2;
 /// texels on the patches that close the scan's holes, which have no data either (whatever
 /// points are near the hole's rim), and every other texel moves at most [`MAX_MOVE`] point
 /// spacings.
-#[expect(clippy::too_many_arguments, reason = "private; two call sites")]
 fn wrap(
     patches: &PointSurface,
     mut x: Vec<DVec3>,

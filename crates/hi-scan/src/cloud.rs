@@ -92,8 +92,8 @@ const ESTIMATE_POINTS: usize = 200_000;
 /// The side of the grid cell at which about `target` cells hold points of `points` (within
 /// about 10 %, for points on a surface). The count of occupied cells of a surface falls as the
 /// square of the side; two measured counts fix the local exponent and a third corrects it. On
-/// clouds of more than 200 000 points and four times the target, the count is taken on an even
-/// subsample of that size.
+/// clouds of more than 200 000 points and four times the target, the counts are taken on an
+/// even subsample of that size, and one count of the whole cloud corrects the last.
 ///
 /// # Errors
 ///
@@ -122,7 +122,7 @@ pub fn cell_for_count(points: &[DVec3], target: usize) -> Result<f64, Error> {
     let sample: Vec<DVec3> = points.iter().step_by(step).copied().collect();
     let target = target as f64;
     let diagonal = crate::distance::bounding_diagonal(&sample);
-    if !(diagonal > 0.0) {
+    if diagonal.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err(Error::Degenerate { what: "all points coincide" });
     }
     let count = |cell: f64| occupied_cells(&sample, cell).map(|c| c as f64);
@@ -139,6 +139,12 @@ pub fn cell_for_count(points: &[DVec3], target: usize) -> Result<f64, Error> {
         let a = if n1 != n0 { ((n1 / n0).ln() / (h0 / h1).ln()).clamp(1.0, 3.0) } else { 2.0 };
         let next = h1 * (n1 / target).powf(1.0 / a);
         (h0, n0, h1) = (h1, n1, next);
+    }
+    if step > 1 {
+        // Near the sample's own spacing its cells empty faster than the cloud's: one step on
+        // the whole cloud corrects that (as a surface's count falls, as the square).
+        let n = occupied_cells(points, h1)? as f64;
+        h1 *= (n / target).sqrt();
     }
     Ok(h1)
 }

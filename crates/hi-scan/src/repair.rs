@@ -202,7 +202,8 @@ pub fn mesh_parts(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<MeshParts,
     let mut order: Vec<([u64; 3], u32)> = points
         .iter()
         .enumerate()
-        .map(|(k, p)| (p.to_array().map(f64::to_bits), k as u32))
+        // +0.0 and −0.0 are one position (adding 0 makes −0 +0).
+        .map(|(k, p)| ((*p + DVec3::ZERO).to_array().map(f64::to_bits), k as u32))
         .collect();
     order.sort_unstable();
     let mut weld: Vec<u32> = (0..u32::try_from(points.len()).unwrap_or(u32::MAX)).collect();

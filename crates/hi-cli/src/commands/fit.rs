@@ -53,43 +53,82 @@ fn count(n: usize, one: &str, many: &str) -> String {
     if n == 1 { format!("1 {one}") } else { format!("{n} {many}") }
 }
 
-/// The parts left out, named (the first few) with their size and why.
+/// The parts left out, named (the first few) with their size.
 fn dropped_list(dropped: &[DroppedPart]) -> String {
-    let mut names: Vec<String> = dropped
+    let described: Vec<String> = dropped
         .iter()
-        .take(NAMED_PARTS)
         .map(|d| format!("{} ({:.2}% of the area)", d.name, 100.0 * d.area_fraction))
         .collect();
-    if dropped.len() > NAMED_PARTS {
-        names.push(format!("and {} more", dropped.len() - NAMED_PARTS));
-    }
-    names.join(", ")
+    names(&described.iter().map(String::as_str).collect::<Vec<_>>())
 }
 
-/// What the fit found and did about a part's topology, in words, when there was anything to do
-/// (a torus, an open sheet, holes closed, handles cut).
-fn topology_note(part: &PartReport) -> Option<String> {
-    let r = &part.repair;
-    let mut did = Vec::new();
-    match part.domain {
-        Domain::Torus => did.push("fitted over the torus with no cut".to_owned()),
-        Domain::Sheet => did.push(format!(
-            "an open sheet ({}), fitted open",
-            count(part.boundary_loops, "boundary loop", "boundary loops")
-        )),
-        Domain::Sphere(_) => {}
+/// Names, the first few of them, then how many more.
+fn names(parts: &[&str]) -> String {
+    let mut out: Vec<String> = parts.iter().take(NAMED_PARTS).map(|s| (*s).to_owned()).collect();
+    if parts.len() > NAMED_PARTS {
+        out.push(format!("and {} more", parts.len() - NAMED_PARTS));
     }
-    if r.holes > 0 {
-        did.push(format!("{} closed", count(r.holes, "hole", "holes")));
+    out.join(", ")
+}
+
+/// What the fit found and did about its parts' topology, in words, one line per kind of thing
+/// done (a torus, an open sheet, holes closed, handles cut), naming the parts; a lone part's
+/// line says it all.
+fn topology_notes(parts: &[PartReport]) -> Vec<String> {
+    if let [part] = parts {
+        let r = &part.repair;
+        let mut did = Vec::new();
+        match part.domain {
+            Domain::Torus => did.push("fitted over the torus with no cut".to_owned()),
+            Domain::Sheet => did.push(format!(
+                "an open sheet ({}), fitted open",
+                count(part.boundary_loops, "boundary loop", "boundary loops")
+            )),
+            Domain::Sphere(_) => {}
+        }
+        if r.holes > 0 {
+            did.push(format!("{} closed", count(r.holes, "hole", "holes")));
+        }
+        if r.handles_cut > 0 {
+            did.push(format!(
+                "{} cut (genus {}), both sides of each cut closed",
+                count(r.handles_cut, "handle", "handles"),
+                part.genus
+            ));
+        }
+        return if did.is_empty() {
+            Vec::new()
+        } else {
+            vec![format!("{}: {}", part.name, did.join("; "))]
+        };
     }
-    if r.handles_cut > 0 {
-        did.push(format!(
-            "{} cut (genus {}), both sides of each cut closed",
-            count(r.handles_cut, "handle", "handles"),
-            part.genus
+    let pick = |keep: &dyn Fn(&PartReport) -> bool| -> Vec<&str> {
+        parts.iter().filter(|p| keep(p)).map(|p| p.name.as_str()).collect()
+    };
+    let tori = pick(&|p| p.domain == Domain::Torus);
+    let sheets = pick(&|p| p.domain == Domain::Sheet);
+    let holed = pick(&|p| p.repair.holes > 0);
+    let cut = pick(&|p| p.repair.handles_cut > 0);
+    let holes: usize = parts.iter().map(|p| p.repair.holes).sum();
+    let handles: usize = parts.iter().map(|p| p.repair.handles_cut).sum();
+    let mut lines = Vec::new();
+    if !tori.is_empty() {
+        lines.push(format!("genus 1, fitted over the torus with no cut: {}", names(&tori)));
+    }
+    if !sheets.is_empty() {
+        lines.push(format!("open sheets, fitted open: {}", names(&sheets)));
+    }
+    if !holed.is_empty() {
+        lines.push(format!("{} closed in {}", count(holes, "hole", "holes"), names(&holed)));
+    }
+    if !cut.is_empty() {
+        lines.push(format!(
+            "{} cut, both sides of each cut closed, in {}",
+            count(handles, "handle", "handles"),
+            names(&cut)
         ));
     }
-    (!did.is_empty()).then(|| format!("{}: {}", part.name, did.join("; ")))
+    lines
 }
 
 /// The warnings and notes of a fit of `scan`, one line each: the topology found and what was
@@ -99,19 +138,24 @@ fn topology_note(part: &PartReport) -> Option<String> {
 fn warnings(fitted: &Fit, scan: &Path) -> Vec<String> {
     let report = &fitted.report;
     let mut lines = Vec::new();
+    if report.dropped_points > 0 {
+        lines.push(format!(
+            "warning: {} with a NaN or infinite coordinate {} left out of {}",
+            count(report.dropped_points, "point", "points"),
+            if report.dropped_points == 1 { "was" } else { "were" },
+            scan.display()
+        ));
+    }
     if report.parts.len() > 1 {
         lines.push(format!(
-            "note: {} has {} parts above the floor ({}% of its area): each is fitted on its own, named part 1 to part {} by area",
+            "note: {} has {} parts to fit (of at least {}% of its area): each is fitted on its own, named part 1, part 2, … by area, largest first",
             scan.display(),
             report.parts.len(),
             100.0 * report.part_floor,
-            report.parts.len()
         ));
     }
-    for part in &report.parts {
-        if let Some(note) = topology_note(part) {
-            lines.push(format!("note: {note}"));
-        }
+    for note in topology_notes(&report.parts) {
+        lines.push(format!("note: {note}"));
     }
     if !report.dropped_parts.is_empty() {
         let area: f64 = report.dropped_parts.iter().map(|d| d.area_fraction).sum();
