@@ -781,12 +781,19 @@ fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
     loops
 }
 
+/// The most conjugate-gradient steps of a cap's fairing ([`fill_hole`]): enough for caps of
+/// thousands of vertices (the steps it takes grow with the cap's radius in edges squared).
+const FAIRING_ITERATIONS: usize = 4000;
+
 /// Closes the boundary loop `lp` (in the order the mesh's triangles run along it) by rings of
 /// new vertices shrinking towards its centroid, one ring per mean edge length of the loop's
-/// radius, then a fan around the centroid; the new vertices are then moved to the discrete
-/// membrane (each the mean of its neighbours, by Gauss–Seidel sweeps, the loop fixed), so the
-/// patch is as flat as its border allows and its triangles have about the size of the
-/// mesh's.
+/// radius, then a fan around the centroid, with triangles about the size of the mesh's. The new
+/// vertices are moved first to the discrete membrane (each the mean of its neighbours, by
+/// Gauss–Seidel sweeps, the loop fixed: as flat as its border allows), then to the thin plate
+/// the surface around it continues into: the umbrella operator applied twice vanishes at
+/// every new vertex (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about it
+/// fixed), so the cap leaves the rim along the surface's own tangent plane, with no crease for
+/// the harmonic surface to ring on.
 fn fill_hole(
     lp: &[u32],
     faces: &mut Vec<[u32; 3]>,
@@ -853,12 +860,116 @@ fn fill_hole(
             }
         }
     }
-    for _ in 0..(4 * (rings + 1) * (rings + 1)).clamp(20, 2000) {
+    let sweeps = (4 * (rings + 1) * (rings + 1)).clamp(20, 2000);
+    for _ in 0..sweeps {
         for (i, list) in neighbours.iter().enumerate() {
             let mean =
                 list.iter().map(|&k| positions[k as usize]).sum::<DVec3>() / list.len() as f64;
             positions[first_new + i] = mean;
         }
+    }
+    fair(lp, faces, positions, first_new, &neighbours, FAIRING_ITERATIONS);
+}
+
+/// The thin-plate fairing of a hole's cap (see [`fill_hole`]): the cap's new vertices (from
+/// `first_new`, with their `neighbours`) placed where the umbrella operator
+/// U(v) = mean of v's neighbours − v vanishes, in the least-squares sense, at every vertex of
+/// the cap and of the loop `lp` (the loop and the rest of the mesh fixed), by conjugate
+/// gradients on the normal equations (CGLS, three coordinates at once, from the membrane the
+/// caller placed them on), at most `iterations` steps.
+fn fair(
+    lp: &[u32],
+    faces: &[[u32; 3]],
+    positions: &mut [DVec3],
+    first_new: usize,
+    neighbours: &[Vec<u32>],
+    iterations: usize,
+) {
+    // The loop's vertices' neighbours, on the scan's side and the cap's.
+    let mut around_loop: std::collections::HashMap<u32, Vec<u32>> =
+        lp.iter().map(|&v| (v, Vec::new())).collect();
+    for t in faces {
+        for k in 0..3 {
+            if let Some(list) = around_loop.get_mut(&t[k]) {
+                for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
+                    if !list.contains(&other) {
+                        list.push(other);
+                    }
+                }
+            }
+        }
+    }
+    let free = neighbours.len();
+    // One row per vertex of the loop and the cap: U(v) as coefficients of the free vertices
+    // (cap vertex c at column c − first_new), and its fixed part.
+    let rows: Vec<(Vec<(usize, f64)>, DVec3)> = lp
+        .iter()
+        .map(|&v| (v, around_loop.get(&v).map_or(&[][..], Vec::as_slice)))
+        .chain(
+            neighbours
+                .iter()
+                .enumerate()
+                .map(|(i, ring)| ((first_new + i) as u32, ring.as_slice())),
+        )
+        .filter(|(_, ring)| !ring.is_empty())
+        .map(|(v, ring)| {
+            let w = 1.0 / ring.len() as f64;
+            let mut coefficients = Vec::with_capacity(ring.len() + 1);
+            let mut fixed = DVec3::ZERO;
+            for (k, c) in ring.iter().map(|&k| (k, w)).chain([(v, -1.0)]) {
+                if k as usize >= first_new {
+                    coefficients.push((k as usize - first_new, c));
+                } else {
+                    fixed += positions[k as usize] * c;
+                }
+            }
+            (coefficients, fixed)
+        })
+        .collect();
+    let apply = |x: &[DVec3]| -> Vec<DVec3> {
+        rows.iter().map(|(c, _)| c.iter().map(|&(k, w)| x[k] * w).sum()).collect()
+    };
+    let apply_t = |r: &[DVec3]| -> Vec<DVec3> {
+        let mut out = vec![DVec3::ZERO; free];
+        for ((c, _), ri) in rows.iter().zip(r) {
+            for &(k, w) in c {
+                out[k] += *ri * w;
+            }
+        }
+        out
+    };
+    let dot = |a: &[DVec3], b: &[DVec3]| -> DVec3 { a.iter().zip(b).map(|(x, y)| *x * *y).sum() };
+    let mut x: Vec<DVec3> = positions[first_new..first_new + free].to_vec();
+    // r = b − A x with b = −fixed.
+    let ax = apply(&x);
+    let mut r: Vec<DVec3> = rows.iter().zip(&ax).map(|((_, f), a)| -*f - *a).collect();
+    let mut s = apply_t(&r);
+    let mut p = s.clone();
+    let mut gamma = dot(&s, &s);
+    let start = gamma.max_element();
+    for _ in 0..iterations {
+        if gamma.max_element() <= 1e-24 * start.max(f64::MIN_POSITIVE) {
+            break;
+        }
+        let q = apply(&p);
+        let qq = dot(&q, &q);
+        let alpha = DVec3::select(qq.cmpgt(DVec3::ZERO), gamma / qq, DVec3::ZERO);
+        for (xi, pi) in x.iter_mut().zip(&p) {
+            *xi += alpha * *pi;
+        }
+        for (ri, qi) in r.iter_mut().zip(&q) {
+            *ri -= alpha * *qi;
+        }
+        s = apply_t(&r);
+        let next = dot(&s, &s);
+        let beta = DVec3::select(gamma.cmpgt(DVec3::ZERO), next / gamma, DVec3::ZERO);
+        for (pi, si) in p.iter_mut().zip(&s) {
+            *pi = *si + beta * *pi;
+        }
+        gamma = next;
+    }
+    if x.iter().all(|v| v.is_finite()) {
+        positions[first_new..first_new + free].copy_from_slice(&x);
     }
 }
 

@@ -162,3 +162,60 @@ fn a_moebius_band_is_refused() {
     let err = close_part(&parts.parts[0], Closing::Disc).unwrap_err().to_string();
     assert!(err.contains("one-sided"), "{err}");
 }
+
+/// A hole's cap continues the surface around it: a sphere with its top cut off (every
+/// triangle above z = 0.8) is closed by a dome close to the sphere itself, not by a flat lid
+/// (which would lie 0.2 below the pole), and the dome meets the rim along the sphere's
+/// tangent plane (the angle between the normals across a rim edge stays small).
+#[test]
+fn a_cap_continues_the_surface_it_closes() {
+    let mut mesh = (Vec::new(), Vec::new());
+    append(
+        &mut mesh,
+        grid(48, 64, (false, true), |i, j| {
+            let (a, b) = (std::f64::consts::PI * f64::from(i) / 48.0, TAU * f64::from(j) / 64.0);
+            match i {
+                0 => DVec3::Z,
+                48 => -DVec3::Z,
+                _ => DVec3::new(a.sin() * b.cos(), a.sin() * b.sin(), a.cos()),
+            }
+        }),
+    );
+    let (points, all) = mesh;
+    let centroid = |t: &[u32; 3]| t.iter().map(|&k| points[k as usize]).sum::<DVec3>() / 3.0;
+    let triangles: Vec<[u32; 3]> = all.into_iter().filter(|t| centroid(t).z <= 0.8).collect();
+    let parts = mesh_parts(&points, &triangles).unwrap();
+    let closed = close_part(&parts.parts[0], Closing::Sphere).unwrap();
+    assert_eq!(closed.repair.holes, 1);
+    let cap: Vec<DVec3> = closed
+        .positions
+        .iter()
+        .zip(&closed.scan_vertex)
+        .filter(|&(_, &s)| s == hi_scan::repair::ADDED_VERTEX)
+        .map(|(p, _)| *p)
+        .collect();
+    assert!(!cap.is_empty());
+    let off = cap.iter().map(|p| (p.length() - 1.0).abs()).fold(0.0, f64::max);
+    assert!(off < 0.05, "the cap is {off} off the sphere");
+    let top = cap.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max);
+    assert!(top > 0.97, "the dome's top at {top}");
+    // Across every edge between a scan triangle and a cap triangle, the normals turn by little
+    // more than they do between the sphere's own triangles (about 5° at this resolution).
+    let normal = |t: &[u32; 3]| {
+        let [a, b, c] = t.map(|k| closed.positions[k as usize]);
+        (b - a).cross(c - a).normalize()
+    };
+    let mut by_edge: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+    for (f, t) in closed.triangles.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            by_edge.entry((a.min(b), a.max(b))).or_default().push(f);
+        }
+    }
+    let worst = by_edge
+        .values()
+        .filter(|fs| fs.len() == 2 && closed.filled[fs[0]] != closed.filled[fs[1]])
+        .map(|fs| normal(&closed.triangles[fs[0]]).angle_between(normal(&closed.triangles[fs[1]])))
+        .fold(0.0, f64::max);
+    assert!(worst.to_degrees() < 12.0, "the rim turns by {}°", worst.to_degrees());
+}
