@@ -78,28 +78,43 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   \"image\": [R, C], \"surface\": [M, N], \"non_star_fraction\": s, \"hole_fraction\": h,
   \"mesh\": {\"holes_filled\", \"hole_edges\", \"parts\", \"area_kept\", \"welded_points\",
   \"dropped_triangles\", \"reoriented_triangles\", \"split_vertices\", \"handles_cut\",
-  \"stretch_efficiency\", \"levels\"} | null, \"regularisation\": {\"lambda\", \"kept\", \"rms_change\", \"max_change\"} | null,
-  \"stages\": [{\"name\": …, \"seconds\": t}, …], \"reduction\": {\"max_deviation\", \"upper_bound\"} | null,
+  \"stretch_efficiency\", \"area_ratio\"} | null, \"regularisation\": {\"lambda\", \"kept\", \"rms_change\", \"max_change\"},
+  \"stages\": [{\"kind\": …, \"seconds\": t}, …], \"reduction\": {\"max_deviation\", \"upper_bound\"} | null,
   \"errors\": {\"mean\", \"rms\", \"max\", \"diagonal\", \"relative\": [mean, rms, max]},
   \"both_ways\": {\"scan_to_surface\", \"surface_to_scan\": {\"mean\", \"rms\", \"max\", \"relative\"},
   \"filled_to_scan_max\", \"filled_to_scan_max_relative\", \"unreached_fraction\", \"diagonal\"},
-  \"hausdorff\": {\"distance\", \"relative\"} | null, \"files\": [...]}
-  --method auto (the default) fits a mesh scan that closes to genus 0 (holes filled, parts
-  other than the largest dropped, handles cut) through a spherical parameterisation of the
-  mesh itself (mesh), and anything else, point sets included, by wrapping a surface onto the
-  points (shrink-wrap: the zero set of their signed distance, parameterised over the sphere,
-  projected onto them and pulled into the creases it bridged); method_reason says why. radial
-  is the thesis's algorithm 2 (rays from the centre). non_star_fraction counts the rays from
-  the centre that met the scan more than once; above 5% a warning, when the surface follows
-  the outermost shell the rays met (radial, contours, or a shrink-wrap that had to start from
-  the rays). The image size follows the point count unless --resolution is given. A surface
-  through points is regularised to the scan's own noise (--regularise); --smooth 0 interpolates.
-  The output mesh is closed, welded at every seam and faces outwards. errors: the scan's
-  points to the output mesh (kd-tree, or with --exact-error Gauss-Newton onto the surface);
-  both_ways adds the surface to the scan (its mesh when it has one), the largest distance from
-  filled texels (holes) apart, and the fraction of the scan's points farther than 2% of the
-  diagonal from the surface (unreached; above 1% a warning with its cause, such as parts of a
-  mesh left out or shells the wrap could not reach). An image more than half holes is refused.
+  \"hausdorff\": {\"distance\", \"relative\"} | null,
+  \"topology\": {\"parts\", \"parts_dropped\", \"part_floor\", \"genus\": [...], \"boundary_loops\": [...],
+  \"domains\": [\"sphere\" | \"torus\" | \"sheet\", ...]},
+  \"parts\": [{\"name\", \"domain\", \"why\", \"area_fraction\", \"genus\", \"boundary_loops\",
+  \"holes_filled\", \"handles_cut\", \"image\", \"surface\", \"hole_fraction\", \"both_ways\"}, …],
+  \"dropped_parts\": [{\"name\", \"vertices\", \"area_fraction\", \"reason\"}, …], \"files\": [...]}
+  Image, surface, mesh, regularisation and reduction are the largest part's.
+  Every part of the scan of at least 0.05% of its area is fitted on its own (part 1 the
+  largest): a mesh's connected parts, or the parts of the zero set of a point set's signed
+  distance. --method auto (the default) parameterises a mesh's parts (mesh) when those hold at
+  least half its area, and otherwise wraps a surface onto the points (shrink-wrap: the zero set
+  of their signed distance, parameterised, projected onto them and pulled into the creases it
+  bridged; a cloud larger than its images can hold is first summarised on a grid); method_reason
+  says why. Each part goes over the domain its topology asks for: a closed surface of genus 0
+  over the sphere (holes capped by a thin plate that continues the surface), genus 1 over the
+  torus (no cut, no seam), higher genus over the sphere with its handles cut, an open sheet (its
+  widest rim would need a cap of a quarter of its area) over the mirrored square as an open
+  surface; --closed caps every part, --open leaves every part with a rim open. radial is the
+  thesis's algorithm 2 (rays from the centre, the whole scan as one surface). non_star_fraction
+  counts the rays from the centre that met the scan more than once; above 5% a warning, when the
+  surface follows the outermost shell the rays met. The image size follows the point count
+  unless --resolution is given (several parts share its texels by area). A surface through
+  points is regularised to the scan's own noise (--regularise); --smooth 0 interpolates.
+  Several parts are written as one scene of meshes named part 1, part 2, … (glTF nodes, OBJ
+  objects); closed parts are welded at every seam and face outwards. errors: the scan's points
+  to the nearest output mesh (kd-tree, or with --exact-error Gauss-Newton onto the surface);
+  both_ways adds the surfaces to the scan, the largest distance from filled texels (holes)
+  apart, and the fraction of the scan's points farther than 2% of the diagonal from the surface
+  (unreached; above 1% a warning with its cause). Notes on stderr say what was done about each
+  part's topology; warnings name the parts left out and points dropped for non-finite
+  coordinates. A part whose image is more than half holes is left out; if every part's is, the
+  fit is refused.
 --param sections is algorithm 1 (§5.3) instead: sections across --axis (K equal slabs with
   --slices K, else the thesis's recursive subdivision), a harmonic curve through each (points in
   --order), insertion to equal counts, rotation alignment, the reversed traversal. Its output
@@ -440,7 +455,8 @@ pub(crate) struct FitArgs {
     /// in world space).
     #[arg(value_name = "SCAN")]
     pub(crate) scan: PathBuf,
-    /// The output: a closed mesh of the surface (.glb, .gltf, .obj) or its grid (.json, for 'hi surface').
+    /// The output: a mesh of each part's surface (.glb, .gltf, .obj; several parts as one scene
+    /// of named meshes) or the surfaces' grids (.json, for 'hi surface').
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub(crate) output: PathBuf,
     /// The geometry image's layout (or algorithm 1's cross-sections).

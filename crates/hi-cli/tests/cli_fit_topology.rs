@@ -140,8 +140,8 @@ fn three_parts_give_three_named_meshes_that_peers_accept() {
     assert_eq!(report["topology"]["boundary_loops"], serde_json::json!([0, 0, 1]));
     assert!(num(&report["both_ways"]["unreached_fraction"]) == 0.0, "{report}");
     assert!(
-        stderr.contains("part 1: fitted over the torus")
-            && stderr.contains("part 3: an open sheet"),
+        stderr.contains("genus 1, fitted over the torus with no cut: part 1")
+            && stderr.contains("open sheets, fitted open: part 3"),
         "{stderr}"
     );
     // Three nodes, named, each with its mesh; the closed ones closed, the sheet with a rim.

@@ -102,8 +102,8 @@ impl PointSurface {
     /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
     /// let (q, _) = surface.project(DVec3::new(7.3, 9.6, 3.0), DVec3::Z);
     /// assert!((q - DVec3::new(7.3, 9.6, 1.0)).length() < 1e-9);
-    /// // The 8th neighbour on the grid is √2 away: a spacing of √(π/4), about 0.89.
-    /// assert!((surface.spacing() - (std::f64::consts::PI / 4.0).sqrt()).abs() < 1e-12);
+    /// // The 8th neighbour on the unit grid is √2 away: a spacing of 1.
+    /// assert!((surface.spacing() - 1.0).abs() < 1e-12);
     /// ```
     pub fn try_new(
         points: &[DVec3],
@@ -145,13 +145,12 @@ impl PointSurface {
             .map(|(i, p)| {
                 let near =
                     tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
-                // The side of the square each point has to itself, from the disc that holds its
-                // nearest SPACING_NEIGHBOURS: 1/√density whether the points lie on a grid
-                // (√(π/4) of a unit grid's step) or are scattered at random (whose nearest
-                // neighbour is half as far).
-                let spacing = near.get(SPACING_NEIGHBOURS).map_or(0.0, |n| {
-                    (std::f64::consts::PI * n.distance / SPACING_NEIGHBOURS as f64).sqrt()
-                });
+                // From the distance to the 8th nearest neighbour, which follows the density of
+                // the points whether they lie on a grid or are scattered at random (whose
+                // nearest neighbour is about half as far): the step of the square grid whose
+                // 8th neighbour (a diagonal one) lies as far, r/√2.
+                let spacing =
+                    near.get(SPACING_NEIGHBOURS).map_or(0.0, |n| (n.distance / 2.0).sqrt());
                 let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
                 let normal = given
                     .and_then(|n| n[i].try_normalize())
@@ -177,10 +176,11 @@ impl PointSurface {
         Ok(Self { tree, patches, spacing })
     }
 
-    /// The points' spacing: the median over the points of √(π r² / 8), r the distance to a
-    /// point's 8th nearest neighbour: the side of the square each point has to itself on the
-    /// surface, 1/√density whether the points lie on a grid (√(π/4) of its step) or are
-    /// scattered at random (whose nearest neighbours lie about half as far).
+    /// The points' spacing: the median over the points of r/√2, r the distance to a point's
+    /// 8th nearest neighbour: the step of a square grid of points (whose 8th neighbour is a
+    /// diagonal one), and 2/√(π·density) for points scattered at random at that density (whose
+    /// nearest neighbours lie about half as far; the distance to the nearest would call them
+    /// twice as dense as they are).
     #[must_use]
     pub const fn spacing(&self) -> f64 {
         self.spacing
@@ -393,6 +393,11 @@ const BAND: usize = 1;
 /// The most grid cells about a point where the signed distance is evaluated.
 const MAX_BAND: usize = 4;
 
+/// A node counts only if its height over the nearest patch is within this many cells (or of
+/// the nearest point's own spacings, where that is larger): farther, its sign says nothing of a
+/// surface between it and its neighbours.
+const NEAR: f64 = 2.0;
+
 /// How far, in grid cells, a grid node's foot on the nearest point's tangent plane may lie
 /// from that point for the signed distance to count (2 point spacings at [`CELL`]).
 const REACH: f64 = 2.0 / CELL;
@@ -404,7 +409,9 @@ impl PointSurface {
     /// up to four cells), and only where the node's foot on that patch's tangent plane is
     /// within 4/3 of a cell of the point, or twice its own spacing (so that the zero set ends at
     /// the rims of the scan's holes rather than running on along tangent planes, wherever the
-    /// scan is sparser or denser), meshed by [`crate::surfacenets`]: an open or closed
+    /// scan is sparser or denser), and whose height over it is within two cells (or two of the
+    /// point's spacings: no surface appears midway between two sheets, where the nearest point
+    /// passes from one to the other), meshed by [`crate::surfacenets`]: an open or closed
     /// mesh whose triangles wind counter-clockwise seen from the side the patches face.
     /// A cell of [`CELL`] point spacings follows every detail the points resolve; a coarser one
     /// gives a coarser mesh at less cost.
@@ -500,7 +507,11 @@ impl PointSurface {
                     return f64::NAN;
                 }
                 let (f, off, local) = self.signed_with_spacing(node_at(t));
-                if off <= reach.max(2.0 * local) { f } else { f64::NAN }
+                // A node much farther from the surface than a cell is no witness of where the
+                // surface is: between two sheets, where the nearest point passes from one to
+                // the other, the height jumps across zero without a surface there.
+                let near = f.abs() <= NEAR * h.max(local);
+                if off <= reach.max(2.0 * local) && near { f } else { f64::NAN }
             })
             .collect();
         drop(band);

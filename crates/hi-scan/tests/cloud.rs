@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! Large clouds: the grid summary against sums computed here point by point, the cell chosen
 //! for a count against the count it gives, and the zero set of points scattered at random (not
-//! on a grid) closed with no holes: the spacing the local surface estimates is 1/√density for
-//! both.
+//! on a grid) closed with no holes: the spacing the local surface estimates follows the density
+//! for both.
 
 use std::f64::consts::{PI, TAU};
 
@@ -106,8 +106,8 @@ fn points_scattered_at_random_close_with_no_hole() {
     // cloud did). On the spacing from the density, it is one closed surface of genus 0.
     let points = sphere_points(40_000, 1.0, 1e-4, 11);
     let surface = PointSurface::try_new(&points, None, 16).unwrap();
-    // 40 000 points on an area of 4π: a spacing of √(4π/40 000) ≈ 0.0177.
-    let expected = (4.0 * PI / 40_000.0f64).sqrt();
+    // 40 000 points on an area of 4π, at random: a spacing of 2/√(π·density) = 4/√40 000.
+    let expected = 2.0 / (PI * 40_000.0 / (4.0 * PI)).sqrt();
     assert!((surface.spacing() / expected - 1.0).abs() < 0.1, "{}", surface.spacing());
     let (v, t) = surface.zero_set(CELL * surface.spacing()).unwrap();
     let parts = mesh_parts(&v, &t).unwrap();

@@ -157,10 +157,12 @@ pub struct FitOptions {
     pub rasterise: bool,
     /// How the error is measured. Default [`ErrorMeasure::Fast`].
     pub error: ErrorMeasure,
-    /// Refuse a fit whose image has more than this fraction of filled texels (texels no scan
-    /// data reached), with [`Error::MostlyHoles`]: such a surface is mostly guesswork.
-    /// Default [`MAX_HOLE_FRACTION`]; 1 accepts any image with at least one measured texel
-    /// (an image with none is always refused).
+    /// Refuse an image made by rays (algorithm 2, §5.8, or the rays' wrap) that has more than
+    /// this fraction of filled texels (texels no scan data reached), with
+    /// [`Error::MostlyHoles`]: such a surface is mostly guesswork (with several parts, that part
+    /// is left out). Default [`MAX_HOLE_FRACTION`]; 1 accepts any image with at least one
+    /// measured texel (an image with none is always refused). The caps a parameterisation puts
+    /// over a scan's holes are reported ([`PartReport::hole_fraction`]), not refused.
     pub max_hole_fraction: f64,
 }
 
@@ -1006,16 +1008,19 @@ pub fn fit(
     };
     let Sources { parts: mut sourced, mut dropped, method, reason: method_reason, image_points } =
         sources;
-    // Parts whose images are mostly guesswork are left out; if every part's is, the fit is.
+    // Parts whose images are mostly guesswork are left out; if every part's is, the fit is. (The
+    // texels a parameterisation puts on the caps of holes are the surface's choice, said so in
+    // the report, not missing data: only the rays' images are judged.)
+    let guesswork = |p: &Sourced| {
+        let h = p.source.hole_fraction();
+        h >= 1.0 || (p.source.follows_outer_shell() && h > options.max_hole_fraction)
+    };
     let worst = sourced.iter().map(|p| p.source.hole_fraction()).fold(0.0, f64::max);
-    if sourced.iter().all(|p| {
-        p.source.hole_fraction() > options.max_hole_fraction || p.source.hole_fraction() >= 1.0
-    }) {
+    if sourced.iter().all(guesswork) {
         return Err(Error::MostlyHoles { fraction: worst });
     }
     sourced.retain(|p| {
-        let bad =
-            p.source.hole_fraction() > options.max_hole_fraction || p.source.hole_fraction() >= 1.0;
+        let bad = guesswork(p);
         if bad {
             dropped.push(DroppedPart {
                 name: p.name.clone(),
