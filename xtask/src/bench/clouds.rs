@@ -103,23 +103,30 @@ const SMALL: Scale = Scale {
     once: true,
 };
 
-/// Timed runs of a command of `points` points: (an untimed warm-up first, timed runs).
-/// Medians of three after a warm-up below 10⁶ points; of two, with no warm-up, from there (the
-/// lower of the two, as [`median_f64`] takes the lower middle). A warm-up that takes
-/// [`WARM_ENOUGH`] or more counts as the first timed run ([`measured`]).
-const fn runs(points: usize, once: bool) -> (bool, usize) {
-    if once {
-        (false, 1)
-    } else if points >= 1_000_000 {
-        (false, 2)
+/// Timed runs of a command, of which the median is taken.
+const RUNS: usize = 3;
+
+/// Seconds from which a first run is timed too, rather than an untimed warm-up: reading the
+/// input, which is what a warm run saves, is then a small part of the whole.
+const WARM_ENOUGH: f64 = 10.0;
+
+/// Seconds from which a first run is the only one: a command that long gains little from a
+/// warm start, and three runs of each would triple the longest rows of the bench.
+const LONG: f64 = 60.0;
+
+/// The runs of a command whose first run took `first` seconds: whether that first run is
+/// timed (else it was an untimed warm-up), and how many are timed in all. [`RUNS`] timed after
+/// a warm-up below [`WARM_ENOUGH`]; [`RUNS`] with the first among them below [`LONG`]; the
+/// first alone from there; the first alone with `once` (`--small`).
+fn plan(first: f64, once: bool) -> (bool, usize) {
+    if once || first >= LONG {
+        (true, 1)
+    } else if first >= WARM_ENOUGH {
+        (true, RUNS)
     } else {
-        (true, 3)
+        (false, RUNS)
     }
 }
-
-/// Seconds from which a warm-up run is timed too: reading the input, which is what a warm
-/// run saves, is then a small part of the whole (and the bench an hour shorter).
-const WARM_ENOUGH: f64 = 10.0;
 
 /// Where a scan of [`TOPOLOGY`] comes from.
 #[derive(Clone, Copy, Debug)]
@@ -349,40 +356,45 @@ fn error_line(stderr: &str) -> Option<String> {
         .map(str::to_owned)
 }
 
-/// Runs a command as [`runs`] asks, with a message on `bar` for each run; the median time and
+/// Runs a command as [`plan`] asks, with a message on `bar` for each run; the median time and
 /// peak memory, or the first failure, and the stderr of the last run.
 fn measured(
     root: &Path,
     scale: &Scale,
-    points: usize,
     what: &str,
     bar: &ProgressBar,
     program: &Path,
     args: &[&str],
 ) -> Result<(Outcome, String)> {
-    let (mut warm_up, timed) = runs(points, scale.once);
-    let mut total = timed + usize::from(warm_up);
+    let failed = |run: RunOut| {
+        let message = run.error.unwrap_or_default();
+        (Outcome::Failed { message, seconds: run.seconds, peak_kib: run.peak_kib }, run.stderr)
+    };
+    bar.set_message(format!("{what}, run 1"));
+    let first = run_once(root, scale.timeout, program, args)?;
+    if first.error.is_some() {
+        return Ok(failed(first));
+    }
+    let (counts, timed) = plan(first.seconds, scale.once);
     let (mut seconds, mut peaks) = (Vec::new(), Vec::new());
-    let mut stderr = String::new();
-    let mut k = 0;
-    while k < total {
-        bar.set_message(format!("{what}, run {} of {total}", k + 1));
+    if counts {
+        seconds.push(first.seconds);
+        peaks.push(first.peak_kib);
+    }
+    let mut stderr = first.stderr;
+    let total = timed + usize::from(!counts);
+    while seconds.len() < timed {
+        bar.set_message(format!(
+            "{what}, run {} of {total}",
+            2 + seconds.len() - usize::from(counts)
+        ));
         let run = run_once(root, scale.timeout, program, args)?;
+        if run.error.is_some() {
+            return Ok(failed(run));
+        }
+        seconds.push(run.seconds);
+        peaks.push(run.peak_kib);
         stderr = run.stderr;
-        if let Some(message) = run.error {
-            return Ok((
-                Outcome::Failed { message, seconds: run.seconds, peak_kib: run.peak_kib },
-                stderr,
-            ));
-        }
-        if k == 0 && warm_up && run.seconds >= WARM_ENOUGH {
-            (warm_up, total) = (false, timed);
-        }
-        if k > 0 || !warm_up {
-            seconds.push(run.seconds);
-            peaks.push(run.peak_kib);
-        }
-        k += 1;
     }
     Ok((
         Outcome::Done { seconds: median_f64(seconds), peak_kib: median_f64(peaks), runs: timed },
@@ -843,7 +855,6 @@ fn measure_case(
     let (mut ours, stderr) = measured(
         root,
         scale,
-        c.points,
         &format!("{}: hi fit", c.label),
         bar,
         hi,
@@ -864,7 +875,6 @@ fn measure_case(
     let (theirs, _) = measured(
         root,
         scale,
-        c.points,
         &format!("{}: Poisson", c.label),
         bar,
         Path::new("python3"),
@@ -925,8 +935,20 @@ fn panels(
     }
 }
 
-/// One line of a table.
-fn row(root: &Path, c: &Case, m: &Measurement) -> Vec<String> {
+/// A time for a table: seconds, with "(once)" when a full run timed the command once.
+fn timed_cell(o: &Outcome, small: bool) -> Option<String> {
+    match o {
+        Outcome::Done { seconds, runs: 1, .. } if !small => {
+            Some(format!("{} (once)", secs(*seconds)))
+        }
+        Outcome::Done { seconds, .. } => Some(secs(*seconds)),
+        Outcome::Failed { .. } => None,
+    }
+}
+
+/// One line of a table (`small`: every command was run once, so that goes unsaid).
+fn row(root: &Path, c: &Case, m: &Measurement, small: bool) -> Vec<String> {
+    let scale_once = small;
     let side =
         |o: &Outcome, mm: Option<&Measured>| o.done().map(|(t, k)| (t, k, mm.map(|x| x.mean)));
     let (ours, theirs) = (side(&m.ours, m.ours_m.as_ref()), side(&m.theirs, m.theirs_m.as_ref()));
@@ -958,7 +980,7 @@ fn row(root: &Path, c: &Case, m: &Measurement) -> Vec<String> {
     let mut cells = vec![
         c.label.clone(),
         count_name(c.points),
-        pair(m.ours.done().map(|d| secs(d.0)), m.theirs.done().map(|d| secs(d.0))),
+        pair(timed_cell(&m.ours, scale_once), timed_cell(&m.theirs, scale_once)),
         verdict_cell(v.speed, ratio(&|a, b| Some(b.0 / a.0))),
         pair(m.ours.done().map(|d| mib(d.1)), m.theirs.done().map(|d| mib(d.1))),
         verdict_cell(v.memory, ratio(&|a, b| Some(a.1 / b.1))),
@@ -1018,19 +1040,13 @@ pub(super) fn run(root: &Path, docs: &Path, options: &Options) -> Result<(String
     let hi = poisson::build_hi(root)?;
     let floor = run_once(root, 60.0, Path::new("true"), &[])?.peak_kib;
     let (cases, missing) = cases(root, scale, options, &dir, &bar)?;
-    let steps: usize = cases
-        .iter()
-        .map(|c| {
-            let (w, r) = runs(c.points, scale.once);
-            2 * (r + usize::from(w)) + usize::from(c.group != Group::Growth)
-        })
-        .sum();
+    // Steps: each row's two commands (however many runs), and its drawing.
+    let steps: usize = cases.iter().map(|c| 2 + usize::from(c.group != Group::Growth)).sum();
     bar.set_length(steps as u64);
     let mut results = Vec::new();
     for c in &cases {
         let m = measure_case(root, scale, &hi, &out, c, &bar)?;
-        let (w, r) = runs(c.points, scale.once);
-        bar.inc(2 * (r + usize::from(w)) as u64);
+        bar.inc(2);
         let drawn = if c.group == Group::Growth {
             None
         } else {
@@ -1052,16 +1068,15 @@ pub(super) fn run(root: &Path, docs: &Path, options: &Options) -> Result<(String
         ""
     };
     let big_list = BIG.join(" and ");
-    let (w_small, r_small) = runs(scale.cloud, scale.once);
-    let (_, r_big) = runs(scale.big, scale.once);
     let timing = if scale.once {
         "one run of each command, no warm-up".to_owned()
     } else {
         format!(
-            "the median of {r_small} runs after an untimed warm-up{} below 10⁶ points (a warm-up \
-             of {WARM_ENOUGH:.0} s or more is timed, as the first of them), and of {r_big} runs \
-             with no warm-up (the lower of the two) from there",
-            if w_small { "" } else { " (none)" }
+            "the median of {RUNS} runs after an untimed warm-up; when the first run takes \
+             {WARM_ENOUGH:.0} s or more it is timed, as the first of the {RUNS}, and when it \
+             takes {LONG:.0} s or more it is the only one (\"once\" beside the time: a command \
+             that long gains little from a warm start, and three runs of each would triple the \
+             longest rows)"
         )
     };
     let _ = write!(
@@ -1133,7 +1148,11 @@ pub(super) fn run(root: &Path, docs: &Path, options: &Options) -> Result<(String
         "our method",
     ];
     let rows_of = |group: Group| -> Vec<Vec<String>> {
-        results.iter().filter(|(c, ..)| c.group == group).map(|(c, m, _)| row(root, c, m)).collect()
+        results
+            .iter()
+            .filter(|(c, ..)| c.group == group)
+            .map(|(c, m, _)| row(root, c, m, scale.once))
+            .collect()
     };
     let (cloud_rows, vertex_rows, topo_rows) =
         (rows_of(Group::Cloud), rows_of(Group::Vertices), rows_of(Group::Topology));
@@ -1347,11 +1366,22 @@ mod tests {
     }
 
     #[test]
-    fn runs_are_fewer_for_the_largest_clouds() {
-        assert_eq!(runs(200_000, false), (true, 3));
-        assert_eq!(runs(999_999, false), (true, 3));
-        assert_eq!(runs(2_000_000, false), (false, 2));
-        assert_eq!(runs(2_000_000, true), (false, 1));
+    fn long_commands_are_run_fewer_times() {
+        // A first run under 10 s warms up, then three are timed.
+        assert_eq!(plan(2.5, false), (false, 3));
+        // From 10 s it is the first of the three; from 60 s the only one.
+        assert_eq!(plan(10.0, false), (true, 3));
+        assert_eq!(plan(59.9, false), (true, 3));
+        assert_eq!(plan(60.0, false), (true, 1));
+        assert_eq!(plan(600.0, false), (true, 1));
+        // --small: one run of everything.
+        assert_eq!(plan(0.1, true), (true, 1));
+        let done = |runs| Outcome::Done { seconds: 75.31, peak_kib: 1.0, runs };
+        assert_eq!(timed_cell(&done(1), false).as_deref(), Some("75.3 (once)"));
+        assert_eq!(timed_cell(&done(1), true).as_deref(), Some("75.3"));
+        assert_eq!(timed_cell(&done(3), false).as_deref(), Some("75.3"));
+        let failed = Outcome::Failed { message: String::new(), seconds: 1.0, peak_kib: 1.0 };
+        assert_eq!(timed_cell(&failed, false), None);
         assert_eq!(median_f64(vec![3.0, 1.0, 2.0]), 2.0);
         assert_eq!(median_f64(vec![4.0, 1.0]), 1.0, "the lower of two");
         assert!(median_f64(Vec::new()).is_nan());
