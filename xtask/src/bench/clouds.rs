@@ -1010,12 +1010,26 @@ fn row(root: &Path, c: &Case, m: &Measurement, small: bool) -> Vec<String> {
     cells
 }
 
-/// The 1-minute load average, from `/proc/loadavg`.
-fn load_average() -> String {
+/// The 1-minute load average, from `/proc/loadavg` (NaN where there is none).
+fn load_average() -> f64 {
     std::fs::read_to_string("/proc/loadavg")
         .ok()
-        .and_then(|s| s.split_whitespace().next().map(str::to_owned))
-        .unwrap_or_else(|| "?".to_owned())
+        .and_then(|s| s.split_whitespace().next().and_then(|w| w.parse().ok()))
+        .unwrap_or(f64::NAN)
+}
+
+/// What the load averages at the start and end of a run say of its times, on a machine of
+/// `cores` cores: nothing when both stay under one per core; else that the times, Poisson's
+/// most, are inflated.
+fn load_note(before: f64, after: f64, cores: usize) -> &'static str {
+    if before.max(after) > cores as f64 {
+        " Other work shared the cores for at least part of the run, so every time here is longer \
+         than on a quiet machine, and Poisson's most: pymeshlab's OpenMP threads wait for each \
+         other by spinning, which an oversubscribed machine makes several times slower (the \
+         speed-ups are then flattering to us)."
+    } else {
+        ""
+    }
 }
 
 /// Measures every row and returns the subsection's Markdown (figures written into `docs`) and
@@ -1117,8 +1131,8 @@ pub(super) fn run(root: &Path, docs: &Path, options: &Options) -> Result<(String
          peak memory no more than Poisson's (ours over Poisson's), our mean scan→surface \
          distance no more than Poisson's (ours over Poisson's); ✗ for every target when ours \
          failed, – when Poisson failed.\n\n\
-         Machine: {}. Load average (1 min) at the start of this subsection's run {load_before}, \
-         at its end {load_after}; the run took {:.0} min.\n",
+         Machine: {}. Load average (1 min) at the start of this subsection's run \
+         {load_before:.2}, at its end {load_after:.2}; the run took {:.0} min.{}\n",
         count_name(scale.cloud),
         poisson::MODELS
             .iter()
@@ -1134,6 +1148,11 @@ pub(super) fn run(root: &Path, docs: &Path, options: &Options) -> Result<(String
         scale.timeout,
         machine(),
         started.elapsed().as_secs_f64() / 60.0,
+        load_note(
+            load_before,
+            load_after,
+            std::thread::available_parallelism().map_or(1, std::num::NonZero::get)
+        ),
     );
     let header = [
         "input",
@@ -1465,6 +1484,14 @@ mod tests {
             "topology {\"genus\":1}"
         );
         assert_eq!(topology_summary(&serde_json::json!({"parts": null, "topology": null})), "–");
+    }
+
+    #[test]
+    fn a_loaded_machine_is_said_to_be_one() {
+        assert_eq!(load_note(0.4, 1.9, 2), "");
+        assert!(load_note(2.1, 0.3, 2).contains("OpenMP"));
+        assert!(load_note(0.3, 5.0, 2).contains("flattering"));
+        assert_eq!(load_note(f64::NAN, f64::NAN, 2), "", "no /proc/loadavg");
     }
 
     #[test]

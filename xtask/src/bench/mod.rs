@@ -224,7 +224,7 @@ fn with_subsection(doc: &str, parent: &str, sub: &str, body: &str) -> String {
     }
     let parent_end = format!("<!-- /bench:{parent} -->");
     match doc.find(&parent_end) {
-        Some(at) => format!("{}\n{block}\n{}", doc[..at].trim_end(), &doc[at..]),
+        Some(at) => format!("{}\n\n{block}\n{}", doc[..at].trim_end(), &doc[at..]),
         None => with_section(
             doc,
             parent,
