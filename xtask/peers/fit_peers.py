@@ -13,8 +13,9 @@ usage: fit_peers.py resample ROWS COLS RUNS
          N of the scan's points (POINTS.xyz, x y z per line), drawn at random with SEED, to
          their closest points on OUT; N points sampled uniformly on OUT to the scan SCAN (its
          triangles if it has faces, else its nearest point); the mesh checks (watertight,
-         consistent winding, volume). Prints JSON; distances relative to the diagonal of the
-         points' bounding box.
+         consistent winding, volume; after welding coincident vertices, the connected parts,
+         "bodies", and the Euler characteristic V - E + F, "euler_number"). Prints JSON;
+         distances relative to the diagonal of the points' bounding box.
 Exit status 3: the peer (scipy, pymeshlab or trimesh) is not installed.
 """
 import json, sys, time
@@ -103,6 +104,8 @@ def distances(points_path, scan_path, out_path, n, seed):
         "winding_consistent": bool(welded.is_winding_consistent),
         "volume": float(welded.volume) if welded.is_watertight else None,
         "faces": int(len(out.faces)),
+        "bodies": int(welded.body_count),
+        "euler_number": int(welded.euler_number),
     }))
 
 

@@ -8,7 +8,9 @@
 //!   renders, most of the work, as they are: for drafting, as the figure test checks);
 //! - `bench [topic]`: time our code and the peer programs side by side and write
 //!   `docs/performance.md`: every topic (`bench` or `bench all`) or one topic's section
-//!   (`curves`, `subdivision`, `fit`, `render`);
+//!   (`curves`, `subdivision`, `fit`, `render`), or one subsection (`fit-clouds`: point clouds,
+//!   bare vertices and scans of any topology against Poisson, with `--small` for small inputs
+//!   written under `target/xtask-bench/small/`, and `--only a,b` for some rows);
 //! - `crosscheck`: read back every model the figures emit with other programs (tobj, trimesh,
 //!   the Khronos validator, Blender) and run every peer comparison, into `docs/crosscheck.md`;
 //! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
@@ -34,7 +36,15 @@ fn main() -> Result<()> {
             };
             figures::run(&root, args.iter().any(|a| a == "--check"), renders)
         }
-        Some("bench") => bench::run(&root, args.get(1).map(String::as_str)),
+        Some("bench") => {
+            // `bench [topic] [--small] [--only a,b]`.
+            let rest = &args[1..];
+            let (topic, rest) = match rest.split_first() {
+                Some((t, more)) if !t.starts_with("--") => (Some(t.as_str()), more),
+                _ => (None, rest),
+            };
+            bench::run(&root, topic, &bench::Options::parse(rest)?)
+        }
         Some("crosscheck") => crosscheck::run(&root),
         Some("layers") => {
             layers::check(&root)?;
@@ -42,7 +52,7 @@ fn main() -> Result<()> {
             Ok(())
         }
         _ => bail!(
-            "usage: cargo xtask <figures [--check] [--no-renders] | bench [all|curves|subdivision|fit|render] | crosscheck | layers>"
+            "usage: cargo xtask <figures [--check] [--no-renders] | bench [all|curves|subdivision|fit|render|fit-clouds [--small] [--only a,b]] | crosscheck | layers>"
         ),
     }
 }

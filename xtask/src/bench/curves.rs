@@ -201,5 +201,5 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         ),
         plot
     );
-    Ok(Section { body, headlines })
+    Ok(Section { body, headlines, sub_headlines: Vec::new() })
 }

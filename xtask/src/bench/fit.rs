@@ -9,6 +9,10 @@
 //!
 //! How the costs grow: 4× upsampling (ours and scipy) and the fit of the ellipsoid against the
 //! number of texels, 64² … 512², on log axes (`docs/perf-fit.svg`).
+//!
+//! Then [`super::poisson`] (whole commands against screened Poisson on the shared models) and
+//! [`super::clouds`] (point clouds at scanner scale and scans of any topology, time and peak
+//! memory, in a subsection of its own that `cargo xtask bench fit-clouds` rewrites alone).
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
@@ -224,7 +228,7 @@ fn growth(root: &Path, scan: &Scan, bar: &ProgressBar) -> Result<Vec<Growth>> {
 }
 
 /// Measures everything and returns the report's section.
-pub(super) fn run(root: &Path) -> Result<Section> {
+pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
     let dir = root.join("target/xtask-bench/fit");
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let scans = scans(root);
@@ -431,5 +435,12 @@ pub(super) fn run(root: &Path) -> Result<Section> {
          median of 3 runs), for images of {} texels:\n\n{plot}",
         GROWTH_SIDES.map(|n| format!("{n}²")).join(", ")
     );
-    Ok(Section { body: s, headlines })
+    // Point clouds and scans of any topology, a subsection of its own (`bench fit-clouds`).
+    let (clouds, cloud_headlines) = super::clouds::run(root, &root.join("docs"), bench)?;
+    let _ = write!(
+        s,
+        "\n<!-- bench:fit-clouds -->\n{}\n<!-- /bench:fit-clouds -->\n",
+        clouds.trim_end()
+    );
+    Ok(Section { body: s, headlines, sub_headlines: vec![("fit-clouds", cloud_headlines)] })
 }

@@ -12,18 +12,27 @@
 //! |---|---|
 //! | [`curves`] | uniform sampling of a harmonic curve: the thesis's direct sum, our FFT path and `scipy.signal.resample`, n = 16 … 16 384 |
 //! | [`subdivision`] | one step of each scheme of §4.5 on ≥ 100 000 faces, against `OpenMesh` and CGAL, and Loop and Catmull-Clark against mesh size |
-//! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab), and both against image size |
+//! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab), and both against image size; its subsection [`clouds`] (also run alone as `fit-clouds`): point clouds of 2·10⁵ and 2·10⁶ points, bare vertices and scans of any topology against Poisson, time and peak memory as whole processes |
 //! | [`render`] | the torus by interval Newton, interval bisection, Bézier patches and a mesh (§5.6), and time against image size |
 //!
 //! `cargo xtask bench` (or `bench all`) runs every topic in turn and writes the whole report
 //! afresh, with a summary table of the headline ratios at the top. Every topic also plots how
 //! its costs grow with the size of the problem, on log axes, with the fitted exponent of each
-//! curve ([`growth_plot`]).
+//! curve ([`growth_plot`], and [`log_log_plot`] for peak memory as well as time).
+//!
+//! A sub-topic owns a subsection inside its topic's section, between markers of its own
+//! (`<!-- bench:fit-clouds -->` inside `<!-- bench:fit -->`): `cargo xtask bench fit` writes it
+//! with the rest, `cargo xtask bench fit-clouds` rewrites only it. Options after the topic:
+//! `--small` (small inputs, for trying the bench out: written under
+//! `target/xtask-bench/small/`, never into `docs/`) and `--only NAME,NAME` (only the rows whose
+//! name contains one of the words).
 
+mod clouds;
 mod curves;
 mod fit;
 mod poisson;
 mod render;
+mod sampling;
 mod subdivision;
 
 use std::fmt::Write as _;
@@ -42,12 +51,58 @@ const REPORT: &str = "docs/performance.md";
 /// The topics, in the order of the report.
 const TOPICS: &[&str] = &["curves", "subdivision", "fit", "render"];
 
+/// The sub-topics, each with the topic whose section holds its subsection.
+const SUBTOPICS: &[(&str, &str)] = &[("fit-clouds", "fit")];
+
 /// What one topic measured: its section of the report and its headline rows for the summary.
 pub(crate) struct Section {
     /// The section's Markdown, from its `##` heading on.
     pub(crate) body: String,
     /// The summary rows: what was measured, our time, the peer and its time, peer / ours.
     pub(crate) headlines: Vec<Headline>,
+    /// The summary rows of its sub-topics' subsections (which the body holds, within their
+    /// markers), by sub-topic.
+    pub(crate) sub_headlines: Vec<(&'static str, Vec<Headline>)>,
+}
+
+/// How a run was asked for, from the options after the topic.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Options {
+    /// Small inputs, written under `target/xtask-bench/small/` instead of `docs/`.
+    pub(crate) small: bool,
+    /// Only the rows whose name contains one of these (all rows when empty).
+    pub(crate) only: Vec<String>,
+}
+
+impl Options {
+    /// The options from the arguments after the topic: `--small`, `--only a,b`.
+    ///
+    /// # Errors
+    ///
+    /// For an unknown option or `--only` without its list.
+    pub(crate) fn parse(args: &[String]) -> Result<Self> {
+        let mut options = Self::default();
+        let mut args = args.iter();
+        while let Some(a) = args.next() {
+            match a.as_str() {
+                "--small" => options.small = true,
+                "--only" => {
+                    let list = args.next().context("--only takes a list of names, a,b,…")?;
+                    options.only.extend(
+                        list.split(',').filter(|w| !w.is_empty()).map(str::to_ascii_lowercase),
+                    );
+                }
+                other => bail!("unknown bench option {other:?}; options: --small, --only a,b"),
+            }
+        }
+        Ok(options)
+    }
+
+    /// Whether the row `name` is to be measured.
+    pub(crate) fn wants(&self, name: &str) -> bool {
+        let name = name.to_ascii_lowercase();
+        self.only.is_empty() || self.only.iter().any(|w| name.contains(w.as_str()))
+    }
 }
 
 /// One row of the summary: a measurement of ours against a peer's, in the same run.
@@ -83,12 +138,25 @@ impl Headline {
 ///
 /// For an unknown topic, a failed measurement of our own code, or an unwritable report. A peer
 /// that is missing or fails is reported in the section, not as an error.
-pub(crate) fn run(root: &Path, topic: Option<&str>) -> Result<()> {
+pub(crate) fn run(root: &Path, topic: Option<&str>, options: &Options) -> Result<()> {
+    if let Some(&(sub, parent)) = SUBTOPICS.iter().find(|(s, _)| Some(*s) == topic) {
+        return run_subtopic(root, sub, parent, options);
+    }
     let topics: Vec<&str> = match topic {
         None | Some("all") => TOPICS.to_vec(),
         Some(t) if TOPICS.contains(&t) => vec![t],
-        Some(t) => bail!("unknown bench topic {t:?}; topics: all, {}", TOPICS.join(", ")),
+        Some(t) => bail!(
+            "unknown bench topic {t:?}; topics: all, {}, {}",
+            TOPICS.join(", "),
+            SUBTOPICS.iter().map(|(s, _)| *s).collect::<Vec<_>>().join(", ")
+        ),
     };
+    if options.small || !options.only.is_empty() {
+        bail!(
+            "--small and --only apply to the sub-topics ({}), which write elsewhere",
+            SUBTOPICS.iter().map(|(s, _)| *s).collect::<Vec<_>>().join(", ")
+        );
+    }
     let path = root.join(REPORT);
     let mut doc = if topics.len() == TOPICS.len() {
         String::new()
@@ -102,18 +170,70 @@ pub(crate) fn run(root: &Path, topic: Option<&str>) -> Result<()> {
         let section = match *topic {
             "curves" => curves::run(root)?,
             "subdivision" => subdivision::run(root)?,
-            "fit" => fit::run(root)?,
+            "fit" => fit::run(root, options)?,
             "render" => render::run(root)?,
             _ => unreachable!("checked against TOPICS"),
         };
         doc = with_section(&doc, topic, &section.body);
         let rows: Vec<Vec<String>> = section.headlines.iter().map(|h| h.row(topic)).collect();
         doc = with_summary(&doc, topic, &rows);
+        for (sub, headlines) in &section.sub_headlines {
+            let rows: Vec<Vec<String>> = headlines.iter().map(|h| h.row(sub)).collect();
+            doc = with_summary(&doc, sub, &rows);
+        }
         // Written after every topic, so that a failure later keeps what was measured.
         std::fs::write(&path, &doc).with_context(|| format!("writing {}", path.display()))?;
         println!("bench {topic}: section written to {REPORT}");
     }
     Ok(())
+}
+
+/// Runs the sub-topic `sub` alone and rewrites its subsection inside the section of `parent`
+/// (of the report, or with `--small` of a report of its own under `target/xtask-bench/small/`).
+fn run_subtopic(root: &Path, sub: &str, parent: &str, options: &Options) -> Result<()> {
+    let (docs, path) = if options.small {
+        let dir = root.join("target/xtask-bench/small");
+        (dir.clone(), dir.join("performance.md"))
+    } else {
+        (root.join("docs"), root.join(REPORT))
+    };
+    std::fs::create_dir_all(&docs).with_context(|| format!("creating {}", docs.display()))?;
+    let doc = std::fs::read_to_string(&path).unwrap_or_default();
+    let (body, headlines) = match sub {
+        "fit-clouds" => clouds::run(root, &docs, options)?,
+        _ => unreachable!("checked against SUBTOPICS"),
+    };
+    let doc = with_subsection(&doc, parent, sub, &body);
+    let rows: Vec<Vec<String>> = headlines.iter().map(|h| h.row(sub)).collect();
+    let doc = with_summary(&doc, sub, &rows);
+    std::fs::write(&path, &doc).with_context(|| format!("writing {}", path.display()))?;
+    println!("bench {sub}: subsection written to {}", path.display());
+    Ok(())
+}
+
+/// `doc` with the subsection `sub` (inside the section of `parent`) replaced by `body`: put at
+/// the end of that section when absent, and the section made (holding only the subsection)
+/// when that is absent too.
+fn with_subsection(doc: &str, parent: &str, sub: &str, body: &str) -> String {
+    let (start, end) = (format!("<!-- bench:{sub} -->"), format!("<!-- /bench:{sub} -->"));
+    let block = format!("{start}\n{}\n{end}", body.trim_end());
+    if let (Some(a), Some(b)) = (doc.find(&start), doc.find(&end))
+        && a < b
+    {
+        return format!("{}{block}{}", &doc[..a], &doc[b + end.len()..]);
+    }
+    let parent_end = format!("<!-- /bench:{parent} -->");
+    match doc.find(&parent_end) {
+        Some(at) => format!("{}\n\n{block}\n{}", doc[..at].trim_end(), &doc[at..]),
+        None => with_section(
+            doc,
+            parent,
+            &format!(
+                "## {parent}\n\nOnly the subsection below has been measured so far (`cargo \
+                 xtask bench {parent}` for the whole section).\n\n{block}"
+            ),
+        ),
+    }
 }
 
 /// The report's heading, written when the file is new.
@@ -160,13 +280,18 @@ fn with_summary(doc: &str, topic: &str, rows: &[Vec<String>]) -> String {
         .filter(|r: &Vec<String>| r.first().is_some_and(|t| t != topic))
         .collect();
     kept.extend(rows.iter().cloned());
-    let order = |t: &str| TOPICS.iter().position(|x| *x == t).unwrap_or(TOPICS.len());
+    // A sub-topic's rows go with its topic's, after them.
+    let order = |t: &str| {
+        let (t, sub) =
+            SUBTOPICS.iter().position(|(s, _)| *s == t).map_or((t, 0), |k| (SUBTOPICS[k].1, k + 1));
+        (TOPICS.iter().position(|x| *x == t).unwrap_or(TOPICS.len()), sub)
+    };
     kept.sort_by_key(|r| order(r.first().map_or("", String::as_str)));
     let body = format!(
         "## Summary\n\nThe headline of each topic: our time against the peer's in the same run \
          (details, inputs and the machine in each section).\n\n{}\n{GROWTH_HEADING}\n\nThe \
-         fitted exponent of every curve of the sections' growth plots: time ∝ size^p, least \
-         squares on the log–log points, so 1 is linear.\n\n{}",
+         fitted exponent of every curve of the sections' growth plots: time (or peak memory) ∝ \
+         size^p, least squares on the log–log points, so 1 is linear.\n\n{}",
         table(&SUMMARY_HEADER, &kept),
         table(&GROWTH_HEADER, &growth_rows(&format!("{before}{after}")))
     );
@@ -176,12 +301,13 @@ fn with_summary(doc: &str, topic: &str, rows: &[Vec<String>]) -> String {
 /// The heading of the summary's table of growth exponents.
 const GROWTH_HEADING: &str = "### Growth";
 /// Its columns.
-const GROWTH_HEADER: [&str; 4] = ["topic", "size", "method", "exponent p"];
+const GROWTH_HEADER: [&str; 5] = ["topic", "of", "size", "method", "exponent p"];
 
 /// The growth exponents of every section of `doc`, in the order of [`TOPICS`]: one row per
-/// curve, read from the line [`growth_plot`] writes under each plot.
+/// curve, read from the line [`log_log_plot`] writes under each plot (a subsection's with its
+/// section's).
 fn growth_rows(doc: &str) -> Vec<Vec<String>> {
-    const LEAD: &str = "Fitted exponents (time ∝ ";
+    const LEAD: &str = "Fitted exponents (";
     let mut rows = Vec::new();
     for topic in TOPICS {
         let (start, end) = (format!("<!-- bench:{topic} -->"), format!("<!-- /bench:{topic} -->"));
@@ -191,6 +317,9 @@ fn growth_rows(doc: &str) -> Vec<Vec<String>> {
             continue;
         };
         for line in section.lines().filter_map(|l| l.strip_prefix(LEAD)) {
+            let Some((of, line)) = line.split_once(" ∝ ") else {
+                continue;
+            };
             let Some((size, fits)) = line.split_once("^p").zip(line.split_once("): ")) else {
                 continue;
             };
@@ -198,6 +327,7 @@ fn growth_rows(doc: &str) -> Vec<Vec<String>> {
                 if let Some((method, p)) = fit.rsplit_once(' ') {
                     rows.push(vec![
                         (*topic).to_owned(),
+                        of.to_owned(),
                         size.0.to_owned(),
                         method.to_owned(),
                         p.to_owned(),
@@ -232,7 +362,7 @@ fn with_section(doc: &str, topic: &str, body: &str) -> String {
     }
 }
 
-/// One measured curve of a growth plot: a method's time at each problem size.
+/// One measured curve of a growth plot of time: a method's time at each problem size.
 pub(crate) struct Growth {
     /// The method, as the legend names it.
     pub(crate) name: String,
@@ -240,13 +370,13 @@ pub(crate) struct Growth {
     pub(crate) points: Vec<(f64, Duration)>,
 }
 
-/// The least-squares slope of log t against log size: the exponent p of time ∝ sizeᵖ.
-/// `None` for fewer than two points.
-pub(crate) fn slope(points: &[(f64, Duration)]) -> Option<f64> {
+/// The least-squares slope of log y against log x over the points with both positive: the
+/// exponent p of y ∝ xᵖ. `None` for fewer than two such points or a single x.
+pub(crate) fn power_law_exponent(points: &[(f64, f64)]) -> Option<f64> {
     let logs: Vec<(f64, f64)> = points
         .iter()
-        .filter(|(n, t)| *n > 0.0 && !t.is_zero())
-        .map(|(n, t)| (n.log10(), t.as_secs_f64().log10()))
+        .filter(|(x, y)| *x > 0.0 && *y > 0.0 && x.is_finite() && y.is_finite())
+        .map(|(x, y)| (x.log10(), y.log10()))
         .collect();
     if logs.len() < 2 {
         return None;
@@ -257,6 +387,45 @@ pub(crate) fn slope(points: &[(f64, Duration)]) -> Option<f64> {
         .iter()
         .fold((0.0, 0.0), |(a, b), (x, y)| (a + (x - mx) * (y - my), b + (x - mx) * (x - mx)));
     (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// What a growth plot shows against the size of the problem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Quantity {
+    /// Time, in seconds.
+    Time,
+    /// Peak memory (resident set), in MiB.
+    PeakMemory,
+}
+
+impl Quantity {
+    /// The name in the line of fitted exponents, "time ∝ …".
+    const fn name(self) -> &'static str {
+        match self {
+            Self::Time => "time",
+            Self::PeakMemory => "peak memory",
+        }
+    }
+
+    /// The unit of the vertical axis.
+    const fn unit(self) -> &'static str {
+        match self {
+            Self::Time => "seconds",
+            Self::PeakMemory => "MiB",
+        }
+    }
+}
+
+/// One curve of a [`log_log_plot`]: (problem size, value) pairs, sizes increasing, in the
+/// unit of its [`Quantity`].
+pub(crate) struct Series {
+    /// The method, as the legend names it.
+    pub(crate) name: String,
+    /// (problem size, value) pairs.
+    pub(crate) points: Vec<(f64, f64)>,
+    /// Whether its exponent is fitted (and listed in the summary); not for a series of runs
+    /// that failed, say, drawn for what they cost.
+    pub(crate) fitted: bool,
 }
 
 /// Writes a log–log plot of `series` (time against `x_desc`) to `file` under `docs/`, and
@@ -272,32 +441,68 @@ pub(crate) fn growth_plot(
     x_desc: &str,
     series: &[Growth],
 ) -> Result<String> {
-    let mut plot = Plot::function(title, &format!("log₁₀ {x_desc}"), "log₁₀ seconds")
-        .legend(Legend::UpperLeft);
+    let series: Vec<Series> = series
+        .iter()
+        .map(|g| Series {
+            name: g.name.clone(),
+            points: g.points.iter().map(|(n, t)| (*n, t.as_secs_f64())).collect(),
+            fitted: true,
+        })
+        .collect();
+    log_log_plot(&root.join("docs"), file, title, x_desc, Quantity::Time, &series)
+}
+
+/// Writes a log–log plot of `series` (`quantity` against `x_desc`) to `file` in `dir`, and
+/// returns the Markdown that shows it (from a page in the same folder), with the fitted
+/// exponent of each curve that asks for one, on the line [`growth_rows`] reads back.
+///
+/// # Errors
+///
+/// When the plot cannot be drawn or written.
+pub(crate) fn log_log_plot(
+    dir: &Path,
+    file: &str,
+    title: &str,
+    x_desc: &str,
+    quantity: Quantity,
+    series: &[Series],
+) -> Result<String> {
+    let mut plot =
+        Plot::function(title, &format!("log₁₀ {x_desc}"), &format!("log₁₀ {}", quantity.unit()))
+            .legend(Legend::UpperLeft);
     let mut slopes = Vec::new();
     for (k, g) in series.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
         let points: Vec<DVec2> = g
             .points
             .iter()
-            .filter(|(n, t)| *n > 0.0 && !t.is_zero())
-            .map(|(n, t)| DVec2::new(n.log10(), t.as_secs_f64().log10()))
+            .filter(|(n, y)| *n > 0.0 && *y > 0.0)
+            .map(|(n, y)| DVec2::new(n.log10(), y.log10()))
             .collect();
         if points.is_empty() {
             continue;
         }
-        plot = plot.points(&points, Marker::small(color), None);
-        plot = plot.curve(points, Pen::solid(color), Some(&g.name));
-        if let Some(p) = slope(&g.points) {
-            slopes.push(format!("{} {p:.2}", g.name));
+        if g.fitted {
+            plot = plot.points(&points, Marker::small(color), None);
+            plot = plot.curve(points, Pen::solid(color), Some(&g.name));
+            if let Some(p) = power_law_exponent(&g.points) {
+                slopes.push(format!("{} {p:.2}", g.name));
+            }
+        } else {
+            plot = plot.points(&points, Marker::ring(color), Some(&g.name));
         }
     }
-    let path = root.join("docs").join(file);
+    let path = dir.join(file);
     std::fs::write(&path, plot.render()?).with_context(|| format!("writing {}", path.display()))?;
-    Ok(format!(
-        "![{title}]({file})\n\nFitted exponents (time ∝ {x_desc}^p, least squares on the log–log \
-         points; 1 is linear): {}.\n",
+    let slopes = if slopes.is_empty() {
+        "none (no curve has two points)".to_owned()
+    } else {
         slopes.join("; ")
+    };
+    Ok(format!(
+        "![{title}]({file})\n\nFitted exponents ({} ∝ {x_desc}^p, least squares on the log–log \
+         points; 1 is linear): {slopes}.\n",
+        quantity.name()
     ))
 }
 
@@ -313,7 +518,9 @@ pub(crate) fn progress_bar(len: u64) -> Result<indicatif::ProgressBar> {
         return Ok(indicatif::ProgressBar::hidden());
     }
     let bar = indicatif::ProgressBar::new(len);
-    bar.set_style(indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
+    bar.set_style(indicatif::ProgressStyle::with_template(
+        "[{elapsed_precise}] {bar:40} {pos}/{len} {msg}",
+    )?);
     Ok(bar)
 }
 
@@ -447,10 +654,10 @@ mod tests {
         let doc = with_summary(&doc, "curves", &[vec!["curves".to_owned(), "a".to_owned()]]);
         let summary = &doc[..doc.find(SUMMARY_END).expect("a summary")];
         let rows = [
-            "| curves | n | FFT (ours) | 1.17 |",
-            "| curves | n | scipy, 2 axes | 0.77 |",
-            "| render | pixels | bezier | 0.93 |",
-            "| render | pixels | mesh | 0.72 |",
+            "| curves | time | n | FFT (ours) | 1.17 |",
+            "| curves | time | n | scipy, 2 axes | 0.77 |",
+            "| render | time | pixels | bezier | 0.93 |",
+            "| render | time | pixels | mesh | 0.72 |",
         ];
         let at: Vec<usize> =
             rows.iter().map(|r| summary.find(r).unwrap_or_else(|| panic!("{r}: {doc}"))).collect();
@@ -468,13 +675,95 @@ mod tests {
     #[test]
     fn the_slope_is_the_exponent_of_a_power_law() {
         // t = 3e-6 · n^1.5 exactly: the fitted exponent is 1.5.
-        let points: Vec<(f64, Duration)> = [16.0, 64.0, 256.0, 1024.0]
-            .iter()
-            .map(|&n: &f64| (n, Duration::from_secs_f64(3e-6 * n.powf(1.5))))
-            .collect();
-        let p = slope(&points).expect("four points");
-        assert!((p - 1.5).abs() < 1e-6, "slope {p}");
-        assert_eq!(slope(&points[..1]), None, "one point has no slope");
+        let points: Vec<(f64, f64)> =
+            [16.0, 64.0, 256.0, 1024.0].iter().map(|&n: &f64| (n, 3e-6 * n.powf(1.5))).collect();
+        let p = power_law_exponent(&points).expect("four points");
+        assert!((p - 1.5).abs() < 1e-9, "slope {p}");
+        assert_eq!(power_law_exponent(&points[..1]), None, "one point has no slope");
+        // Points that cannot be on log axes are left out: what remains is y = 5x, slope 1.
+        let with_zero = [(0.0, 1.0), (2.0, 0.0), (10.0, 50.0), (1000.0, 5000.0), (5.0, f64::NAN)];
+        let p = power_law_exponent(&with_zero).expect("two good points");
+        assert!((p - 1.0).abs() < 1e-12, "slope {p}");
+        assert_eq!(power_law_exponent(&[(3.0, 1.0), (3.0, 2.0)]), None, "one abscissa");
+        // Least squares through (1, 1), (10, 10), (100, 1000) in log₁₀: x = 0, 1, 2 and
+        // y = 0, 1, 3, slope Σ(x − 1)(y − 4/3) / Σ(x − 1)² = (4/3 + 5/3) / 2 = 3/2.
+        let p = power_law_exponent(&[(1.0, 1.0), (10.0, 10.0), (100.0, 1000.0)]).expect("three");
+        assert!((p - 1.5).abs() < 1e-12, "slope {p}");
+    }
+
+    #[test]
+    fn memory_exponents_are_listed_beside_time_exponents() {
+        let body = "### Clouds\n\nFitted exponents (time ∝ points^p, least squares on the log–log \
+                    points; 1 is linear): hi fit 1.02; Poisson 0.91.\n\nFitted exponents (peak \
+                    memory ∝ points^p, least squares on the log–log points; 1 is linear): hi fit \
+                    0.88; Poisson 0.64.\n";
+        let doc = with_section("", "fit", "## Fitting");
+        let doc = with_subsection(&doc, "fit", "fit-clouds", body);
+        let rows = growth_rows(&doc);
+        let want = |r: [&str; 5]| r.map(str::to_owned).to_vec();
+        assert_eq!(
+            rows,
+            vec![
+                want(["fit", "time", "points", "hi fit", "1.02"]),
+                want(["fit", "time", "points", "Poisson", "0.91"]),
+                want(["fit", "peak memory", "points", "hi fit", "0.88"]),
+                want(["fit", "peak memory", "points", "Poisson", "0.64"]),
+            ]
+        );
+    }
+
+    #[test]
+    fn a_subsection_lives_inside_its_section_and_is_replaced_alone() {
+        // Absent: made at the end of the section.
+        let doc = with_section("", "fit", "## Fitting\n\nrows");
+        let doc = with_section(&doc, "render", "## Rendering");
+        let doc = with_subsection(&doc, "fit", "fit-clouds", "### Clouds\n\nfirst");
+        let inner = doc.find("<!-- bench:fit-clouds -->").expect("the subsection");
+        assert!(doc.find("rows").expect("fit's body") < inner, "{doc}");
+        assert!(inner < doc.find("<!-- /bench:fit -->").expect("fit's end"), "{doc}");
+        // Present: replaced, the section around it kept.
+        let again = with_subsection(&doc, "fit", "fit-clouds", "### Clouds\n\nsecond");
+        assert!(again.contains(
+            "<!-- bench:fit-clouds -->\n### Clouds\n\nsecond\n<!-- /bench:fit-clouds -->"
+        ));
+        assert!(
+            !again.contains("first") && again.contains("rows") && again.contains("## Rendering")
+        );
+        // The whole section, rewritten with the subsection in it, is not confused with it.
+        let whole = with_section(
+            &again,
+            "fit",
+            "## Fitting\n\nnew rows\n<!-- bench:fit-clouds -->\nthird\n<!-- /bench:fit-clouds -->",
+        );
+        assert_eq!(whole.matches("<!-- bench:fit-clouds -->").count(), 1, "{whole}");
+        assert!(
+            whole.contains("third") && !whole.contains("second") && whole.contains("## Rendering")
+        );
+        // No section to hold it: one is made.
+        let alone = with_subsection("", "fit", "fit-clouds", "### Clouds");
+        let (a, b) = (alone.find("<!-- bench:fit -->"), alone.find("<!-- bench:fit-clouds -->"));
+        assert!(a.is_some() && a < b && alone.starts_with("# Performance"), "{alone}");
+        // Its summary rows follow the topic's, and replace only its own.
+        let row = |t: &str, what: &str| vec![t.to_owned(), what.to_owned()];
+        let doc = with_summary(&whole, "fit-clouds", &[row("fit-clouds", "bunny cloud")]);
+        let doc = with_summary(&doc, "fit", &[row("fit", "upsampling")]);
+        let doc = with_summary(&doc, "curves", &[row("curves", "fft")]);
+        let at = |r: &str| doc.find(r).unwrap_or_else(|| panic!("{r}: {doc}"));
+        assert!(at("| curves | fft |") < at("| fit | upsampling |"));
+        assert!(at("| fit | upsampling |") < at("| fit-clouds | bunny cloud |"));
+    }
+
+    #[test]
+    fn options_are_read_after_the_topic() {
+        let args = |a: &[&str]| a.iter().map(|s| (*s).to_owned()).collect::<Vec<_>>();
+        assert_eq!(Options::parse(&[]).unwrap(), Options::default());
+        let o = Options::parse(&args(&["--small", "--only", "Bunny,knot"])).unwrap();
+        assert!(o.small);
+        assert_eq!(o.only, ["bunny", "knot"]);
+        assert!(o.wants("bunny, 2·10⁵ points") && o.wants("torus knot") && !o.wants("cow"));
+        assert!(Options::default().wants("anything"));
+        assert!(Options::parse(&args(&["--only"])).is_err());
+        assert!(Options::parse(&args(&["--fast"])).is_err());
     }
 
     #[test]

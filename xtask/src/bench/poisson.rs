@@ -39,7 +39,7 @@ use super::{Headline, median, table};
 
 /// The models, in the order of the issue that asked for the comparison: (name, file, the eye
 /// direction and up vector that show the model from the front).
-const MODELS: &[(&str, &str, [f64; 3], [f64; 3])] = &[
+pub(super) const MODELS: &[(&str, &str, [f64; 3], [f64; 3])] = &[
     ("bunny", "bunny.obj", [0.3, 0.25, 1.0], [0.0, 1.0, 0.0]),
     ("spot", "spot.obj", [-1.0, 0.35, 0.6], [0.0, 1.0, 0.0]),
     ("cow", "cow.obj", [0.5, 0.4, 1.0], [0.0, 1.0, 0.0]),
@@ -58,13 +58,13 @@ const RUNS: usize = 5;
 const SAMPLES: &str = "5000";
 
 /// Poisson's octree depth.
-const DEPTH: &str = "8";
+pub(super) const DEPTH: &str = "8";
 
 /// The size of one panel of the figure.
 const PANEL: (u32, u32) = (300, 240);
 
 /// Where a model is: committed in `fixtures/models`, else in the shared data folder.
-fn locate(root: &Path, file: &str) -> Option<PathBuf> {
+pub(super) fn locate(root: &Path, file: &str) -> Option<PathBuf> {
     [root.join("fixtures/models").join(file), root.join("../shared/data/models").join(file)]
         .into_iter()
         .find(|p| p.exists())
@@ -72,11 +72,19 @@ fn locate(root: &Path, file: &str) -> Option<PathBuf> {
 
 /// trimesh's measurement of one output.
 #[derive(Clone, Copy, Debug, Default)]
-struct Measured {
-    mean: f64,
-    max: f64,
-    back_max: f64,
-    watertight: bool,
+pub(super) struct Measured {
+    /// Scan → surface, mean, relative to the diagonal.
+    pub(super) mean: f64,
+    /// Scan → surface, largest.
+    pub(super) max: f64,
+    /// Surface → scan, largest.
+    pub(super) back_max: f64,
+    /// Every edge shared by two faces, as stored.
+    pub(super) watertight: bool,
+    /// Connected parts, after welding coincident vertices.
+    pub(super) bodies: Option<u64>,
+    /// Euler characteristic V − E + F, after welding.
+    pub(super) euler: Option<i64>,
 }
 
 fn measured(v: &serde_json::Value) -> Measured {
@@ -86,7 +94,31 @@ fn measured(v: &serde_json::Value) -> Measured {
         max: f("scan_to_surface", "max"),
         back_max: f("surface_to_scan", "max"),
         watertight: v["watertight"].as_bool().unwrap_or(false),
+        bodies: v["bodies"].as_u64(),
+        euler: v["euler_number"].as_i64(),
     }
+}
+
+/// trimesh's measurement of the reconstruction `out` (`fit_peers.py distances`): [`SAMPLES`]
+/// points of `points` (an XYZ file) to `out`, as many samples of `out` to `scan` (a mesh file,
+/// or `-` for the points themselves).
+///
+/// # Errors
+///
+/// When trimesh is not installed or fails on the files.
+pub(super) fn measure(root: &Path, points: &Path, scan: &str, out: &Path) -> Result<Measured> {
+    let script = root.join("xtask/peers/fit_peers.py");
+    let o = Command::new("python3")
+        .arg(&script)
+        .args(["distances", path_str(points)?, scan, path_str(out)?, SAMPLES, "1"])
+        .output()?;
+    if o.status.code() == Some(3) {
+        bail!("trimesh is not installed: `pip install trimesh rtree scipy`");
+    }
+    if !o.status.success() {
+        bail!("trimesh on {}: {}", out.display(), String::from_utf8_lossy(&o.stderr).trim());
+    }
+    Ok(measured(&serde_json::from_slice(&o.stdout)?))
 }
 
 /// One model's row.
@@ -130,15 +162,16 @@ fn timed(program: &Path, args: &[&str]) -> Result<(Duration, Vec<u8>)> {
     Ok((median(times), stdout))
 }
 
-fn path_str(p: &Path) -> Result<&str> {
+pub(super) fn path_str(p: &Path) -> Result<&str> {
     p.to_str().context("a non-UTF-8 path")
 }
 
-/// The comparison: the section's Markdown, its headlines, and whether pymeshlab was there.
-pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, Vec<Headline>)> {
-    let dir = root.join("target/xtask-bench/poisson");
-    std::fs::create_dir_all(&dir)?;
-    bar.set_message("building hi");
+/// Builds `hi` in the release profile and returns its path.
+///
+/// # Errors
+///
+/// When cargo fails.
+pub(super) fn build_hi(root: &Path) -> Result<PathBuf> {
     let status = Command::new("cargo")
         .args(["build", "--quiet", "--release", "-p", "hi-cli"])
         .current_dir(root)
@@ -147,7 +180,15 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
     if !status.success() {
         bail!("cargo build -p hi-cli failed");
     }
-    let hi = root.join("target/release/hi");
+    Ok(root.join("target/release/hi"))
+}
+
+/// The comparison: the section's Markdown, its headlines, and whether pymeshlab was there.
+pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, Vec<Headline>)> {
+    let dir = root.join("target/xtask-bench/poisson");
+    std::fs::create_dir_all(&dir)?;
+    bar.set_message("building hi");
+    let hi = build_hi(root)?;
     let python = PathBuf::from("python3");
     let script = root.join("xtask/peers/fit_peers.py");
     let mut rows = Vec::new();
@@ -197,33 +238,17 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
         };
         let scan_arg =
             if scan.triangles.is_empty() { "-".to_owned() } else { path_str(&path)?.to_owned() };
-        let measure = |out: &Path| -> Result<Measured> {
-            let o = Command::new(&python)
-                .args([
-                    &script_s,
-                    "distances",
-                    path_str(&xyz)?,
-                    &scan_arg,
-                    path_str(out)?,
-                    SAMPLES,
-                    "1",
-                ])
-                .output()?;
-            if o.status.code() == Some(3) {
-                bail!("trimesh is not installed: `pip install trimesh rtree scipy`");
-            }
-            if !o.status.success() {
-                bail!(
-                    "trimesh on {}: {}",
-                    out.display(),
-                    String::from_utf8_lossy(&o.stderr).trim()
-                );
-            }
-            Ok(measured(&serde_json::from_slice(&o.stdout)?))
-        };
-        let (ours_m, poisson_m) = (measure(&ours_glb)?, measure(&poisson_ply)?);
+        let (ours_m, poisson_m) = (
+            measure(root, &xyz, &scan_arg, &ours_glb)?,
+            measure(root, &xyz, &scan_arg, &poisson_ply)?,
+        );
         bar.set_message(format!("versus Poisson: rendering {name}"));
-        panels.push(render_row(&scan, &poisson_ply, &ours_glb, DVec3::from(eye), DVec3::from(up))?);
+        let view = View { eye: DVec3::from(eye), up: DVec3::from(up), panel: PANEL };
+        panels.push(render_panels(
+            &scan_display(&scan, usize::MAX),
+            &[Some(poisson_ply.as_path()), Some(ours_glb.as_path())],
+            view,
+        )?);
         rows.push(Row {
             name: name.to_owned(),
             points: points.len(),
@@ -344,7 +369,7 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
     }
     // The figure beside the other plots of the report.
     if !panels.is_empty() {
-        let figure = compose(&panels)?;
+        let figure = compose(&panels, PANEL, 1)?;
         std::fs::write(root.join("docs/fit-vs-poisson.png"), figure)?;
         s.push_str(
             "\nEach row: the scan (points drawn as small beads when it has no faces), screened \
@@ -392,23 +417,75 @@ fn beads(points: &[DVec3], size: f64) -> Result<TriangleMesh> {
     mesh_of(p, t)
 }
 
-/// The three panels of one model, as RGB images.
-fn render_row(
-    scan: &hi_scan::scan::Scan,
-    poisson: &Path,
-    ours: &Path,
-    eye: DVec3,
-    up: DVec3,
-) -> Result<Vec<image::RgbImage>> {
-    let (lo, hi) = scan
+/// What a panel draws of the input: its triangles, or for a point set the points as beads.
+pub(super) struct Display {
+    /// The points (for a point set, at most the number asked for, spread over the set).
+    pub(super) points: Vec<DVec3>,
+    /// The triangles; none for a point set.
+    pub(super) triangles: Vec<[u32; 3]>,
+    /// The corners of the bounding box of the whole input.
+    pub(super) bounds: (DVec3, DVec3),
+}
+
+/// The display of `scan`: its mesh, or at most `beads` of its points (every k-th).
+pub(super) fn scan_display(scan: &hi_scan::scan::Scan, beads: usize) -> Display {
+    let bounds = scan
         .points
         .iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    if !scan.triangles.is_empty() {
+        return Display { points: scan.points.clone(), triangles: scan.triangles.clone(), bounds };
+    }
+    let step = scan.points.len().div_ceil(beads.max(1)).max(1);
+    Display {
+        points: scan.points.iter().step_by(step).copied().collect(),
+        triangles: Vec::new(),
+        bounds,
+    }
+}
+
+/// Where the camera looks from and the size of a panel.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct View {
+    /// The direction of the eye from the model's centre.
+    pub(super) eye: DVec3,
+    /// The up vector.
+    pub(super) up: DVec3,
+    /// Width and height of the panel.
+    pub(super) panel: (u32, u32),
+}
+
+/// The panel of a reconstruction that is missing (it failed): pale red with a cross.
+pub(super) fn missing_panel(panel: (u32, u32)) -> image::RgbImage {
+    let (w, h) = panel;
+    let mut img = image::RgbImage::from_pixel(w, h, image::Rgb([250, 232, 232]));
+    let (cx, cy, r) = (f64::from(w) / 2.0, f64::from(h) / 2.0, f64::from(w.min(h)) / 6.0);
+    for y in 0..h {
+        for x in 0..w {
+            let (dx, dy) = (f64::from(x) - cx, f64::from(y) - cy);
+            if dx.abs() <= r && dy.abs() <= r && (dx.abs() - dy.abs()).abs() < 2.0 {
+                img.put_pixel(x, y, image::Rgb([200, 60, 60]));
+            }
+        }
+    }
+    img
+}
+
+/// The panels of one input: the input itself, then each output (every triangle primitive of
+/// the file, all parts of a multi-part scene, as [`read_scan`] reads a glTF scene), or a
+/// [`missing_panel`] for `None`, as RGB images.
+pub(super) fn render_panels(
+    input: &Display,
+    outputs: &[Option<&Path>],
+    view: View,
+) -> Result<Vec<image::RgbImage>> {
+    let View { eye, up, panel } = view;
+    let (lo, hi) = input.bounds;
     let diagonal = (hi - lo).length();
-    let scan_mesh = if scan.triangles.is_empty() {
-        beads(&scan.points, 0.0025 * diagonal)?
+    let scan_mesh = if input.triangles.is_empty() {
+        beads(&input.points, 0.0025 * diagonal)?
     } else {
-        mesh_of(scan.points.clone(), scan.triangles.clone())?
+        mesh_of(input.points.clone(), input.triangles.clone())?
     };
     let read = |path: &Path| -> Result<TriangleMesh> {
         let s = read_scan(path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
@@ -421,44 +498,151 @@ fn render_row(
         Light::Directional { direction: eye - side, intensity: [0.3; 3] },
     ];
     let settings = RenderOptions {
-        width: PANEL.0,
-        height: PANEL.1,
+        width: panel.0,
+        height: panel.1,
         samples_per_pixel: 4,
         tile_size: 16,
         first_pass: 0,
     };
-    [scan_mesh, read(poisson)?, read(ours)?]
-        .into_iter()
-        .map(|mesh| {
-            let mut object = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
-            object.material.color = [0.72, 0.74, 0.78];
-            let scene = Scene::try_new(vec![object], lights.clone(), [1.0; 3])?;
-            let out = render(&scene, &camera, &settings, None)?;
-            let png = out.png_bytes()?;
-            Ok(image::load_from_memory(&png)?.to_rgb8())
-        })
-        .collect()
+    let draw = |mesh: TriangleMesh| -> Result<image::RgbImage> {
+        let mut object = SceneObject::new(Geometry::Mesh(MeshObject::new(mesh)));
+        object.material.color = [0.72, 0.74, 0.78];
+        let scene = Scene::try_new(vec![object], lights.clone(), [1.0; 3])?;
+        let out = render(&scene, &camera, &settings, None)?;
+        let png = out.png_bytes()?;
+        Ok(image::load_from_memory(&png)?.to_rgb8())
+    };
+    let mut panels = vec![draw(scan_mesh)?];
+    for out in outputs {
+        panels.push(match out {
+            Some(path) => draw(read(path)?)?,
+            None => missing_panel(panel),
+        });
+    }
+    Ok(panels)
 }
 
-/// The panels laid out one model per row.
-fn compose(rows: &[Vec<image::RgbImage>]) -> Result<Vec<u8>> {
-    let (w, h) = PANEL;
-    let mut out = image::RgbImage::from_pixel(
-        3 * w,
-        h * u32::try_from(rows.len())?,
-        image::Rgb([255, 255, 255]),
-    );
+/// The panels laid out `per_line` inputs to a line of the figure, each input's panels side by
+/// side (as many as the first input has), in reading order, as a PNG.
+pub(super) fn compose(
+    rows: &[Vec<image::RgbImage>],
+    panel: (u32, u32),
+    per_line: usize,
+) -> Result<Vec<u8>> {
+    // Between two inputs on a line: a gap with a grey rule down its middle.
+    const GAP: u32 = 16;
+    let (w, h) = panel;
+    let per_line = per_line.max(1);
+    let each = u32::try_from(rows.first().map_or(1, Vec::len))? * w + GAP;
+    let lines = u32::try_from(rows.len().div_ceil(per_line))?;
+    let width = each * u32::try_from(per_line)? - GAP;
+    let mut out = image::RgbImage::from_pixel(width, h * lines, image::Rgb([255, 255, 255]));
+    for slot in 1..u32::try_from(per_line)? {
+        let x = slot * each - GAP / 2;
+        for y in 0..h * lines {
+            out.put_pixel(x, y, image::Rgb([200, 200, 200]));
+        }
+    }
     for (i, row) in rows.iter().enumerate() {
+        let (line, slot) = (u32::try_from(i / per_line)?, u32::try_from(i % per_line)?);
         for (j, panel) in row.iter().enumerate() {
-            image::imageops::overlay(
-                &mut out,
-                panel,
-                i64::from(u32::try_from(j)? * w),
-                i64::from(u32::try_from(i)? * h),
-            );
+            let x = slot * each + u32::try_from(j)? * w;
+            image::imageops::overlay(&mut out, panel, i64::from(x), i64::from(line * h));
         }
     }
     let mut bytes = Vec::new();
     out.write_to(&mut std::io::Cursor::new(&mut bytes), image::ImageFormat::Png)?;
     Ok(bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A GLB of three triangles in two meshes: mesh 0 with two primitives (the unit triangle in
+    /// z = 0, and the same lifted to z = 1), placed as it is; mesh 1 (the unit triangle) placed
+    /// by a node translated by 10 along x.
+    fn two_part_glb() -> Vec<u8> {
+        let json = r#"{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
+            "nodes":[{"mesh":0},{"mesh":1,"translation":[10,0,0]}],
+            "meshes":[{"primitives":[{"attributes":{"POSITION":0}},{"attributes":{"POSITION":1}}]},
+                      {"primitives":[{"attributes":{"POSITION":0}}]}],
+            "accessors":[
+              {"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+              {"bufferView":1,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,1],"max":[1,1,1]}],
+            "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},
+                           {"buffer":0,"byteOffset":36,"byteLength":36}],
+            "buffers":[{"byteLength":72}]}"#;
+        let mut json = json.as_bytes().to_vec();
+        while !json.len().is_multiple_of(4) {
+            json.push(b' ');
+        }
+        let corners: [[f32; 3]; 6] = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [0.0, 1.0, 1.0],
+        ];
+        let bin: Vec<u8> = corners.iter().flatten().flat_map(|x| x.to_le_bytes()).collect();
+        let word = |x: usize| u32::try_from(x).expect("small").to_le_bytes();
+        let mut glb = b"glTF".to_vec();
+        glb.extend(2u32.to_le_bytes());
+        glb.extend(word(12 + 8 + json.len() + 8 + bin.len()));
+        glb.extend(word(json.len()));
+        glb.extend(b"JSON");
+        glb.extend(&json);
+        glb.extend(word(bin.len()));
+        glb.extend(b"BIN\0");
+        glb.extend(&bin);
+        glb
+    }
+
+    #[test]
+    fn a_multi_part_glb_is_read_and_drawn_whole() {
+        let dir = std::env::temp_dir().join(format!("xtask-glb-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        let path = dir.join("parts.glb");
+        std::fs::write(&path, two_part_glb()).expect("written");
+        // Every primitive of every mesh the scene places, with the node's transform.
+        let scan = read_scan(&path).expect("read");
+        assert_eq!(scan.triangles.len(), 3, "{scan:?}");
+        assert!(scan.points.iter().any(|p| (*p - DVec3::new(11.0, 0.0, 0.0)).length() < 1e-6));
+        assert!(scan.points.iter().any(|p| (*p - DVec3::new(1.0, 0.0, 1.0)).length() < 1e-6));
+        // Drawn: both parts show, one in each half of the panel (the camera looks down z at
+        // the box from x = 0 to 11).
+        let input = Display {
+            points: scan.points.clone(),
+            triangles: scan.triangles.clone(),
+            bounds: (DVec3::ZERO, DVec3::new(11.0, 1.0, 1.0)),
+        };
+        let view = View { eye: DVec3::Z, up: DVec3::Y, panel: (120, 80) };
+        let panels = render_panels(&input, &[Some(path.as_path()), None], view).expect("drawn");
+        assert_eq!(panels.len(), 3, "the input, the output, the missing one");
+        let inked = |img: &image::RgbImage, xs: std::ops::Range<u32>| {
+            img.enumerate_pixels().any(|(x, _, p)| xs.contains(&x) && p.0 != [255, 255, 255])
+        };
+        assert!(inked(&panels[1], 0..60) && inked(&panels[1], 60..120), "both parts drawn");
+        assert_eq!(panels[2].get_pixel(0, 0).0, [250, 232, 232], "a failed side is marked");
+        std::fs::remove_dir_all(&dir).expect("removed");
+    }
+
+    #[test]
+    fn panels_are_laid_out_inputs_to_a_line_with_a_rule_between() {
+        let red = image::RgbImage::from_pixel(4, 3, image::Rgb([255, 0, 0]));
+        let rows = vec![vec![red.clone(), red.clone()]; 3];
+        let png = compose(&rows, (4, 3), 2).expect("composed");
+        let img = image::load_from_memory(&png).expect("a PNG").to_rgb8();
+        // Two inputs of two panels a line, 16 pixels between them; two lines.
+        assert_eq!(img.dimensions(), (2 * 8 + 16, 6));
+        assert_eq!(img.get_pixel(0, 0).0, [255, 0, 0]);
+        assert_eq!(img.get_pixel(8 + 8, 0).0, [200, 200, 200], "the rule");
+        assert_eq!(img.get_pixel(24, 0).0, [255, 0, 0], "the second input");
+        assert_eq!(img.get_pixel(24, 4).0, [255, 255, 255], "the last line has one input");
+        // One input a line: as the comparison's figure has always been.
+        let png = compose(&rows, (4, 3), 1).expect("composed");
+        let img = image::load_from_memory(&png).expect("a PNG").to_rgb8();
+        assert_eq!(img.dimensions(), (8, 9));
+    }
 }

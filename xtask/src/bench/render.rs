@@ -136,5 +136,5 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
         s,
         "\nHow the render time grows with the number of pixels (64² … 512², log axes):\n\n{plot}"
     );
-    Ok(Section { body: s, headlines })
+    Ok(Section { body: s, headlines, sub_headlines: Vec::new() })
 }

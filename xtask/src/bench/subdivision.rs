@@ -375,7 +375,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         machine(),
         table(&header, &rows)
     );
-    Ok(Section { body, headlines })
+    Ok(Section { body, headlines, sub_headlines: Vec::new() })
 }
 
 #[cfg(test)]
