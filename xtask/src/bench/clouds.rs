@@ -516,93 +516,39 @@ fn verdict_cell(met: Option<bool>, ratio: f64) -> String {
     }
 }
 
-/// A value of `v` under the first of `keys` that is there.
-fn field<'a>(v: &'a Value, keys: &[&str]) -> Option<&'a Value> {
-    keys.iter().find_map(|k| v.get(*k)).filter(|x| !x.is_null())
-}
-
-/// A JSON value in a few characters: numbers and strings as they are, others compact.
-fn short(v: &Value) -> String {
-    match v {
-        Value::String(s) => s.clone(),
-        Value::Number(n) => n.as_f64().map_or_else(
-            || n.to_string(),
-            |x| {
-                if x.fract() == 0.0 && x.abs() < 1e15 {
-                    format!("{x:.0}")
-                } else {
-                    format!("{x:.3e}")
-                }
-            },
-        ),
-        other => other.to_string(),
-    }
-}
-
-/// One part of `hi fit`'s report: "name: 1 234 points, genus 0, 1 boundary loop, method,
-/// mean 1.2e-4", from whichever of these fields it has.
-fn part_summary(part: &Value) -> String {
-    let mut bits = Vec::new();
-    if let Some(p) = field(part, &["points"]).and_then(Value::as_u64) {
-        bits.push(format!("{} points", count_name(p as usize)));
-    }
-    if let Some(g) = field(part, &["genus"]) {
-        bits.push(format!("genus {}", short(g)));
-    }
-    if let Some(b) = field(part, &["boundary_loops", "boundaries", "loops", "holes"]) {
-        let n = b.as_array().map_or_else(|| short(b), |a| a.len().to_string());
-        bits.push(format!("{n} boundary loops"));
-    }
-    if let Some(m) = field(part, &["method"]) {
-        bits.push(short(m));
-    }
-    if let Some(e) = field(part, &["errors", "error"]) {
-        // A DistancesOut-like object: the relative mean, else the mean, else the whole.
-        let mean = e
-            .get("relative")
-            .and_then(|r| r.get(0).or_else(|| r.get("mean")))
-            .or_else(|| e.get("mean_relative"))
-            .or_else(|| e.get("mean"));
-        bits.push(format!("mean {}", mean.map_or_else(|| short(e), short)));
-    }
-    let name = field(part, &["name"]).map(short);
-    match (name, bits.is_empty()) {
-        (Some(n), true) => n,
-        (Some(n), false) => format!("{n}: {}", bits.join(", ")),
-        (None, _) => bits.join(", "),
-    }
-}
-
-/// What `hi fit`'s report says of topology and parts, tolerating fields that do not exist
-/// (yet): its `topology`, its `parts` (the first four, then how many more), or failing those the
-/// parts of a mesh scan its repair found (`mesh.parts`, with the area kept); "–" when it says
-/// nothing.
+/// What `hi fit`'s report says of the scan's topology: its parts fitted, each part's domain
+/// with its genus and boundary loops (the first four, then how many more), and the parts left
+/// out: "2 parts: torus (genus 1), sheet (1 loop); 3 left out"; "–" for a report without
+/// them (algorithm 1's).
 fn topology_summary(report: &Value) -> String {
-    let mut bits = Vec::new();
-    if let Some(t) = field(report, &["topology"]) {
-        bits.push(format!("topology {}", short(t)));
-    }
-    match field(report, &["parts"]) {
-        Some(Value::Array(parts)) => {
-            let listed: Vec<String> = parts.iter().take(4).map(part_summary).collect();
-            let more = if parts.len() > 4 {
-                format!("; … {} more", parts.len() - 4)
-            } else {
-                String::new()
-            };
-            bits.push(format!("{} parts: {}{more}", parts.len(), listed.join("; ")));
+    let Some(parts) = report["parts"].as_array() else { return "–".to_owned() };
+    let describe = |p: &Value| {
+        let domain = p["domain"].as_str().unwrap_or("?");
+        let genus = p["genus"].as_u64().unwrap_or(0);
+        let loops = p["boundary_loops"].as_u64().unwrap_or(0);
+        let mut bits = Vec::new();
+        if genus > 0 {
+            bits.push(format!("genus {genus}"));
         }
-        Some(other) => bits.push(format!("parts {}", short(other))),
-        None => {
-            if let Some(n) = report["mesh"]["parts"].as_u64() {
-                let kept = report["mesh"]["area_kept"].as_f64().map_or_else(String::new, |a| {
-                    format!(", {:.1} % of the area fitted", 100.0 * a)
-                });
-                bits.push(format!("mesh parts {n}{kept}"));
-            }
+        if loops > 0 {
+            bits.push(if loops == 1 { "1 loop".to_owned() } else { format!("{loops} loops") });
         }
+        if bits.is_empty() { domain.to_owned() } else { format!("{domain} ({})", bits.join(", ")) }
+    };
+    let mut listed: Vec<String> = parts.iter().take(4).map(describe).collect();
+    if parts.len() > 4 {
+        listed.push(format!("… {} more", parts.len() - 4));
     }
-    if bits.is_empty() { "–".to_owned() } else { bits.join("; ") }
+    let mut out = format!(
+        "{} {}: {}",
+        parts.len(),
+        if parts.len() == 1 { "part" } else { "parts" },
+        listed.join(", ")
+    );
+    if let Some(n) = report["dropped_parts"].as_array().map(Vec::len).filter(|&n| n > 0) {
+        out.push_str(&format!("; {n} left out"));
+    }
+    out
 }
 
 /// A trimesh measurement's parts and Euler characteristic: "3, χ 6".
@@ -1454,36 +1400,26 @@ mod tests {
     }
 
     #[test]
-    fn the_report_is_read_for_parts_and_topology_whatever_it_holds() {
-        // Today's report: the parts of a mesh scan its repair found.
-        let today = serde_json::json!({"method": "mesh", "mesh": {"parts": 11, "area_kept": 0.62}});
-        assert_eq!(topology_summary(&today), "mesh parts 11, 62.0 % of the area fitted");
-        assert_eq!(topology_summary(&serde_json::json!({"method": "radial"})), "–");
-        // A report listing parts and topology, with fields named as the issue has them.
-        let parts = serde_json::json!({
-            "topology": "3 parts, genus 0, 1, 0",
+    fn the_report_is_read_for_parts_and_topology() {
+        let report = serde_json::json!({
             "parts": [
-                {"name": "wing", "points": 12_000, "genus": 0, "boundary_loops": 0,
-                 "method": "mesh", "errors": {"relative": [1.5e-4, 2e-4, 1e-3]}},
-                {"name": "ring", "points": 200, "genus": 1, "boundary_loops": [[1, 2, 3]],
-                 "method": "shrink-wrap"},
-                {"name": "sheet", "boundaries": 2, "errors": 0.5},
-                {"points": 7}, {"name": "e"}, {"name": "f"},
-            ]
+                {"name": "part 1", "domain": "torus", "genus": 1, "boundary_loops": 0},
+                {"name": "part 2", "domain": "sphere", "genus": 3, "boundary_loops": 2},
+                {"name": "part 3", "domain": "sheet", "genus": 0, "boundary_loops": 1},
+                {"name": "part 4", "domain": "sphere", "genus": 0, "boundary_loops": 0},
+                {"name": "part 5", "domain": "sphere", "genus": 0, "boundary_loops": 0},
+            ],
+            "dropped_parts": [{"name": "part 6"}, {"name": "part 7"}],
         });
         assert_eq!(
-            topology_summary(&parts),
-            "topology 3 parts, genus 0, 1, 0; 6 parts: wing: 12\u{2009}000 points, genus 0, 0 \
-             boundary loops, mesh, mean 1.500e-4; ring: 200 points, genus 1, 1 boundary loops, \
-             shrink-wrap; sheet: 2 boundary loops, mean 5.000e-1; 7 points; … 2 more"
+            topology_summary(&report),
+            "5 parts: torus (genus 1), sphere (genus 3, 2 loops), sheet (1 loop), sphere, … 1 more; \
+             2 left out"
         );
-        // Odd shapes are shown as they are rather than dropped.
-        assert_eq!(topology_summary(&serde_json::json!({"parts": 4})), "parts 4");
-        assert_eq!(
-            topology_summary(&serde_json::json!({"topology": {"genus": 1}})),
-            "topology {\"genus\":1}"
-        );
-        assert_eq!(topology_summary(&serde_json::json!({"parts": null, "topology": null})), "–");
+        let one = serde_json::json!({"parts": [{"domain": "sphere"}], "dropped_parts": []});
+        assert_eq!(topology_summary(&one), "1 part: sphere");
+        // Algorithm 1's report has no parts.
+        assert_eq!(topology_summary(&serde_json::json!({"method": "radial"})), "–");
     }
 
     #[test]
