@@ -432,6 +432,11 @@ pub const UNREACHED: f64 = 0.02;
 /// ([`FitOptions::max_hole_fraction`]): the image is mostly guesswork.
 pub const MAX_HOLE_FRACTION: f64 = 0.5;
 
+/// The grids a point set's zero set is taken on, in [`CELL`]s of its spacing, until its parts
+/// above the floor that can be made surfaces hold [`MIN_AREA_KEPT`] of its area (else the rays
+/// are wrapped).
+const ZERO_SET_COARSER: [f64; 2] = [1.0, 2.0];
+
 /// Points in each local quadric fit of a point set.
 const NEIGHBOURS: usize = 16;
 
@@ -715,17 +720,27 @@ fn point_sources(
     } else {
         (points.to_vec(), normals.map(<[DVec3]>::to_vec))
     };
+    let kept = |planned: &[PlannedPart]| planned.iter().map(|p| p.area_fraction).sum::<f64>();
     let built = clock.run(StageKind::Parts, (0, 1), || -> Result<_, Error> {
         let surface = PointSurface::try_new(&reps, rep_normals.as_deref(), NEIGHBOURS)?;
-        let parts =
-            surface.zero_set(CELL * surface.spacing()).and_then(|(v, t)| mesh_parts(&v, &t));
-        let planned = parts.map(|parts| {
-            plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
-        });
+        // A zero set whose parts cannot be made surfaces (tunnels beyond counting between the
+        // walls of a thin part, or a cloud too sparse for its grid) is taken again on a coarser
+        // grid.
+        let mut planned = Err(hi_scan::Error::Degenerate { what: "no zero set" });
+        for coarser in ZERO_SET_COARSER {
+            planned = surface
+                .zero_set(coarser * CELL * surface.spacing())
+                .and_then(|(v, t)| mesh_parts(&v, &t))
+                .map(|parts| {
+                    plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+                });
+            if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {
+                break;
+            }
+        }
         Ok((surface, planned))
     })?;
     let (mut surface, planned) = built;
-    let kept = |planned: &[PlannedPart]| planned.iter().map(|p| p.area_fraction).sum::<f64>();
     let (planned, dropped) = match planned {
         Ok((planned, dropped)) if kept(&planned) >= MIN_AREA_KEPT => (planned, dropped),
         outcome => {
@@ -937,6 +952,209 @@ fn filled_on_grid(source: &SourceImage, surface: &HarmonicSurface<DVec3>) -> Opt
     })
 }
 
+/// The images of the scan's parts by the method asked for (`Auto`: a mesh's parts if they can
+/// stand for it, else the points'); see the module documentation.
+fn sources(
+    scan: &Scan,
+    (points, triangles): (&[DVec3], &[[u32; 3]]),
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    let texels = Domain::Sphere(options.layout).distinct_texels(rows, cols);
+    let normals = if triangles.is_empty() { scan.normals.as_deref() } else { None };
+    Ok(match options.method {
+        Method::Radial | Method::Contours => {
+            ray_sources(points, triangles, options, (rows, cols), clock)?
+        }
+        Method::Auto | Method::Mesh if !triangles.is_empty() => {
+            let force = options.method == Method::Mesh;
+            match mesh_sources(points, triangles, options, texels, force, clock)? {
+                Ok(sources) => sources,
+                Err(why) => {
+                    let mut s =
+                        point_sources(points, normals, options, (rows, cols), texels, clock)?;
+                    s.reason = format!("{why}; {}", s.reason);
+                    s
+                }
+            }
+        }
+        Method::Mesh => {
+            return Err(Error::Topology {
+                what: "the scan has no triangles to parameterise".to_owned(),
+            });
+        }
+        Method::Auto | Method::ShrinkWrap => {
+            let mut s = point_sources(points, normals, options, (rows, cols), texels, clock)?;
+            if triangles.is_empty() && options.method == Method::Auto {
+                s.reason = format!("the scan has no triangles; {}", s.reason);
+            }
+            s
+        }
+    })
+}
+
+/// Leaves out the parts whose images are mostly guesswork, naming them; an error if every
+/// part's is. (The texels a parameterisation puts on the caps of holes are the surface's
+/// choice, said so in the report, not missing data: only the rays' images are judged.)
+fn leave_out_guesswork(sources: &mut Sources, max_hole_fraction: f64) -> Result<(), Error> {
+    let guesswork = |p: &Sourced| {
+        let h = p.source.hole_fraction();
+        h >= 1.0 || (p.source.follows_outer_shell() && h > max_hole_fraction)
+    };
+    if sources.parts.iter().all(guesswork) {
+        let worst = sources.parts.iter().map(|p| p.source.hole_fraction()).fold(0.0, f64::max);
+        return Err(Error::MostlyHoles { fraction: worst });
+    }
+    let dropped = &mut sources.dropped;
+    sources.parts.retain(|p| {
+        let bad = guesswork(p);
+        if bad {
+            dropped.push(DroppedPart {
+                name: p.name.clone(),
+                vertices: 0,
+                area_fraction: p.area_fraction,
+                reason: format!(
+                    "{:.0} % of its image found no scan data",
+                    100.0 * p.source.hole_fraction()
+                ),
+            });
+        }
+        !bad
+    });
+    Ok(())
+}
+
+/// The regularisation of the parts' images, and the noise estimated for it: images sampled
+/// from a mesh lie on the scan's surface, with nothing to smooth away; images made from points
+/// carry the points' scatter: smooth it away, and no more.
+fn regularisation_for(
+    options: &FitOptions,
+    method: Method,
+    image_points: &[DVec3],
+) -> (Regularisation, Option<f64>) {
+    match (options.regularisation, method) {
+        (Regularisation::Auto, Method::Mesh) => (Regularisation::Off, None),
+        (Regularisation::Auto, _) => {
+            let sigma = hi_scan::noise::noise_estimate(image_points);
+            (Regularisation::Noise(sigma), Some(sigma))
+        }
+        (r, _) => (r, None),
+    }
+}
+
+/// The fit's error, as [`FitOptions::error`] asks.
+#[derive(Default)]
+struct Measurement {
+    /// Every scan point to the nearest surface.
+    errors: Option<Distances>,
+    /// Both ways over every part.
+    both_ways: Option<FitErrors>,
+    /// The thesis's measurement against a scan's mesh.
+    hausdorff: Option<Hausdorff>,
+    /// Each part's, both ways.
+    by_part: Vec<Option<FitErrors>>,
+    /// Each part's mesh, measured on.
+    meshes: Vec<Option<LayoutMesh>>,
+}
+
+/// Measures the fit of the parts' surfaces to the scan (`points`, `triangles`).
+fn measure_error(
+    sourced: &[Sourced],
+    surfaced: &[Surfaced],
+    (points, triangles): (&[DVec3], &[[u32; 3]]),
+    options: &FitOptions,
+    method: Method,
+    clock: &mut Clock<'_>,
+) -> Result<Measurement, Error> {
+    let n = sourced.len();
+    let mut out =
+        Measurement { by_part: vec![None; n], meshes: vec![None; n], ..Measurement::default() };
+    match options.error {
+        ErrorMeasure::Off => {}
+        ErrorMeasure::Sampled(oversample) if method != Method::Mesh && n == 1 => {
+            // The thesis's measurement, as the figures of §5.3 report it.
+            let surface = &surfaced[0].surface;
+            clock.run(StageKind::FitError, (0, 1), || -> Result<(), Error> {
+                if triangles.is_empty() {
+                    out.errors = Some(distances_to_surface(surface, points, oversample)?);
+                } else {
+                    let h = hausdorff(surface, points, triangles, oversample)?;
+                    out.errors = Some(h.scan_to_surface.clone());
+                    out.hausdorff = Some(h);
+                }
+                Ok(())
+            })?;
+        }
+        measure => {
+            let filled: Vec<Option<Vec<bool>>> = sourced
+                .iter()
+                .zip(surfaced)
+                .map(|(p, s)| filled_on_grid(&p.source, &s.surface))
+                .collect();
+            let measured: Vec<measure::Measured<'_>> = sourced
+                .iter()
+                .zip(surfaced)
+                .zip(&filled)
+                .map(|((p, s), f)| measure::Measured {
+                    surface: &s.surface,
+                    domain: p.domain,
+                    filled: f.as_deref(),
+                    // An image of a mesh's parameterisation left as it was sampled has its
+                    // texels on the scan's triangles.
+                    texels_on_scan: method == Method::Mesh
+                        && s.regularisation.lambda == 0.0
+                        && options.smoothing.is_none()
+                        && s.reduction.is_none(),
+                })
+                .collect();
+            let (mut all, each, meshes) = clock.run(StageKind::FitError, (0, 1), || {
+                measure::measure_parts(&measured, points, triangles, measure)
+            })?;
+            // The per-point distances once, in `errors`.
+            let per_point = std::mem::take(&mut all.scan_to_surface.per_point);
+            out.errors = Some(Distances { per_point, ..all.scan_to_surface.clone() });
+            out.both_ways = Some(all);
+            out.by_part = each.into_iter().map(Some).collect();
+            out.meshes = meshes.into_iter().map(Some).collect();
+        }
+    }
+    Ok(out)
+}
+
+/// The report of one part.
+fn part_report(p: &Sourced, s: &Surfaced, errors: Option<FitErrors>) -> PartReport {
+    PartReport {
+        name: p.name.clone(),
+        domain: p.domain,
+        why: p.why.clone(),
+        area_fraction: p.area_fraction,
+        genus: p.genus,
+        boundary_loops: p.boundary_loops,
+        repair: p.repair,
+        image_size: (p.source.image().rows(), p.source.image().cols()),
+        surface_size: (s.surface.m(), s.surface.n()),
+        non_star_fraction: p.source.non_star_fraction(),
+        hole_fraction: p.source.hole_fraction(),
+        regularisation: s.regularisation,
+        reduction: s.reduction,
+        errors,
+    }
+}
+
+/// For §5.8's image, the distinct located points per row.
+fn row_points(source: &SourceImage) -> Option<RowPoints> {
+    match source {
+        SourceImage::Contours(c) => Some(RowPoints {
+            min: c.row_points.iter().copied().min().unwrap_or(0),
+            mean: c.row_points.iter().sum::<usize>() as f64 / c.row_points.len().max(1) as f64,
+            max: c.row_points.iter().copied().max().unwrap_or(0),
+            empty_rows: c.empty_rows.len(),
+        }),
+        _ => None,
+    }
+}
+
 /// Fits a harmonic surface to each part of a scan; see the module documentation. `on_stage`
 /// is told each stage as it starts, and of which part (for a progress display).
 ///
@@ -961,175 +1179,29 @@ pub fn fit(
         return Err(Error::TooFewPoints { found: points.len(), needed: 4 });
     }
     check_spread(&points, options.boundary)?;
-    let (rows, cols) = options.resolution.unwrap_or_else(|| {
+    let size = options.resolution.unwrap_or_else(|| {
         if triangles.is_empty() {
             auto_resolution_points(points.len())
         } else {
             auto_resolution(points.len())
         }
     });
-    let texels = Domain::Sphere(options.layout).distinct_texels(rows, cols);
     let mut clock = Clock { stages: Vec::new(), on_stage };
-    let normals = if triangles.is_empty() { scan.normals.as_deref() } else { None };
-    let sources = match options.method {
-        Method::Radial | Method::Contours => {
-            ray_sources(&points, &triangles, options, (rows, cols), &mut clock)?
-        }
-        Method::Auto | Method::Mesh if !triangles.is_empty() => {
-            match mesh_sources(
-                &points,
-                &triangles,
-                options,
-                texels,
-                options.method == Method::Mesh,
-                &mut clock,
-            )? {
-                Ok(sources) => sources,
-                Err(why) => {
-                    let mut s =
-                        point_sources(&points, normals, options, (rows, cols), texels, &mut clock)?;
-                    s.reason = format!("{why}; {}", s.reason);
-                    s
-                }
-            }
-        }
-        Method::Mesh => {
-            return Err(Error::Topology {
-                what: "the scan has no triangles to parameterise".to_owned(),
-            });
-        }
-        Method::Auto | Method::ShrinkWrap => {
-            let mut s = point_sources(&points, normals, options, (rows, cols), texels, &mut clock)?;
-            if triangles.is_empty() && options.method == Method::Auto {
-                s.reason = format!("the scan has no triangles; {}", s.reason);
-            }
-            s
-        }
-    };
-    let Sources { parts: mut sourced, mut dropped, method, reason: method_reason, image_points } =
-        sources;
-    // Parts whose images are mostly guesswork are left out; if every part's is, the fit is. (The
-    // texels a parameterisation puts on the caps of holes are the surface's choice, said so in
-    // the report, not missing data: only the rays' images are judged.)
-    let guesswork = |p: &Sourced| {
-        let h = p.source.hole_fraction();
-        h >= 1.0 || (p.source.follows_outer_shell() && h > options.max_hole_fraction)
-    };
-    let worst = sourced.iter().map(|p| p.source.hole_fraction()).fold(0.0, f64::max);
-    if sourced.iter().all(guesswork) {
-        return Err(Error::MostlyHoles { fraction: worst });
-    }
-    sourced.retain(|p| {
-        let bad = guesswork(p);
-        if bad {
-            dropped.push(DroppedPart {
-                name: p.name.clone(),
-                vertices: 0,
-                area_fraction: p.area_fraction,
-                reason: format!(
-                    "{:.0} % of its image found no scan data",
-                    100.0 * p.source.hole_fraction()
-                ),
-            });
-        }
-        !bad
-    });
-    // Images sampled from a mesh lie on the scan's surface: nothing to smooth away. Images made
-    // from points carry the points' scatter: smooth it away, and no more.
-    let mut noise = None;
-    let how = match (options.regularisation, method) {
-        (Regularisation::Auto, Method::Mesh) => Regularisation::Off,
-        (Regularisation::Auto, _) => {
-            let sigma = hi_scan::noise::noise_estimate(&image_points);
-            noise = Some(sigma);
-            Regularisation::Noise(sigma)
-        }
-        (r, _) => r,
-    };
+    let mut sources = sources(scan, (&points, &triangles), options, size, &mut clock)?;
+    leave_out_guesswork(&mut sources, options.max_hole_fraction)?;
+    let Sources { parts: sourced, dropped, method, reason, image_points } = sources;
+    let (how, noise) = regularisation_for(options, method, &image_points);
     let n = sourced.len();
     let mut surfaced = Vec::with_capacity(n);
     for (k, part) in sourced.iter().enumerate() {
         surfaced.push(surface_of(&part.source, options, how, (k, n), &mut clock)?);
     }
-    // The error.
-    let (mut errors, mut both_ways, mut both_mesh) = (None, None, None);
-    let mut by_part: Vec<Option<FitErrors>> = vec![None; n];
-    let mut meshes: Vec<Option<LayoutMesh>> = vec![None; n];
-    match options.error {
-        ErrorMeasure::Off => {}
-        ErrorMeasure::Sampled(oversample) if method != Method::Mesh && n == 1 => {
-            // The thesis's measurement, as the figures of §5.3 report it.
-            let surface = &surfaced[0].surface;
-            clock.run(StageKind::FitError, (0, 1), || -> Result<(), Error> {
-                if triangles.is_empty() {
-                    errors = Some(distances_to_surface(surface, &points, oversample)?);
-                } else {
-                    let h = hausdorff(surface, &points, &triangles, oversample)?;
-                    errors = Some(h.scan_to_surface.clone());
-                    both_mesh = Some(h);
-                }
-                Ok(())
-            })?;
-        }
-        measure => {
-            let filled: Vec<Option<Vec<bool>>> = sourced
-                .iter()
-                .zip(&surfaced)
-                .map(|(p, s)| filled_on_grid(&p.source, &s.surface))
-                .collect();
-            let measured: Vec<measure::Measured<'_>> = sourced
-                .iter()
-                .zip(&surfaced)
-                .zip(&filled)
-                .map(|((p, s), f)| measure::Measured {
-                    surface: &s.surface,
-                    domain: p.domain,
-                    filled: f.as_deref(),
-                    // An image of a mesh's parameterisation left as it was sampled has its
-                    // texels on the scan's triangles.
-                    texels_on_scan: method == Method::Mesh
-                        && s.regularisation.lambda == 0.0
-                        && options.smoothing.is_none()
-                        && s.reduction.is_none(),
-                })
-                .collect();
-            let (all, each, part_meshes) = clock.run(StageKind::FitError, (0, 1), || {
-                measure::measure_parts(&measured, &points, &triangles, measure)
-            })?;
-            // The per-point distances once, in `errors`.
-            let mut all = all;
-            let per_point = std::mem::take(&mut all.scan_to_surface.per_point);
-            errors = Some(Distances { per_point, ..all.scan_to_surface.clone() });
-            both_ways = Some(all);
-            by_part = each.into_iter().map(Some).collect();
-            meshes = part_meshes.into_iter().map(Some).collect();
-        }
-    }
-    let reports: Vec<PartReport> = sourced
-        .iter()
-        .zip(&surfaced)
-        .zip(by_part)
-        .map(|((p, s), e)| PartReport {
-            name: p.name.clone(),
-            domain: p.domain,
-            why: p.why.clone(),
-            area_fraction: p.area_fraction,
-            genus: p.genus,
-            boundary_loops: p.boundary_loops,
-            repair: p.repair,
-            image_size: (p.source.image().rows(), p.source.image().cols()),
-            surface_size: (s.surface.m(), s.surface.n()),
-            non_star_fraction: p.source.non_star_fraction(),
-            hole_fraction: p.source.hole_fraction(),
-            regularisation: s.regularisation,
-            reduction: s.reduction,
-            errors: e,
-        })
-        .collect();
-    let first = &sourced[0];
+    let measured =
+        measure_error(&sourced, &surfaced, (&points, &triangles), options, method, &mut clock)?;
+    let (first, largest) = (&sourced[0], &surfaced[0]);
     let report = FitReport {
         method,
-        method_reason,
+        method_reason: reason,
         points: points.len(),
         unused_points,
         image_points: image_points.len(),
@@ -1137,30 +1209,27 @@ pub fn fit(
         image_size: (first.source.image().rows(), first.source.image().cols()),
         non_star_fraction: first.source.non_star_fraction(),
         hole_fraction: first.source.hole_fraction(),
-        row_points: match &first.source {
-            SourceImage::Contours(c) => Some(RowPoints {
-                min: c.row_points.iter().copied().min().unwrap_or(0),
-                mean: c.row_points.iter().sum::<usize>() as f64 / c.row_points.len().max(1) as f64,
-                max: c.row_points.iter().copied().max().unwrap_or(0),
-                empty_rows: c.empty_rows.len(),
-            }),
-            _ => None,
-        },
+        row_points: row_points(&first.source),
         noise,
-        regularisation: surfaced[0].regularisation,
-        surface_size: (surfaced[0].surface.m(), surfaced[0].surface.n()),
-        reduction: surfaced[0].reduction,
-        errors,
-        both_ways,
-        hausdorff: both_mesh,
-        parts: reports,
+        regularisation: largest.regularisation,
+        surface_size: (largest.surface.m(), largest.surface.n()),
+        reduction: largest.reduction,
+        errors: measured.errors,
+        both_ways: measured.both_ways,
+        hausdorff: measured.hausdorff,
+        parts: sourced
+            .iter()
+            .zip(&surfaced)
+            .zip(measured.by_part)
+            .map(|((p, s), e)| part_report(p, s, e))
+            .collect(),
         dropped_parts: dropped,
         part_floor: PART_FLOOR,
     };
     let parts = sourced
         .into_iter()
         .zip(surfaced)
-        .zip(meshes)
+        .zip(measured.meshes)
         .map(|((p, s), mesh)| FitPart {
             surface: s.surface,
             source: p.source,
