@@ -12,6 +12,10 @@
 //! translation, so that triangle f is the plane triangle with corners
 //! uv[t[k]] + offset[f][k]: on the torus a triangle that crosses a seam of the unit square is
 //! kept in one piece; on the square all offsets are zero.
+//!
+//! The relaxation's bounds (a budget of iterations shared by the reweighting rounds, a
+//! multigrid hierarchy per round, the last bijection kept) are stated in the documentation of
+//! [`torusparam`](crate::torusparam), under "What a parameterisation costs, at most".
 
 use glam::{DVec2, DVec3, IVec2};
 
@@ -58,12 +62,39 @@ pub struct FlatReport {
     pub relaxed: FlatQuality,
     /// Reweighting rounds kept (each lowered the stretch).
     pub rounds: usize,
+    /// Why the reweighting rounds ended.
+    pub rounds_end: RoundsEnd,
     /// Newton sweeps made.
     pub sweeps: usize,
-    /// Conjugate-gradient iterations in all the Laplacian solves.
+    /// Conjugate-gradient iterations in all the Laplacian solves (those of rounds that were
+    /// dropped included).
     pub solve_iterations: usize,
+    /// Conjugate-gradient iterations of the harmonic map's solve alone (its fold tightening
+    /// included); the reweighting rounds' solves together may take at most six times as many
+    /// (192 at least).
+    pub harmonic_iterations: usize,
     /// The relative residual of the last Laplacian solve kept.
     pub solve_residual: f64,
+}
+
+/// Why the reweighting rounds of a flat parameterisation ended. Whatever the reason, the map
+/// kept is the last one that was a bijection and lowered the stretch: the harmonic map if no
+/// round was kept.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum RoundsEnd {
+    /// No round was asked for.
+    NotAsked,
+    /// Every round asked for was made and kept.
+    AllMade,
+    /// A round raised the stretch efficiency by less than 2 %: it was kept, and was the last
+    /// (the rounds have about converged).
+    SmallGain,
+    /// A round did not raise the stretch efficiency: it was dropped (the rounds overshoot).
+    NoGain,
+    /// A round's solve did not reach a map without folds within what was left of the rounds'
+    /// iteration budget, or broke down: it was dropped.
+    Unsolved,
 }
 
 /// A geometry image sampled from a flat parameterisation.
@@ -430,12 +461,15 @@ pub(crate) struct RelaxSettings {
     pub(crate) rounds: usize,
     pub(crate) sweeps: usize,
     pub(crate) cg: CgOptions,
+    /// The iterations the harmonic map's solve took (see [`relaxation_budget`]).
+    pub(crate) harmonic_iterations: usize,
 }
 
 /// What the relaxation did.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct RelaxReport {
     pub(crate) rounds: usize,
+    pub(crate) end: RoundsEnd,
     pub(crate) sweeps: usize,
     pub(crate) iterations: usize,
     pub(crate) residual: Option<f64>,
@@ -449,6 +483,24 @@ const SMALL_GAIN: f64 = 0.02;
 /// The relative residual the reweighting rounds solve to (or the caller's, if looser): each
 /// round's map only guides the next weights, and is checked for folds before it is kept.
 const ROUND_TOLERANCE: f64 = 1e-5;
+
+/// The reweighting rounds' solves together may take this many times the iterations of the
+/// harmonic map's solve ([`RELAXATION_BUDGET_MIN`] at least). A round's solve is warm-started,
+/// to a looser tolerance, with a hierarchy built for its own weights: on the meshes of the
+/// tests all the rounds together take from a tenth to once the harmonic solve's iterations;
+/// on the zero sets of scans, whose long thin parts the map squeezes so much that their
+/// triangles fold until the solve is pushed to 10⁻⁹ or 10⁻¹³, two to five times.
+const RELAXATION_BUDGET_FACTOR: usize = 6;
+
+/// The fewest iterations the reweighting rounds' solves are allowed together.
+const RELAXATION_BUDGET_MIN: usize = 192;
+
+/// The conjugate-gradient iterations the reweighting rounds' solves may take together, fold
+/// tightening included, when the harmonic map's took `harmonic` (see
+/// [`RELAXATION_BUDGET_FACTOR`]).
+fn relaxation_budget(harmonic: usize) -> usize {
+    (RELAXATION_BUDGET_FACTOR * harmonic).max(RELAXATION_BUDGET_MIN)
+}
 
 /// The tightest tolerance a solve is pushed to when its map still folds.
 const TIGHTEST: f64 = 1e-14;
@@ -671,8 +723,17 @@ impl<'a> Relaxation<'a> {
     }
 
     /// The relaxation: reweighting rounds, each a Laplacian solve warm-started from the map
-    /// (kept while it lowers the stretch), then Newton sweeps. `rhs` gives the right-hand
-    /// sides for the Laplacian's current weights; `fixed` the vertices held in the solves.
+    /// (kept while it lowers the stretch and is a bijection), then Newton sweeps. `rhs` gives
+    /// the right-hand sides for the Laplacian's current weights; `fixed` the vertices held in
+    /// the solves.
+    ///
+    /// Each round's solve is preconditioned by a hierarchy built for its own weights; the
+    /// rounds' solves share [`relaxation_budget`] iterations, fold tightening included, each
+    /// also capped by the caller's cap per solve. A round that does not reach a map without
+    /// folds within what is left is dropped and ends the rounds, `map` left at the last map
+    /// kept. So the rounds cost at most `rounds` hierarchies and [`relaxation_budget`]
+    /// iterations, and the sweeps `sweeps` passes over the vertices, each move a line search
+    /// of at most 31 evaluations of the vertex's triangles.
     pub(crate) fn run(
         &self,
         lap: &mut Laplacian,
@@ -681,7 +742,14 @@ impl<'a> Relaxation<'a> {
         map: &mut FlatMap,
         settings: RelaxSettings,
     ) -> RelaxReport {
-        let mut report = RelaxReport::default();
+        let mut report = RelaxReport {
+            rounds: 0,
+            end: if settings.rounds == 0 { RoundsEnd::NotAsked } else { RoundsEnd::AllMade },
+            sweeps: 0,
+            iterations: 0,
+            residual: None,
+        };
+        let mut budget = relaxation_budget(settings.harmonic_iterations);
         // Each map is measured on the domain of its own image's shape.
         let efficiency = |m: &FlatMap| {
             let (q, metric) = quality(self.positions, self.triangles, m, self.flat);
@@ -689,41 +757,49 @@ impl<'a> Relaxation<'a> {
         };
         let (mut best, mut alpha) = efficiency(map);
         let mut scale = vec![1.0; self.triangles.len()];
-        // One hierarchy for all rounds (built for the first round's weights): the later
-        // rounds' weights differ from them by smooth factors, and rebuilding would cost more
-        // than the few iterations it saves.
-        let mut multigrid = None;
         for _ in 0..settings.rounds {
+            if budget == 0 {
+                report.end = RoundsEnd::Unsolved;
+                break;
+            }
             self.reweight(map, &mut scale, alpha);
             lap.set_cotangent_weights(self.positions, self.triangles, Some(&scale));
-            if multigrid.is_none() {
-                multigrid = Some(lap.preconditioner(fixed, settings.cg));
-            }
+            // A hierarchy for this round's weights: they differ from the last round's by a
+            // factor per triangle of up to 10³ either way, not smoothly on a mesh with slivers
+            // and squeezed parts, and a hierarchy built for other weights can take a hundred
+            // times the iterations (on the zero set of a scan, thousands per round instead of
+            // a dozen or two); building one costs about four.
+            let multigrid = lap.preconditioner(fixed, settings.cg);
             let b = rhs(lap);
             let mut trial = map.clone();
             let mut x: Vec<[f64; 2]> = trial.uv.iter().map(|p| p.to_array()).collect();
-            let Ok((iterations, residual)) = solve_until_embedded(
+            let (iterations, solved) = solve_until_embedded(
                 lap,
                 fixed,
                 &b,
                 &mut x,
-                CgOptions { tolerance: settings.cg.tolerance.max(ROUND_TOLERANCE), ..settings.cg },
-                multigrid.as_ref().and_then(Option::as_ref),
+                CgOptions {
+                    tolerance: settings.cg.tolerance.max(ROUND_TOLERANCE),
+                    max_iterations: budget.min(settings.cg.max_iterations),
+                    ..settings.cg
+                },
+                multigrid.as_ref(),
                 |x| {
                     let mut m = trial.clone();
                     m.uv = x.iter().map(|p| DVec2::from_array(*p)).collect();
                     count_folds(self.triangles, &m, self.flat)
                 },
-            ) else {
+            );
+            report.iterations += iterations;
+            budget = budget.saturating_sub(iterations);
+            let Ok(Embedded { residual, folds: 0 }) = solved else {
+                report.end = RoundsEnd::Unsolved;
                 break;
             };
-            report.iterations += iterations;
             trial.uv = x.iter().map(|p| DVec2::from_array(*p)).collect();
-            if count_folds(self.triangles, &trial, self.flat) > 0 {
-                break;
-            }
             let (e, a) = efficiency(&trial);
             if e <= best {
+                report.end = RoundsEnd::NoGain;
                 break;
             }
             let small = e < best * (1.0 + SMALL_GAIN);
@@ -732,6 +808,7 @@ impl<'a> Relaxation<'a> {
             report.rounds += 1;
             report.residual = Some(residual);
             if small {
+                report.end = RoundsEnd::SmallGain;
                 break;
             }
         }
@@ -744,9 +821,23 @@ impl<'a> Relaxation<'a> {
     }
 }
 
+/// The end of [`solve_until_embedded`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Embedded {
+    /// The relative residual of the last solve.
+    pub(crate) residual: f64,
+    /// The triangles still folded (at the tightest tolerance), 0 for an embedding.
+    pub(crate) folds: usize,
+}
+
 /// Solves (preconditioned by `multigrid`, see [`Laplacian::solve`]), then, while `folds`
 /// finds folded triangles, solves on from there to a tolerance a hundred times tighter, down
-/// to 10⁻¹⁴. Returns the iterations and the last residual.
+/// to 10⁻¹⁴; `cg.max_iterations` caps the iterations of all these solves together (the
+/// positions of the vertices of an exponentially squeezed part of the map, such as a long
+/// finger of a disc, differ by less than a tolerance of 10⁻⁸ resolves). Returns the
+/// iterations (those of a solve that failed counted as all it was allowed), and the last
+/// residual with the folds left (at the tightest tolerance or the cap), or the failure (the
+/// cap reached before the tolerance, a breakdown).
 pub(crate) fn solve_until_embedded(
     lap: &Laplacian,
     fixed: Option<&[bool]>,
@@ -755,14 +846,20 @@ pub(crate) fn solve_until_embedded(
     cg: CgOptions,
     multigrid: Option<&Multigrid>,
     folds: impl Fn(&[[f64; 2]]) -> usize,
-) -> Result<(usize, f64), Error> {
+) -> (usize, Result<Embedded, Error>) {
     let mut options = cg;
     let mut iterations = 0;
     loop {
-        let report = lap.solve(fixed, b, x, options, multigrid)?;
+        // Below the cap here: it is at least 1, and reaching it returns.
+        options.max_iterations = cg.max_iterations - iterations;
+        let report = match lap.solve(fixed, b, x, options, multigrid) {
+            Ok(r) => r,
+            Err(e) => return (iterations + options.max_iterations, Err(e)),
+        };
         iterations += report.iterations;
-        if options.tolerance <= TIGHTEST || folds(x) == 0 {
-            return Ok((iterations, report.residual));
+        let left = folds(x);
+        if left == 0 || options.tolerance <= TIGHTEST || iterations >= cg.max_iterations {
+            return (iterations, Ok(Embedded { residual: report.residual, folds: left }));
         }
         options.tolerance = (options.tolerance * 1e-2).max(TIGHTEST);
     }
@@ -994,6 +1091,110 @@ pub(crate) fn form_rhs(lap: &Laplacian, form: &[IVec2]) -> Vec<[f64; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::laplace::tail;
+
+    /// A bumpy 12 × 12 height field over the unit square and its harmonic map onto the square
+    /// (the boundary held where it lies): positions, triangles, connectivity, Laplacian,
+    /// held vertices, the map and the iterations it took.
+    #[expect(clippy::type_complexity, reason = "one test helper")]
+    fn bumpy_square() -> (Vec<DVec3>, Vec<[u32; 3]>, Topology, Laplacian, Vec<bool>, FlatMap, usize)
+    {
+        let n = 12;
+        let p: Vec<DVec3> = (0..n * n)
+            .map(|k| {
+                let (x, y) = ((k % n) as f64 / (n - 1) as f64, (k / n) as f64 / (n - 1) as f64);
+                DVec3::new(x, y, 0.4 * (5.0 * x).sin() * (4.0 * y).cos())
+            })
+            .collect();
+        let mut t = Vec::new();
+        for i in 0..n - 1 {
+            for j in 0..n - 1 {
+                let a = (i * n + j) as u32;
+                t.extend([[a, a + 1, a + n as u32 + 1], [a, a + n as u32 + 1, a + n as u32]]);
+            }
+        }
+        let topology = Topology::new(p.len(), &t).unwrap();
+        let mut fixed = vec![false; p.len()];
+        for &h in &topology.boundary {
+            fixed[tail(&t, h) as usize] = true;
+        }
+        let mut lap = Laplacian::new(&topology, &t);
+        lap.set_cotangent_weights(&p, &t, None);
+        let mut x: Vec<[f64; 2]> = p.iter().map(|q| [q.x, q.y]).collect();
+        let cg = CgOptions::new(1e-10, 1000);
+        let (iterations, solved) = solve_until_embedded(
+            &lap,
+            Some(&fixed),
+            &vec![[0.0; 2]; p.len()],
+            &mut x,
+            cg,
+            None,
+            |_| 0,
+        );
+        assert_eq!(solved.unwrap().folds, 0, "the harmonic map");
+        let map = FlatMap {
+            uv: x.iter().map(|q| DVec2::from_array(*q)).collect(),
+            offsets: vec![[IVec2::ZERO; 3]; t.len()],
+        };
+        (p, t, topology, lap, fixed, map, iterations)
+    }
+
+    /// The rounds' solves share a budget: with iterations to spare they lower the stretch;
+    /// with one iteration per solve the first round cannot be solved, is dropped, and leaves
+    /// the map as it was.
+    #[test]
+    fn rounds_keep_to_their_budget() {
+        let (p, t, topology, mut lap, fixed, harmonic, iterations) = bumpy_square();
+        let freedom: Vec<Freedom> =
+            fixed.iter().map(|&f| if f { Freedom::Fixed } else { Freedom::Free }).collect();
+        let relaxation = Relaxation::new(&p, &t, &topology, freedom, None);
+        let zero = vec![[0.0; 2]; p.len()];
+        let before = quality(&p, &t, &harmonic, None).0.stretch_efficiency;
+        let settings = RelaxSettings {
+            rounds: 8,
+            sweeps: 0,
+            cg: CgOptions::new(1e-8, 100_000),
+            harmonic_iterations: iterations,
+        };
+        let mut map = harmonic.clone();
+        let done = relaxation.run(
+            &mut lap,
+            Some(&fixed),
+            &|_: &Laplacian| zero.clone(),
+            &mut map,
+            settings,
+        );
+        let after = quality(&p, &t, &map, None).0.stretch_efficiency;
+        println!("{done:?}: efficiency {before} → {after}");
+        assert!(done.rounds >= 1 && after > before, "{done:?}");
+        assert!(done.iterations <= relaxation_budget(iterations), "{done:?}");
+        assert_ne!(done.end, RoundsEnd::Unsolved, "{done:?}");
+        // One iteration per solve: the first round is dropped, the map kept as it was.
+        let mut map = harmonic.clone();
+        let starved = RelaxSettings { cg: CgOptions::new(1e-8, 1), ..settings };
+        let done = relaxation.run(
+            &mut lap,
+            Some(&fixed),
+            &|_: &Laplacian| zero.clone(),
+            &mut map,
+            starved,
+        );
+        assert_eq!(
+            (done.rounds, done.end, done.iterations),
+            (0, RoundsEnd::Unsolved, 1),
+            "{done:?}"
+        );
+        assert_eq!(map.uv, harmonic.uv, "the harmonic map kept");
+        // No rounds asked for.
+        let none = RelaxSettings { rounds: 0, ..settings };
+        let done =
+            relaxation.run(&mut lap, Some(&fixed), &|_: &Laplacian| zero.clone(), &mut map, none);
+        assert_eq!(
+            (done.rounds, done.end, done.iterations),
+            (0, RoundsEnd::NotAsked, 0),
+            "{done:?}"
+        );
+    }
 
     /// The analytic gradient and Hessian of a face's energy against central differences.
     #[test]

@@ -31,7 +31,13 @@
 //! [`MULTIGRID_ABOVE`] free vertices it is one V-cycle of smoothed-aggregation multigrid
 //! (damped Jacobi smoothing, aggregates of strongly connected neighbours, the prolongator
 //! smoothed with the filtered matrix, Galerkin coarse matrices, a dense Cholesky factor at the
-//! bottom), which takes about a dozen at any size. Dot
+//! bottom), which takes about a dozen at any size. A hierarchy is built for one matrix: it
+//! preconditions another with the same free rows correctly, but one whose weights differ by
+//! large, uneven factors (the stretch relaxation's later rounds) in up to a hundred times the
+//! iterations, so the relaxation builds one per round. Where coarsening stalls (too few strong
+//! connections left to aggregate) above a thousand rows, the coarsest level is smoothed by
+//! Jacobi sweeps rather than factored densely (a dense factor the size of a mesh would take
+//! minutes and gigabytes). Dot
 //! products are summed in fixed blocks of rows and the blocks in order, and every other
 //! parallel loop writes its own rows, so the result does not depend on the number of threads.
 
@@ -454,16 +460,18 @@ impl Laplacian {
             .enumerate()
             .map(|(b, chunk)| {
                 let mut dot = [0.0; K];
-                for (o, qi) in chunk.iter_mut().enumerate() {
-                    let i = b * BLOCK + o;
+                let first = b * BLOCK;
+                let starts = &self.start[first..=first + chunk.len()];
+                for (o, (w, qi)) in starts.windows(2).zip(chunk.iter_mut()).enumerate() {
+                    let i = first + o;
                     if fixed.is_some_and(|f| f[i]) {
                         *qi = [0.0; K];
                         continue;
                     }
                     let mut acc = p[i].map(|x| x * self.diagonal[i]);
-                    let (cols, ws, _) = self.row(i);
-                    for (&j, &w) in cols.iter().zip(ws) {
-                        let pj = &p[j as usize];
+                    let range = w[0] as usize..w[1] as usize;
+                    for (&j, &w) in self.columns[range.clone()].iter().zip(&self.weights[range]) {
+                        let pj = p[j as usize];
                         for c in 0..K {
                             acc[c] -= w * pj[c];
                         }
@@ -705,6 +713,17 @@ pub(crate) const MULTIGRID_ABOVE: usize = 2000;
 /// Below this many rows a level is solved directly.
 const COARSEST: usize = 200;
 
+/// The most rows of a coarsest level solved directly (a dense Cholesky factor: n² numbers,
+/// n³/6 multiply-adds). Coarsening stops early when a level's aggregates are not much fewer
+/// than its rows (too few strong connections); a coarsest level larger than this is then
+/// smoothed by [`COARSE_SWEEPS`] Jacobi sweeps instead, not factored (which, at the size of
+/// the mesh, would take minutes and gigabytes).
+const DENSE_MAX: usize = 1000;
+
+/// The Jacobi sweeps that stand in for the solve of a coarsest level too large to factor: an
+/// odd number, so that the V-cycle stays symmetric positive definite whatever the spectrum.
+const COARSE_SWEEPS: usize = 5;
+
 /// The damping of the Jacobi smoother and of the prolongator's smoothing: 2/3, for the
 /// eigenvalues of D⁻¹A in (0, 2] of a weighted Laplacian.
 const OMEGA: f64 = 2.0 / 3.0;
@@ -799,27 +818,40 @@ impl Csr {
         m
     }
 
-    /// Row i of A x (with the diagonal for a square matrix).
+    /// For each row i of block `blk` (rows `BLOCK·blk..`, as many as `out` has), sets
+    /// `out[i − BLOCK·blk]` to `f(i, (A x)ᵢ, out[i − BLOCK·blk])`, (A x)ᵢ with the diagonal for a
+    /// square matrix. (One pass over the block's rows: walking the row starts in order,
+    /// rather than slicing each row apart, takes a third less time on rows of a few entries.)
     #[inline]
-    fn row_times<const K: usize>(&self, i: usize, x: &[[f64; K]]) -> [f64; K] {
-        let mut acc = if self.diag.is_empty() { [0.0; K] } else { x[i].map(|v| v * self.diag[i]) };
-        let (cols, vals) = self.row(i);
-        for (&j, &a) in cols.iter().zip(vals) {
-            let xj = &x[j as usize];
-            for c in 0..K {
-                acc[c] += a * xj[c];
+    fn rows_times<const K: usize>(
+        &self,
+        blk: usize,
+        x: &[[f64; K]],
+        out: &mut [[f64; K]],
+        f: impl Fn(usize, [f64; K], [f64; K]) -> [f64; K],
+    ) {
+        let first = blk * BLOCK;
+        let starts = &self.start[first..=first + out.len()];
+        let square = !self.diag.is_empty();
+        for (o, (w, yo)) in starts.windows(2).zip(out.iter_mut()).enumerate() {
+            let i = first + o;
+            let range = w[0] as usize..w[1] as usize;
+            let mut acc = if square { x[i].map(|v| v * self.diag[i]) } else { [0.0; K] };
+            for (&j, &a) in self.cols[range.clone()].iter().zip(&self.vals[range]) {
+                let xj = x[j as usize];
+                for c in 0..K {
+                    acc[c] += a * xj[c];
+                }
             }
+            *yo = f(i, acc, *yo);
         }
-        acc
     }
 
     /// y = A x.
     fn apply<const K: usize>(&self, x: &[[f64; K]], y: &mut [[f64; K]]) {
-        y.par_chunks_mut(BLOCK).enumerate().for_each(|(b, chunk)| {
-            for (o, yi) in chunk.iter_mut().enumerate() {
-                *yi = self.row_times(b * BLOCK + o, x);
-            }
-        });
+        y.par_chunks_mut(BLOCK)
+            .enumerate()
+            .for_each(|(blk, chunk)| self.rows_times(blk, x, chunk, |_, ax, _| ax));
     }
 
     /// A · B (B rectangular, `width` columns); no diagonal kept apart unless `square`, then
@@ -899,8 +931,8 @@ pub(crate) struct Multigrid {
     levels: Vec<Level>,
     coarsest: Csr,
     /// The Cholesky factor of the coarsest matrix (row-major, lower), 0 on pivots that were
-    /// not positive.
-    factor: Vec<f64>,
+    /// not positive; `None` for a coarsest level above [`DENSE_MAX`] rows (smoothed instead).
+    factor: Option<Vec<f64>>,
 }
 
 impl Multigrid {
@@ -937,7 +969,7 @@ impl Multigrid {
             let coarse = pt.times(&ap, count, true);
             levels.push(Level { a: std::mem::replace(&mut a, coarse), p, pt });
         }
-        let factor = cholesky(&a);
+        let factor = (a.rows() <= DENSE_MAX).then(|| cholesky(&a));
         Self { free, levels, coarsest: a, factor }
     }
 
@@ -956,61 +988,68 @@ impl Multigrid {
     /// gradients).
     fn cycle<const K: usize>(&self, level: usize, b: Vec<[f64; K]>) -> Vec<[f64; K]> {
         if level == self.levels.len() {
-            return solve_dense(&self.coarsest, &self.factor, &b);
+            return match &self.factor {
+                Some(l) => solve_dense(&self.coarsest, l, &b),
+                None => {
+                    let mut next = vec![[0.0; K]; b.len()];
+                    smooth(
+                        &self.coarsest,
+                        &b,
+                        jacobi_start(&self.coarsest, &b),
+                        &mut next,
+                        COARSE_SWEEPS - 1,
+                    )
+                }
+            };
         }
         let Level { a, p, pt } = &self.levels[level];
-        let n = a.rows();
-        // The first sweep from 0: x = ω D⁻¹ b.
-        let mut x: Vec<[f64; K]> = b
-            .par_iter()
-            .zip(a.diag.par_iter())
-            .map(|(bi, &d)| if d > 0.0 { bi.map(|v| OMEGA * v / d) } else { [0.0; K] })
-            .collect();
-        let mut next = vec![[0.0; K]; n];
-        // x' = x + ω D⁻¹ (b − A x), into the other buffer.
-        let sweep = |x: &[[f64; K]], out: &mut [[f64; K]]| {
-            out.par_chunks_mut(BLOCK).enumerate().for_each(|(blk, chunk)| {
-                for (o, xo) in chunk.iter_mut().enumerate() {
-                    let i = blk * BLOCK + o;
-                    let ax = a.row_times(i, x);
-                    let d = a.diag[i];
-                    *xo = if d > 0.0 {
-                        std::array::from_fn(|c| x[i][c] + OMEGA * (b[i][c] - ax[c]) / d)
-                    } else {
-                        x[i]
-                    };
-                }
-            });
-        };
-        for _ in 1..SWEEPS {
-            sweep(&x, &mut next);
-            std::mem::swap(&mut x, &mut next);
-        }
+        let mut next = vec![[0.0; K]; a.rows()];
+        let mut x = smooth(a, &b, jacobi_start(a, &b), &mut next, SWEEPS - 1);
         // The residual, restricted.
         next.par_chunks_mut(BLOCK).enumerate().for_each(|(blk, chunk)| {
-            for (o, ri) in chunk.iter_mut().enumerate() {
-                let i = blk * BLOCK + o;
-                let ax = a.row_times(i, &x);
-                *ri = std::array::from_fn(|c| b[i][c] - ax[c]);
-            }
+            a.rows_times(blk, &x, chunk, |i, ax, _| std::array::from_fn(|c| b[i][c] - ax[c]));
         });
         let mut bc = vec![[0.0; K]; pt.rows()];
         pt.apply(&next, &mut bc);
         let xc = self.cycle(level + 1, bc);
         x.par_chunks_mut(BLOCK).enumerate().for_each(|(blk, chunk)| {
-            for (o, xi) in chunk.iter_mut().enumerate() {
-                let corr = p.row_times(blk * BLOCK + o, &xc);
-                for c in 0..K {
-                    xi[c] += corr[c];
-                }
-            }
+            p.rows_times(blk, &xc, chunk, |_, corr, xi| std::array::from_fn(|c| xi[c] + corr[c]));
         });
-        for _ in 0..SWEEPS {
-            sweep(&x, &mut next);
-            std::mem::swap(&mut x, &mut next);
-        }
-        x
+        smooth(a, &b, x, &mut next, SWEEPS)
     }
+}
+
+/// The first damped Jacobi sweep on A x = b from x = 0: x = ω D⁻¹ b.
+fn jacobi_start<const K: usize>(a: &Csr, b: &[[f64; K]]) -> Vec<[f64; K]> {
+    b.par_iter()
+        .zip(a.diag.par_iter())
+        .map(|(bi, &d)| if d > 0.0 { bi.map(|v| OMEGA * v / d) } else { [0.0; K] })
+        .collect()
+}
+
+/// `sweeps` damped Jacobi sweeps x ← x + ω D⁻¹ (b − A x) from `x`, `next` a buffer of the same
+/// size.
+fn smooth<const K: usize>(
+    a: &Csr,
+    b: &[[f64; K]],
+    mut x: Vec<[f64; K]>,
+    next: &mut Vec<[f64; K]>,
+    sweeps: usize,
+) -> Vec<[f64; K]> {
+    for _ in 0..sweeps {
+        next.par_chunks_mut(BLOCK).enumerate().for_each(|(blk, chunk)| {
+            a.rows_times(blk, &x, chunk, |i, ax, _| {
+                let d = a.diag[i];
+                if d > 0.0 {
+                    std::array::from_fn(|c| x[i][c] + OMEGA * (b[i][c] - ax[c]) / d)
+                } else {
+                    x[i]
+                }
+            });
+        });
+        std::mem::swap(&mut x, next);
+    }
+    x
 }
 
 /// Aggregates of the matrix's graph (strong connections: |aᵢⱼ| ≥ 0.08 √(aᵢᵢ aⱼⱼ)): first
@@ -1368,6 +1407,37 @@ mod tests {
         for (q, xi) in p.iter().zip(&x) {
             let e = f(*q);
             assert!((xi[0] - e[0]).abs() < 1e-8 && (xi[1] - e[1]).abs() < 1e-8, "{xi:?} vs {e:?}");
+        }
+    }
+
+    /// A hierarchy whose coarsening stalls (here at once: two of the lattice's three colour
+    /// classes held, so no two free vertices are neighbours and no aggregate forms) above
+    /// [`DENSE_MAX`] rows smooths its coarsest level rather than factoring it, and still
+    /// preconditions the solve to the same answer as the diagonal.
+    #[test]
+    fn a_stalled_hierarchy_is_not_factored() {
+        let n = 80;
+        let (p, t) = lattice(n);
+        let topo = Topology::new(p.len(), &t).unwrap();
+        let mut lap = Laplacian::new(&topo, &t);
+        lap.set_cotangent_weights(&p, &t, None);
+        let fixed: Vec<bool> = (0..n * n).map(|k| (k / n + 2 * (k % n)) % 3 != 0).collect();
+        let free = fixed.iter().filter(|&&f| !f).count();
+        assert!(free > DENSE_MAX, "{free} free vertices");
+        let mg = Multigrid::new(&lap, Some(&fixed));
+        assert!(mg.levels.is_empty() && mg.factor.is_none(), "{} levels", mg.levels.len());
+        assert_eq!(mg.coarsest.rows(), free, "the coarsest level is the free rows");
+        let b: Vec<[f64; 2]> = (0..n * n).map(|k| [(k % 7) as f64 - 3.0, (k % 5) as f64]).collect();
+        let start: Vec<[f64; 2]> = p.iter().map(|q| [q.x, q.y]).collect();
+        let opts = CgOptions::new(1e-12, 1000);
+        let (mut x_mg, mut x_j) = (start.clone(), start);
+        let r_mg = lap.solve(Some(&fixed), &b, &mut x_mg, opts, Some(&mg)).unwrap();
+        let r_j = lap.solve(Some(&fixed), &b, &mut x_j, opts, None).unwrap();
+        assert!(r_mg.iterations <= r_j.iterations, "{r_mg:?} vs {r_j:?}");
+        for (a, c) in x_mg.iter().zip(&x_j) {
+            for k in 0..2 {
+                assert!((a[k] - c[k]).abs() < 1e-9 * (1.0 + c[k].abs()), "{a:?} vs {c:?}");
+            }
         }
     }
 

@@ -70,7 +70,7 @@ pub use fit::{
     ErrorMeasure, Fit, FitErrors, FitOptions, FitReport, MeshSource, Method, RowPoints,
     SourceImage, Stage, StageKind, fit,
 };
-pub use flat::{FlatImage, FlatQuality, FlatReport};
+pub use flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
 pub use image::{GeometryImage, MAX_TEXELS};
 pub use sections::{SectionFit, SectionOptions, fit_given_sections, fit_sections};
 pub use spherical::Layout;

@@ -38,14 +38,45 @@
 //! is the map's own anisotropy and area distortion (a long thin tube is not penalised for being
 //! long). First rounds of reweighting (Yoshizawa, Belyaev and Seidel 2004, "A fast and simple
 //! stretch-minimizing mesh parameterization"): each triangle's weight factor divided by its
-//! RMS stretch, then the same solve, warm-started (one multigrid hierarchy for all rounds);
-//! each round's map is again harmonic for positive weights, so again an embedding, and a
-//! round is kept only if it raises the L² stretch efficiency (the rounds end after one that
-//! gains less than 2 %: the next tends to overshoot). Then Newton moves of single vertices on
-//! the L² stretch (Sander, Snyder, Gortler and Hoppe 2001), which is a barrier against folds,
-//! as [`sphereparam`](crate::sphereparam) does on the sphere. The map from the surface to
-//! R²/Z² stays a bijection throughout (positively oriented triangles of total area 1 cover
-//! the torus once). The basis is reduced once more by the mean metric of the final map.
+//! RMS stretch, then the same solve, warm-started (a multigrid hierarchy built for each
+//! round's weights); each round's map is again harmonic for positive weights, so again an
+//! embedding, and a round is kept only if it raises the L² stretch efficiency (the rounds end
+//! after one that gains less than 2 %: the next tends to overshoot). The rounds' solves share
+//! a budget of six times the iterations of the harmonic map's (192 at least): a round that
+//! does not reach a map without folds within it is dropped and ends the rounds, the map kept
+//! the last bijection that lowered the stretch (see below). Then Newton moves of single
+//! vertices on the L² stretch (Sander, Snyder, Gortler and Hoppe 2001), which is a barrier
+//! against folds, as [`sphereparam`](crate::sphereparam) does on the sphere. The map from the
+//! surface to R²/Z² stays a bijection throughout (positively oriented triangles of total area
+//! 1 cover the torus once). The basis is reduced once more by the mean metric of the final
+//! map.
+//!
+//! **What a parameterisation costs, at most** (here and in [`discparam`](crate::discparam)).
+//! The bounds matter on the meshes the fit takes apart, the zero sets of scans: slivers, holes
+//! filled by fans of high valence, long thin parts. The harmonic map squeezes a long thin
+//! part (a finger of a ragged sheet, a tentacle of a torus) exponentially along its length,
+//! down to triangles 10⁻¹⁵ of the mean in area on a real scan, so that they fold at a
+//! tolerance of 10⁻⁸ and the solve is pushed on to 10⁻¹² or further; conjugate gradients
+//! preconditioned by multigrid (above 2000 free vertices) take a few iterations per decade of
+//! the residual at any size. Then:
+//! - the harmonic solve, fold tightening included, takes at most `max_iterations` iterations,
+//!   else it is an error (there is no map to fall back to); what it took is
+//!   [`FlatReport::harmonic_iterations`];
+//! - the reweighting rounds share a budget of six times as many iterations (192 at least),
+//!   each round's solve also capped by `max_iterations`. Each round builds a multigrid
+//!   hierarchy for its own weights: they change by up to 10³ per triangle and round, unevenly
+//!   where the map squeezes, and a hierarchy built for the first round's weights took a
+//!   hundred times the iterations (tens of thousands on the largest part of a scan's zero
+//!   set). A round whose solve does not reach a map without folds within what is left of the
+//!   budget is dropped, and ends the rounds;
+//! - however the rounds end ([`FlatReport::rounds_end`]), the map kept is the last that was a
+//!   bijection and lowered the stretch: the harmonic map, a bijection for positive weights, if
+//!   no round was kept;
+//! - the Newton sweeps are `sweeps` passes over the vertices, each move a line search of at
+//!   most 31 evaluations of the vertex's triangles (linear in its valence), and keep the map a
+//!   bijection (the stretch is a barrier);
+//! - the rest is about linear in the mesh's size (a disc's corners: at most 2²⁴ checks of a
+//!   placement against an edge that cuts the boundary, however long the boundary).
 //!
 //! **The image.** [`TorusParam::aspect`] is the rows/cols that makes texels square on the
 //! surface on average, √(∫|pᵤ|² / ∫|pᵥ|²) over the torus: for the conformal map
@@ -60,7 +91,7 @@ use crate::flat::{
     self, FlatMap, Freedom, RelaxSettings, Relaxation, count_folds, form_rhs, inverse, reduce,
     solve_until_embedded,
 };
-pub use crate::flat::{FlatImage, FlatQuality, FlatReport};
+pub use crate::flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
 use crate::laplace::{CgOptions, Laplacian, NONE, Topology, head};
 use crate::{Error, MAX_TEXELS};
 
@@ -69,7 +100,8 @@ use crate::{Error, MAX_TEXELS};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TorusParamOptions {
     /// Reweighting rounds at most (one Laplacian solve each; the rounds stop at the first
-    /// that does not lower the stretch, or after one that lowers it by less than 2 %).
+    /// that does not lower the stretch, after one that lowers it by less than 2 %, or at the
+    /// first whose solve runs out of the rounds' iteration budget, see `max_iterations`).
     /// Default 8; 0 with `sweeps` 0 keeps the harmonic map.
     pub rounds: usize,
     /// Newton sweeps over every vertex after the rounds. Default 2.
@@ -78,7 +110,10 @@ pub struct TorusParamOptions {
     /// to 10⁻¹⁴ while the map still folds; the relaxation rounds stop at 10⁻⁵ or this, if
     /// looser), in (0, 0.01]. Default 10⁻⁸.
     pub tolerance: f64,
-    /// Conjugate-gradient iterations at most per solve. Default 100 000.
+    /// Conjugate-gradient iterations at most for the harmonic map's solve, fold tightening
+    /// included (then an error), and for each reweighting round's; the rounds' solves share
+    /// at most six times what the harmonic map's took (192 at least), and a round that runs
+    /// out is dropped. Default 100 000.
     pub max_iterations: usize,
 }
 
@@ -310,7 +345,7 @@ pub fn parameterise_torus(
         let sign = dets.iter().sum::<f64>().signum();
         dets.iter().filter(|&&d| d * sign <= 0.0).count()
     };
-    let (mut iterations, mut residual) = solve_until_embedded(
+    let (harmonic_iterations, solved) = solve_until_embedded(
         &lap,
         Some(&fixed),
         &b,
@@ -318,7 +353,9 @@ pub fn parameterise_torus(
         cg,
         lap.preconditioner(Some(&fixed), cg).as_ref(),
         folds,
-    )?;
+    );
+    let mut residual = solved?.residual;
+    let mut iterations = harmonic_iterations;
     let mut map = FlatMap { uv: x.iter().map(|p| DVec2::from_array(*p)).collect(), offsets };
     let area: f64 = (0..triangles.len()).map(|f| 0.5 * flat::det(map.corners(triangles, f))).sum();
     if area < 0.0 {
@@ -355,7 +392,8 @@ pub fn parameterise_torus(
     apply_basis(&mut map, &mut form, basis);
     let (harmonic, _) = flat::quality(positions, triangles, &map, None);
     let relaxation = Relaxation::new(positions, triangles, &topology, vec![Freedom::Free; n], None);
-    let settings = RelaxSettings { rounds: options.rounds, sweeps: options.sweeps, cg };
+    let settings =
+        RelaxSettings { rounds: options.rounds, sweeps: options.sweeps, cg, harmonic_iterations };
     let done = relaxation.run(
         &mut lap,
         Some(&fixed),
@@ -387,8 +425,10 @@ pub fn parameterise_torus(
             harmonic,
             relaxed,
             rounds: done.rounds,
+            rounds_end: done.end,
             sweeps: done.sweeps,
             solve_iterations: iterations,
+            harmonic_iterations,
             solve_residual: residual,
         },
     })

@@ -99,3 +99,44 @@ pub(crate) fn torus(
     }
     (p, t)
 }
+
+/// The messy meshes the fit takes apart: the zero set of `f` sampled at the nodes of a grid of
+/// spacing `h` over the box from `lo` to `hi`, by surface nets, its largest part closed as
+/// `closing` asks (holes filled by fans of triangles, flagged) — irregular triangles,
+/// slivers, high-valence fans. `f(x, noise)` is given a noise value in [−½, ½) drawn for each
+/// node from `seed`; NaN where unknown ends the zero set there. Returns the vertices, the
+/// triangles and the filled flags.
+#[allow(dead_code, reason = "not every test file that shares this module builds a zero set")]
+pub(crate) fn zero_set(
+    f: &dyn Fn(DVec3, f64) -> f64,
+    lo: DVec3,
+    hi: DVec3,
+    h: f64,
+    closing: hi_scan::repair::Closing,
+    seed: u64,
+) -> (Vec<DVec3>, Vec<[u32; 3]>, Vec<bool>) {
+    let dims = [0, 1, 2].map(|k| ((hi[k] - lo[k]) / h).ceil() as usize + 1);
+    let mut state = seed;
+    let mut noise = || {
+        // SplitMix64.
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    let mut values = Vec::with_capacity(dims[0] * dims[1] * dims[2]);
+    for k in 0..dims[2] {
+        for j in 0..dims[1] {
+            for i in 0..dims[0] {
+                values.push(f(lo + DVec3::new(i as f64, j as f64, k as f64) * h, noise()));
+            }
+        }
+    }
+    let grid = hi_scan::surfacenets::Grid { origin: lo, spacing: h, dims, values: &values };
+    let (points, triangles) = hi_scan::surfacenets::surface_nets(&grid).unwrap();
+    let parts = hi_scan::repair::mesh_parts(&points, &triangles).unwrap();
+    let closed = hi_scan::repair::close_part(&parts.parts[0], closing).unwrap();
+    (closed.positions, closed.triangles, closed.filled)
+}
