@@ -57,7 +57,7 @@ use crate::regularise::{Regularisation, RegularisationReport, regularise};
 use crate::shrinkwrap::{ShrinkWrapImage, ShrinkWrapOptions, settle, shrink_wrap};
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
-use parts::{PlannedPart, part_image, plan};
+use parts::{PlannedPart, drop_fragments, part_image, plan};
 
 /// How the geometry image is made; see the module documentation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -727,20 +727,22 @@ fn point_sources(
         // walls of a thin part, or a cloud too sparse for its grid) is taken again on a coarser
         // grid.
         let mut planned = Err(hi_scan::Error::Degenerate { what: "no zero set" });
+        let mut fragments = (0, 0);
         for coarser in ZERO_SET_COARSER {
             planned = surface
                 .zero_set(coarser * CELL * surface.spacing())
                 .and_then(|(v, t)| mesh_parts(&v, &t))
-                .map(|parts| {
+                .map(|mut parts| {
+                    fragments = drop_fragments(&mut parts, &reps, PART_MIN_VERTICES);
                     plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
                 });
             if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {
                 break;
             }
         }
-        Ok((surface, planned))
+        Ok((surface, planned, fragments))
     })?;
-    let (mut surface, planned) = built;
+    let (mut surface, planned, fragments) = built;
     let (planned, dropped) = match planned {
         Ok((planned, dropped)) if kept(&planned) >= MIN_AREA_KEPT => (planned, dropped),
         outcome => {
@@ -834,6 +836,15 @@ fn point_sources(
         reason.push_str(&format!(" (from a summary of {} points)", reps.len()));
     }
     reason.push_str(&parts_sentence(&planned, &dropped));
+    if fragments.0 > 0 {
+        reason.push_str(&format!(
+            "; {} {} of the zero set with fewer than {PART_MIN_VERTICES} points nearest to {} left out ({} points in all, measured against the nearest part)",
+            fragments.0,
+            if fragments.0 == 1 { "fragment" } else { "fragments" },
+            if fragments.0 == 1 { "it" } else { "each" },
+            fragments.1,
+        ));
+    }
     Ok(Sources { parts: out, dropped, method: Method::ShrinkWrap, reason, image_points: reps })
 }
 

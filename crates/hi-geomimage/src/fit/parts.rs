@@ -17,6 +17,7 @@ use glam::DVec3;
 use hi_scan::repair::{
     ClosedMesh, Closing, MeshParts, Topology, close_part, part_topology, shortest_handle,
 };
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use super::source::MapQuality;
 use crate::discparam::{
@@ -219,6 +220,54 @@ pub(crate) fn plan(
     (planned, dropped)
 }
 
+/// Leaves out of a point set's zero set the parts fewer than `min_points` of the points are
+/// nearest to (a few cells where the points' signed distance crosses zero off their surface,
+/// between two sheets or over a stray point): not parts of the point set, which its own gaps
+/// split, but of the grid. Returns how many were left out and the points nearest to them; the
+/// rest keep their order. With one part there is nothing to do.
+pub(crate) fn drop_fragments(
+    parts: &mut MeshParts,
+    points: &[DVec3],
+    min_points: usize,
+) -> (usize, usize) {
+    if parts.parts.len() < 2 {
+        return (0, 0);
+    }
+    let (mut vertices, mut owner) = (Vec::new(), Vec::new());
+    for (k, part) in parts.parts.iter().enumerate() {
+        vertices.extend(part.positions.iter().map(|p| p.to_array()));
+        owner.extend(std::iter::repeat_n(k, part.positions.len()));
+    }
+    let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(&vertices)
+    else {
+        return (0, 0);
+    };
+    let nearest: Vec<usize> = points
+        .par_iter()
+        .map(|p| {
+            let n = tree.query(&p.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
+            owner[n.item as usize]
+        })
+        .collect();
+    let mut owned = vec![0usize; parts.parts.len()];
+    for k in nearest {
+        owned[k] += 1;
+    }
+    let mut k = 0;
+    let (mut fragments, mut stray) = (0, 0);
+    parts.parts.retain(|_| {
+        let n = owned[k];
+        k += 1;
+        if n >= min_points {
+            return true;
+        }
+        fragments += 1;
+        stray += n;
+        false
+    });
+    (fragments, stray)
+}
+
 /// A part's geometry image sampled from its parameterisation.
 #[derive(Clone, Debug)]
 pub(crate) struct PartImage {
@@ -312,4 +361,78 @@ pub(crate) fn outward_samples(parts: &[PlannedPart]) -> (Vec<DVec3>, Vec<DVec3>)
         normals.extend(hi_scan::implicit::vertex_normals(&p.closed.positions, &p.closed.triangles));
     }
     (positions, normals)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use hi_scan::repair::mesh_parts;
+
+    /// An octahedron of radius 1 about the origin and a tetrahedron of size 0.1 about (5, 0, 0):
+    /// two parts, the octahedron first (larger).
+    fn two_parts() -> MeshParts {
+        let mut p: Vec<DVec3> =
+            [DVec3::X, -DVec3::X, DVec3::Y, -DVec3::Y, DVec3::Z, -DVec3::Z].to_vec();
+        let mut t: Vec<[u32; 3]> = vec![
+            [0, 2, 4],
+            [2, 1, 4],
+            [1, 3, 4],
+            [3, 0, 4],
+            [2, 0, 5],
+            [1, 2, 5],
+            [3, 1, 5],
+            [0, 3, 5],
+        ];
+        let c = DVec3::new(5.0, 0.0, 0.0);
+        p.extend([c, c + 0.1 * DVec3::X, c + 0.1 * DVec3::Y, c + 0.1 * DVec3::Z]);
+        t.extend([[6, 8, 7], [6, 7, 9], [6, 9, 8], [7, 8, 9]]);
+        let parts = mesh_parts(&p, &t).unwrap();
+        assert_eq!(parts.parts.len(), 2);
+        assert_eq!(parts.parts[0].positions.len(), 6, "the octahedron first");
+        parts
+    }
+
+    /// Points on the octahedron's faces (barycentric grid on each): `per_face` each.
+    fn octahedron_points(per_face: usize) -> Vec<DVec3> {
+        let corners = [DVec3::X, DVec3::Y, DVec3::Z];
+        let mut out = Vec::new();
+        for sx in [-1.0, 1.0] {
+            for sy in [-1.0, 1.0] {
+                for sz in [-1.0, 1.0] {
+                    let s = DVec3::new(sx, sy, sz);
+                    for k in 0..per_face {
+                        let a = (k as f64 + 0.5) / per_face as f64;
+                        let b = 0.5 * (1.0 - a);
+                        out.push(
+                            s * (a * corners[k % 3]
+                                + b * corners[(k + 1) % 3]
+                                + b * corners[(k + 2) % 3]),
+                        );
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// A part fewer than `min_points` points are nearest to is a fragment of the grid, left
+    /// out and counted with its points; one with as many is a part of the point set, kept.
+    #[test]
+    fn fragments_are_parts_few_points_are_nearest_to() {
+        let mut points = octahedron_points(10);
+        points.push(DVec3::new(5.05, 0.02, 0.02));
+        let mut parts = two_parts();
+        assert_eq!(drop_fragments(&mut parts, &points, 12), (1, 1));
+        assert_eq!(parts.parts.len(), 1);
+        assert_eq!(parts.parts[0].positions.len(), 6, "the octahedron kept");
+        // Twelve points about the tetrahedron: a part of the point set.
+        points.extend((1..12).map(|k| DVec3::new(5.0 + 0.005 * k as f64, 0.03, 0.03)));
+        let mut parts = two_parts();
+        assert_eq!(drop_fragments(&mut parts, &points, 12), (0, 0));
+        assert_eq!(parts.parts.len(), 2);
+        // One part: nothing to do, whatever the points.
+        let mut one = two_parts();
+        one.parts.truncate(1);
+        assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), (0, 0));
+    }
 }
