@@ -15,8 +15,11 @@
 //!
 //! A scan of several parts (separate eyes, a lid, an aeroplane's wheels) gives a surface per
 //! part above the floor, each with its share of the texels; a part of genus 1 is fitted over
-//! the torus with no cut, an open sheet over the mirrored square (see [`parts`]). The ray
-//! methods fit the whole scan as one surface.
+//! the torus with no cut, an open sheet over the mirrored square (see [`parts`]). A point set's
+//! parts are those of its zero set that at least [`PART_MIN_VERTICES`] of its points are
+//! nearest to: the rest are fragments of the grid (a few cells where the signed distance
+//! crosses zero off the surface), counted in [`FitReport::method_reason`]. The ray methods fit
+//! the whole scan as one surface.
 //!
 //! Then, per part, the thesis's optional Gaussian smoothing, the regularisation
 //! ([`Regularisation`]: by default, for images made from points, a thin-plate penalty weighed
