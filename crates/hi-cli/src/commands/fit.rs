@@ -349,11 +349,12 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     } else {
         // The meshes the error was measured on, or the same made now.
         let mut meshes = Vec::with_capacity(fitted.parts.len());
-        for part in &mut fitted.parts {
+        for (k, part) in fitted.parts.iter_mut().enumerate() {
             let mesh = match part.mesh.take() {
                 Some(m) => m.mesh,
                 None => {
-                    let per_texel = mesh_oversample(&part.surface);
+                    let share = fitted.report.parts.get(k).map_or(1.0, |r| r.area_fraction);
+                    let per_texel = mesh_oversample(&part.surface, share);
                     let per_texel = if part.domain == Domain::Sphere(Layout::Octahedron) {
                         per_texel.next_multiple_of(2)
                     } else {

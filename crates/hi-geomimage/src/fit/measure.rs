@@ -51,7 +51,13 @@ pub fn measure_fit(
     triangles: &[[u32; 3]],
     measure: ErrorMeasure,
 ) -> Result<(FitErrors, LayoutMesh), Error> {
-    let part = Measured { surface, domain: domain.into(), filled, texels_on_scan: false };
+    let part = Measured {
+        surface,
+        domain: domain.into(),
+        area_fraction: 1.0,
+        filled,
+        texels_on_scan: false,
+    };
     let (all, _, mut meshes) = measure_parts(&[part], points, triangles, measure)?;
     let mesh = meshes.pop().ok_or(Error::InvalidOption {
         name: "parts",
@@ -68,6 +74,8 @@ pub(crate) struct Measured<'a> {
     pub(crate) surface: &'a HarmonicSurface<DVec3>,
     /// Its domain.
     pub(crate) domain: Domain,
+    /// Its share of the scan's area (see [`mesh_oversample`]).
+    pub(crate) area_fraction: f64,
     /// The texels of its grid that bridge holes, if known.
     pub(crate) filled: Option<&'a [bool]>,
     /// Whether its texels are points of the scan's triangles (an unsmoothed image of a mesh's
@@ -145,7 +153,7 @@ pub(crate) fn measure_parts(
                 });
             }
             ErrorMeasure::Sampled(k) => k.max(1),
-            _ => mesh_oversample(part.surface),
+            _ => mesh_oversample(part.surface, part.area_fraction),
         };
         if let Some(f) = part.filled
             && f.len() != part.surface.m() * part.surface.n()

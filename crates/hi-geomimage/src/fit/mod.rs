@@ -408,14 +408,26 @@ impl Fit {
     }
 }
 
-/// The number of mesh samples per texel along each axis for the mesh of a fitted surface
-/// (and its error measured with [`ErrorMeasure::Fast`]): enough for at least 192 samples
-/// around the longer axis, so that a coarse image still gives a mesh that follows its surface,
-/// and 1 from 192² up, where the texels are as close as the scan's points.
+/// The number of mesh samples per texel along each axis for the mesh of a fitted part that
+/// holds `area_fraction` of the scan's area (and its error measured with
+/// [`ErrorMeasure::Fast`]): enough for at least 192 · `area_fraction`^¼ samples around the
+/// longer axis (192 for the whole scan), so that a coarse image still gives a mesh that follows
+/// its surface, and 1 from there up, where the texels are as close as the scan's points. A mesh
+/// of N samples across a part of size s strays from the surface by about s / N² (a chord over
+/// curvature 1/s); a part of a fraction a of the area has s ∝ √a, so N ∝ a^¼ strays as far, as
+/// a share of the scan's size, as the whole scan's mesh (a wheel of 0.1 % of an aeroplane's
+/// area gets 34 samples around, not 192).
 #[must_use]
-pub fn mesh_oversample(surface: &HarmonicSurface<DVec3>) -> usize {
-    192usize.div_ceil(surface.m().max(surface.n()).max(1)).max(1)
+pub fn mesh_oversample(surface: &HarmonicSurface<DVec3>, area_fraction: f64) -> usize {
+    let share = if area_fraction.is_finite() { area_fraction.clamp(1e-6, 1.0) } else { 1.0 };
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "in [1, 192]")]
+    let around = (MESH_SAMPLES as f64 * share.powf(0.25)).ceil().max(1.0) as usize;
+    around.div_ceil(surface.m().max(surface.n()).max(1)).max(1)
 }
+
+/// Mesh samples around the longer axis of the whole scan's surface, at least
+/// ([`mesh_oversample`]).
+const MESH_SAMPLES: usize = 192;
 
 /// A part of the scan with less than this share of its area is not fitted (it is named in
 /// [`FitReport::dropped_parts`]): loose scraps and specks.
@@ -1113,6 +1125,7 @@ fn measure_error(
                 .map(|((p, s), f)| measure::Measured {
                     surface: &s.surface,
                     domain: p.domain,
+                    area_fraction: p.area_fraction,
                     filled: f.as_deref(),
                     // An image of a mesh's parameterisation left as it was sampled has its
                     // texels on the scan's triangles.
