@@ -13,7 +13,7 @@ use hi_geomimage::discparam::{
 use hi_geomimage::{Error, NonFiniteInput};
 
 mod common;
-use common::{icosphere, zero_set};
+use common::{assert_within_budget, icosphere, max_valence, zero_set};
 
 /// A small deterministic generator (`SplitMix64`), uniform in [0, 1).
 struct Rng(u64);
@@ -629,13 +629,7 @@ fn messy_sheet(h: f64) -> (Vec<DVec3>, Vec<[u32; 3]>, Vec<bool>) {
 #[test]
 fn a_messy_sheet_maps_within_its_iteration_budget() {
     let (p, t, filled) = messy_sheet(0.03);
-    let mut valence = vec![0usize; p.len()];
-    for tri in &t {
-        for &k in tri {
-            valence[k as usize] += 1;
-        }
-    }
-    let most = valence.iter().copied().max().unwrap_or(0);
+    let most = max_valence(p.len(), &t);
     println!("messy sheet: {} vertices, valence up to {most}", p.len());
     assert!(p.len() > 5000, "multigrid: {} vertices", p.len());
     assert!(filled.iter().any(|&f| f) && most >= 20, "filled holes");
@@ -643,12 +637,7 @@ fn a_messy_sheet_maps_within_its_iteration_budget() {
     let param = parameterise_disc(&p, &t, &filled, &DiscParamOptions::default()).unwrap();
     let (h, r) = (harmonic.report(), param.report());
     println!("messy sheet: harmonic {h:?}\nmessy sheet: relaxed {r:?}");
-    assert_eq!(h.solve_iterations, h.harmonic_iterations, "the harmonic map alone");
-    assert_eq!(r.harmonic_iterations, h.harmonic_iterations, "the same harmonic solve");
-    assert!(h.harmonic_iterations <= 60, "{h:?}");
-    let budget = (6 * r.harmonic_iterations).max(192);
-    assert!(r.solve_iterations <= r.harmonic_iterations + budget, "{r:?}");
-    assert!(r.rounds <= 8 && r.sweeps == 2, "{r:?}");
+    assert_within_budget(&h, &r);
     for (name, m) in [("harmonic", &harmonic), ("relaxed", &param)] {
         assert_eq!(m.quality().folded_triangles, 0, "{name}");
         let mut area = 0.0;
@@ -660,7 +649,6 @@ fn a_messy_sheet_maps_within_its_iteration_budget() {
         }
         assert!((area - 1.0).abs() < 1e-9, "{name}: (u, v) area {area}");
     }
-    assert!(r.relaxed.stretch_efficiency >= r.harmonic.stretch_efficiency, "{r:?}");
 }
 
 /// Timings of large hemispheres, the best of five runs each (run with `--ignored --nocapture`,

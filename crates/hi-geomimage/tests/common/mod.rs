@@ -140,3 +140,30 @@ pub(crate) fn zero_set(
     let closed = hi_scan::repair::close_part(&parts.parts[0], closing).unwrap();
     (closed.positions, closed.triangles, closed.filled)
 }
+
+/// The most triangles at one vertex.
+#[allow(dead_code, reason = "not every test file that shares this module builds a zero set")]
+pub(crate) fn max_valence(vertices: usize, triangles: &[[u32; 3]]) -> usize {
+    let mut valence = vec![0usize; vertices];
+    for tri in triangles {
+        for &k in tri {
+            valence[k as usize] += 1;
+        }
+    }
+    valence.into_iter().max().unwrap_or(0)
+}
+
+/// The iteration budgets of a flat parameterisation, from the reports of its harmonic map
+/// `h` alone and relaxed `r` (same mesh): the harmonic solve in tens of multigrid iterations,
+/// the relaxation's rounds within six times as many (192 at least), and a relaxation that
+/// does not lower the stretch efficiency.
+#[allow(dead_code, reason = "not every test file that shares this module parameterises flat")]
+pub(crate) fn assert_within_budget(h: &hi_geomimage::FlatReport, r: &hi_geomimage::FlatReport) {
+    assert_eq!(h.solve_iterations, h.harmonic_iterations, "the harmonic map alone");
+    assert_eq!(r.harmonic_iterations, h.harmonic_iterations, "the same harmonic solve");
+    assert!(h.harmonic_iterations <= 60, "{h:?}");
+    let budget = (6 * r.harmonic_iterations).max(192);
+    assert!(r.solve_iterations <= r.harmonic_iterations + budget, "{r:?}");
+    assert!(r.rounds <= 8 && r.sweeps == 2, "{r:?}");
+    assert!(r.relaxed.stretch_efficiency >= r.harmonic.stretch_efficiency, "{r:?}");
+}
