@@ -9,7 +9,8 @@
 //! surface. Then:
 //!
 //! 1. **The start**: the zero set of the signed height over the nearest point's patch (Hoppe et
-//!    al.'s signed distance), meshed by [`hi_scan::surfacenets`] on a grid of 1.5 point spacings,
+//!    al.'s signed distance), meshed by [`hi_scan::surfacenets`] on a grid of 1.5 point spacings
+//!    (of the spacing of the scan's denser parts, [`PointSurface::fine_spacing`]),
 //!    evaluated only near the points and only where a node's foot on the tangent plane is near
 //!    its point, so that the surface ends at the rims of the scan's holes. That mesh is closed
 //!    by [`hi_scan::repair::close_mesh`] (its holes bridged) and parameterised over the sphere
@@ -24,9 +25,11 @@
 //!    texels farther than four point spacings from every point, stay where they are and are
 //!    flagged [`ShrinkWrapImage::filled`].
 //! 3. **The pull**: a point the surface passed by (more than 0.75 spacings off it along the
-//!    normal of its nearest texel, within one spacing of that normal's line, its patch facing
-//!    the same way, and within three spacings, beyond which it is taken for an outlier) pulls
-//!    that texel onto it. This reaches into creases and slits narrower than the grid of step
+//!    normal of its nearest texel, which lies within three spacings, beyond which the point is
+//!    taken for an outlier) pulls onto it the one of its four nearest texels whose normal's line
+//!    passes nearest to it, within one spacing, its patch facing the same way (the nearest
+//!    texel may lie beside a crease, its normal missing the point). This reaches into creases
+//!    and slits narrower than the grid of step
 //!    1, whose zero set bridges them; the count is [`ShrinkWrapImage::pulled`].
 //!
 //! Should the start fail (the zero set not of genus 0, or the points too sparse for a grid),
@@ -43,9 +46,11 @@
 //! surface through them is accurate where they are dense; [`crate::fit()`] then regularises it to
 //! the points' noise level.
 
+use std::num::NonZero;
+
 use crate::par::*;
 use glam::DVec3;
-use hi_scan::implicit::{CELL, PointSurface, vertex_normals};
+use hi_scan::implicit::{MovingLeastSquares, PointSurface, vertex_normals};
 use hi_scan::repair::ClosedMesh;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
@@ -276,11 +281,39 @@ pub(crate) fn settle(
     Settled { texels: x, filled, filled_fraction, rms_move, pulled }
 }
 
-/// The zero set of the points' signed distance on a grid of [`CELL`] point spacings
-/// ([`PointSurface::zero_set`]), its holes closed and the whole made genus 0 by
+/// Moves every texel of a `rows × cols` image over `domain` not flagged `filled` to its
+/// moving least-squares projection onto the points of `mls` along its normal across the grid
+/// ([`MovingLeastSquares::project`], the points within `band` of its tangent plane), by at most
+/// `band`; a texel whose projection fails stays. The image's copies of a texel follow it.
+pub(crate) fn refine(
+    mls: &MovingLeastSquares<'_>,
+    x: &mut [DVec3],
+    filled: &[bool],
+    domain: Domain,
+    (rows, cols): (usize, usize),
+    band: f64,
+) {
+    let owner = domain.owners(rows, cols);
+    let normals = grid_normals(x, rows, cols);
+    let moved: Vec<DVec3> = (0..rows * cols)
+        .into_par_iter()
+        .map(|t| {
+            if owner[t] != t || filled[t] {
+                return x[t];
+            }
+            mls.project(x[t], normals[t], band).filter(|q| q.distance(x[t]) <= band).unwrap_or(x[t])
+        })
+        .collect();
+    for (t, texel) in x.iter_mut().enumerate() {
+        *texel = moved[owner[t]];
+    }
+}
+
+/// The zero set of the points' signed distance on the grid of
+/// [`PointSurface::zero_set_cell`] ([`PointSurface::zero_set`]), its holes closed and the whole made genus 0 by
 /// [`hi_scan::repair::close_mesh`].
 fn implicit_surface(patches: &PointSurface) -> Result<ClosedMesh, Error> {
-    let (positions, triangles) = patches.zero_set(CELL * patches.spacing())?;
+    let (positions, triangles) = patches.zero_set(patches.zero_set_cell())?;
     Ok(hi_scan::repair::close_mesh(&positions, &triangles)?)
 }
 
@@ -315,11 +348,15 @@ const PULL_SIDE: f64 = 1.0;
 /// nothing.
 const PULL_UNTIL: f64 = 3.0;
 
+/// Texels nearest to a point that it may pull ([`pull`]).
+const PULL_CANDIDATES: NonZero<usize> = NonZero::new(4).unwrap();
+
 /// Step 3 of the module documentation: each point the surface `x` left more than [`PULL_FROM`]
-/// spacings off it, along the normal of the point's nearest texel (not flagged `filled`), and
-/// within [`PULL_SIDE`] spacings of that normal's line, whose patch faces the texel's way and
-/// which is within [`PULL_UNTIL`] spacings, pulls the texel onto it (onto the mean of the points
-/// pulling it, its mirror with it). Returns the number of texels moved.
+/// spacings off it, along the normal of its nearest texel (not flagged `filled`), pulls the
+/// one of its [`PULL_CANDIDATES`] nearest texels whose normal's line passes nearest to it
+/// (within [`PULL_SIDE`] spacings, the point's patch facing the texel's way) onto it, if its
+/// nearest texel is within [`PULL_UNTIL`] spacings (onto the mean of the points pulling it, its
+/// mirror with it). Returns the number of texels moved.
 fn pull(
     patches: &PointSurface,
     points: &[DVec3],
@@ -342,16 +379,30 @@ fn pull(
         .par_iter()
         .enumerate()
         .map(|(k, p)| {
-            let near = tree.query(&p.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
-            let t = *owners.get(near.item as usize)?;
-            let (v, n) = (*p - x[t], normals[t]);
-            let off = v.dot(n);
-            let side = (v - n * off).length();
-            (off.abs() > PULL_FROM * spacing
-                && side <= PULL_SIDE * spacing
-                && near.distance.sqrt() < PULL_UNTIL * spacing
-                && patches.normal(k).dot(n) > 0.0)
-                .then_some((t, *p))
+            // The surface passed the point by: it lies off the nearest texel's tangent plane.
+            // Of the nearest few texels, the one whose normal's line passes closest to the
+            // point moves onto it (the nearest alone may lie beside the crease, its normal
+            // missing the point).
+            let near = tree
+                .query(&p.to_array())
+                .nearest_n::<SquaredEuclidean<f64>>(PULL_CANDIDATES)
+                .execute();
+            let first = near.first()?;
+            let t = *owners.get(first.item as usize)?;
+            let off = (*p - x[t]).dot(normals[t]);
+            if off.abs() <= PULL_FROM * spacing || first.distance.sqrt() >= PULL_UNTIL * spacing {
+                return None;
+            }
+            near.iter()
+                .filter_map(|near| {
+                    let t = *owners.get(near.item as usize)?;
+                    let (v, n) = (*p - x[t], normals[t]);
+                    let side = (v - n * v.dot(n)).length();
+                    (side <= PULL_SIDE * spacing && patches.normal(k).dot(n) > 0.0)
+                        .then_some((side, t))
+                })
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .map(|(_, t)| (t, *p))
         })
         .collect();
     let mut sum = vec![(DVec3::ZERO, 0u32); rows * cols];

@@ -64,10 +64,25 @@ pub struct PointSurface {
     tree: ImmutableKdTree<f64, 3>,
     patches: Vec<Patch>,
     spacing: f64,
+    fine: f64,
 }
 
 /// The neighbours whose disc gives a point's spacing ([`PointSurface::spacing`]).
 const SPACING_NEIGHBOURS: usize = 8;
+
+/// The ratio of the 10th percentile of the spacings of points scattered at random over a
+/// surface to their median (measured on uniform random samples of meshes: 0.77–0.78).
+const RANDOM_TENTH: f64 = 0.78;
+
+/// [`PointSurface::fine_spacing`] is at least this fraction of the median spacing.
+const FINE_MIN: f64 = 0.5;
+
+/// A point set whose denser tenth is spaced at least this fraction of a random sample's (the
+/// 10th percentile of its spacings over 0.78 of their median) is evenly dense: its zero set's
+/// grid follows the median spacing. Scanners' point sets lie at 0.85–0.93 (their density
+/// varies with the angle of view, not with the detail); meshes' vertices, dense where the mesh
+/// has detail, at 0.3–0.7.
+const EVEN: f64 = 0.8;
 
 /// Patches blended per projection.
 const BLEND: usize = 3;
@@ -162,6 +177,9 @@ impl PointSurface {
         let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
         spacings.sort_by(f64::total_cmp);
         let spacing = spacings[spacings.len() / 2].max(f64::MIN_POSITIVE);
+        // The denser tenth against a random sample's: evenly dense above EVEN.
+        let evenness = spacings[spacings.len() / 10] / (RANDOM_TENTH * spacing);
+        let fine = if evenness >= EVEN { spacing } else { evenness.max(FINE_MIN) * spacing };
         let mut patches: Vec<Patch> = fitted.into_iter().map(|f| f.0).collect();
         if given.is_none() {
             // A first guess: away from the centroid (corrected by `orient` once a surface is
@@ -173,7 +191,7 @@ impl PointSurface {
                 }
             }
         }
-        Ok(Self { tree, patches, spacing })
+        Ok(Self { tree, patches, spacing, fine })
     }
 
     /// The points' spacing: the median over the points of r/√2, r the distance to a point's
@@ -184,6 +202,26 @@ impl PointSurface {
     #[must_use]
     pub const fn spacing(&self) -> f64 {
         self.spacing
+    }
+
+    /// The spacing of the points' denser parts: the 10th percentile of the points' own
+    /// spacings over its ratio to the median for points scattered at random (0.78), at least
+    /// half the median [`PointSurface::spacing`]; the median itself for a point set that is
+    /// evenly dense (that ratio at least 0.8 of the median: a scanner's points, whose density
+    /// varies with the angle of view). For a mesh's vertices, dense where the mesh has detail
+    /// (a hand, an ear, a thin fin) and sparse on its broad faces, it is the spacing of the
+    /// detail, so that the zero set's grid ([`PointSurface::zero_set_cell`]) resolves parts
+    /// thinner than the median spacing.
+    #[must_use]
+    pub const fn fine_spacing(&self) -> f64 {
+        self.fine
+    }
+
+    /// The grid spacing at which [`PointSurface::zero_set`] follows every detail the points
+    /// resolve: [`CELL`] times [`PointSurface::fine_spacing`].
+    #[must_use]
+    pub fn zero_set_cell(&self) -> f64 {
+        CELL * self.fine
     }
 
     /// The number of points (and patches).
@@ -350,12 +388,16 @@ fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
     let e1 = normal.any_orthonormal_vector();
     let e2 = normal.cross(e1);
     let h2 = hood.iter().map(|q| q.distance_squared(p)).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
+    // In units of the neighbourhood's radius, so that the six columns are of one size whatever
+    // the scan's units (in metres, a quadric term of a millimetre's neighbourhood is 10⁻⁶ of
+    // the constant one, and the system would look singular).
+    let radius = h2.sqrt();
     let mut ata = [[0.0f64; 6]; 6];
     let mut atb = [0.0f64; 6];
     for q in hood {
-        let d = *q - p;
+        let d = (*q - p) / radius;
         let (x, y, h) = (d.dot(e1), d.dot(e2), d.dot(normal));
-        let w = (-d.length_squared() / h2).exp();
+        let w = (-d.length_squared()).exp();
         let r = [1.0, x, y, x * x, x * y, y * y];
         for i in 0..6 {
             for j in 0..6 {
@@ -364,7 +406,10 @@ fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
             atb[i] += w * r[i] * h;
         }
     }
-    let c = crate::noise::solve6(ata, atb).unwrap_or([0.0; 6]);
+    // Back to the scan's units: h = R·H(x/R, y/R).
+    let c = crate::noise::solve6(ata, atb).map_or([0.0; 6], |c| {
+        [c[0] * radius, c[1], c[2], c[3] / radius, c[4] / radius, c[5] / radius]
+    });
     Patch { origin: p, e1, e2, normal, c, local: 0.0 }
 }
 
@@ -457,7 +502,12 @@ impl PointSurface {
             .iter()
             .map(|p| p.origin)
             .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
-        let pad = (MAX_BAND + 2) as f64 * h;
+        // The band about a point reaches MAX_BAND cells, or as far as MAX_BAND cells of the
+        // grid of the median spacing where this one is finer (up to four times as many).
+        #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
+        let max_band = ((MAX_BAND as f64 * CELL * self.spacing / h).ceil().min(1e3) as usize)
+            .clamp(MAX_BAND, 4 * MAX_BAND);
+        let pad = (max_band + 2) as f64 * h;
         let origin = lo - DVec3::splat(pad);
         #[expect(
             clippy::cast_possible_truncation,
@@ -480,7 +530,7 @@ impl PointSurface {
             #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
             let c = ((p - origin) / h).floor().to_array().map(|x| x as isize);
             #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
-            let b = ((1.5 * patch.local / h).ceil() as usize).clamp(BAND, MAX_BAND) as isize;
+            let b = ((1.5 * patch.local / h).ceil() as usize).clamp(BAND, max_band) as isize;
             for dk in -b..=b + 1 {
                 for dj in -b..=b + 1 {
                     for di in -b..=b + 1 {
@@ -521,6 +571,85 @@ impl PointSurface {
             dims,
             values: &values,
         })
+    }
+}
+
+/// The points themselves, for a moving least-squares projection (Levin, "Mesh-independent
+/// surface interpolation", 2003; Alexa et al., "Computing and rendering point set surfaces",
+/// 2003): a point x with a normal n goes to the height over its own tangent plane of the
+/// quadric fitted to its nearest points, weighted by a Gaussian of their distance. Where
+/// [`PointSurface::project`] blends patches fitted once about the points (or about a summary
+/// of them), this fits afresh about every point projected, to the points as they are.
+#[derive(Debug)]
+pub struct MovingLeastSquares<'a> {
+    tree: ImmutableKdTree<f64, 3>,
+    points: &'a [DVec3],
+}
+
+/// Points fitted per projection by [`MovingLeastSquares::project`].
+pub const MLS_NEIGHBOURS: usize = 16;
+
+/// Points within the band that a fit of [`MovingLeastSquares::project`] needs, at least.
+const MLS_MIN: usize = 8;
+
+impl<'a> MovingLeastSquares<'a> {
+    /// The projector onto the surface of `points`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NonFinite`] for a non-finite point; [`Error::TooFewPoints`] for fewer than
+    /// [`MLS_NEIGHBOURS`].
+    pub fn try_new(points: &'a [DVec3]) -> Result<Self, Error> {
+        if let Some(k) = points.iter().position(|p| !p.is_finite()) {
+            return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
+        }
+        if points.len() < MLS_NEIGHBOURS {
+            return Err(Error::TooFewPoints { found: points.len(), needed: MLS_NEIGHBOURS });
+        }
+        let tree = ImmutableKdTree::new_from_slice(crate::distance::as_arrays(points))
+            .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
+        Ok(Self { tree, points })
+    }
+
+    /// The projection of `x` along its unit `normal`: the height at x's foot of the quadric
+    /// h(u, v) fitted by weighted least squares, over the plane through x across `normal`, to
+    /// those of its [`MLS_NEIGHBOURS`] nearest points whose height over that plane is within
+    /// `band` (the points of another sheet, across a part thinner than that, left out); `None`
+    /// when fewer than 8 are, or the fit is degenerate.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_scan::implicit::MovingLeastSquares;
+    ///
+    /// // Points on the paraboloid z = x² + y²: a point above it goes onto it.
+    /// let points: Vec<DVec3> = (0..441)
+    ///     .map(|k| {
+    ///         let (x, y) = ((k % 21) as f64 * 0.05 - 0.5, (k / 21) as f64 * 0.05 - 0.5);
+    ///         DVec3::new(x, y, x * x + y * y)
+    ///     })
+    ///     .collect();
+    /// let mls = MovingLeastSquares::try_new(&points).unwrap();
+    /// let q = mls.project(DVec3::new(0.1, 0.05, 0.06), DVec3::Z, 0.1).unwrap();
+    /// assert!((q - DVec3::new(0.1, 0.05, 0.0125)).length() < 1e-9);
+    /// ```
+    #[must_use]
+    pub fn project(&self, x: DVec3, normal: DVec3, band: f64) -> Option<DVec3> {
+        let normal = normal.try_normalize()?;
+        let k = NonZero::new(MLS_NEIGHBOURS).unwrap_or(NonZero::<usize>::MIN);
+        let near = self.tree.query(&x.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+        let hood: Vec<DVec3> = near
+            .iter()
+            .map(|n| self.points[n.item as usize])
+            .filter(|q| (*q - x).dot(normal).abs() <= band)
+            .collect();
+        if hood.len() < MLS_MIN {
+            return None;
+        }
+        let patch = fit_patch(x, normal, &hood);
+        // The patch's frame is x's: its height at the foot is c₀.
+        Some(x + normal * patch.c[0])
     }
 }
 

@@ -4,11 +4,17 @@
 //!
 //! About each of up to 2 000 points spread over the scan, its k = 24 nearest neighbours are
 //! fitted, in the frame of their principal axes, by a quadric height field
-//! h(x, y) = a + bx + cy + dx² + exy + fy² (least squares); the residual's root mean square,
-//! corrected for the six fitted parameters (× √(k / (k − 6))), is that neighbourhood's noise.
-//! The scan's estimate is the median over the neighbourhoods, which ignores the few that
-//! straddle an edge or two sheets. A quadric absorbs the surface's curvature, so a clean
-//! sample of a smooth surface gives nearly 0, whatever its density.
+//! h(x, y) = a + bx + cy + dx² + exy + fy² (least squares), and so are its 12 nearest alone;
+//! the residual's root mean square, corrected for the six fitted parameters
+//! (× √(k / (k − 6))), is that neighbourhood's scatter at each scale. Each scale's median over
+//! the neighbourhoods (which ignores the few that straddle an edge or two sheets), divided by
+//! the median of √(χ²ᵥ/ν) for ν = k − 6 degrees of freedom (Wilson–Hilferty), estimates
+//! σ² + mₖ², where σ is the noise and mₖ the part of the surface no quadric follows: its
+//! third-order terms, whose residual grows as r³ with the neighbourhood's radius r ∝ √k, so
+//! that m₂₄² = 8 m₁₂². The two scales eliminate it: σ² = (8 s₁₂² − s₂₄²) / 7, clamped to
+//! [0, s₁₂²]. A clean sample of a smooth surface thus gives nearly 0 however sparse it is (a
+//! quadric over 24 points of a mesh's few thousand vertices misses the curvature by far more
+//! than its rounding), and a noisy one its noise.
 
 use std::num::NonZero;
 
@@ -16,15 +22,19 @@ use crate::par::*;
 use glam::{DMat3, DVec3};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
-/// Neighbours per local fit.
+/// Neighbours per local fit, at the larger scale.
 const K: usize = 24;
+
+/// Neighbours per local fit, at the smaller scale.
+const K_SMALL: usize = 12;
 
 /// Neighbourhoods examined at most.
 const SAMPLES: usize = 2000;
 
-/// The scan's noise: the median over neighbourhoods of the scatter of points about a local
-/// quadric (see the module documentation), in the units of the points; 0 for fewer than
-/// K = 24 points or a scan with no neighbourhood that can be fitted.
+/// The scan's noise: the scatter of its points about a local quadric at two scales, the
+/// surface's own departure from a quadric eliminated between them (see the module
+/// documentation), in the units of the points; 0 for fewer than K = 24 points or a scan with
+/// no neighbourhood that can be fitted.
 ///
 /// # Examples
 ///
@@ -32,16 +42,23 @@ const SAMPLES: usize = 2000;
 /// use glam::DVec3;
 /// use hi_scan::noise::noise_estimate;
 ///
-/// // A sphere of radius 1 sampled cleanly, and with noise ±0.01 along the normal.
+/// // A sphere of radius 1 sampled cleanly, and with Gaussian noise of σ = 0.01 along the
+/// // normal (Box–Muller on a linear congruential sequence).
 /// let n = 20_000;
-/// let points = |amp: f64| -> Vec<DVec3> {
+/// let mut seed = 1u64;
+/// let mut uniform = move || {
+///     seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+///     ((seed >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+/// };
+/// let mut points = |sigma: f64| -> Vec<DVec3> {
 ///     (0..n)
 ///         .map(|k| {
 ///             let z = 1.0 - (2 * k + 1) as f64 / n as f64;
 ///             let phi = k as f64 * 2.399_963_229_728_653;
 ///             let s = (1.0 - z * z).sqrt();
-///             let wobble = amp * if k % 2 == 0 { 1.0 } else { -1.0 };
-///             DVec3::new(s * phi.cos(), s * phi.sin(), z) * (1.0 + wobble)
+///             let (u, v) = (uniform(), uniform());
+///             let gaussian = (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos();
+///             DVec3::new(s * phi.cos(), s * phi.sin(), z) * (1.0 + sigma * gaussian)
 ///         })
 ///         .collect()
 /// };
@@ -61,22 +78,41 @@ pub fn noise_estimate(points: &[DVec3]) -> f64 {
     };
     let k = NonZero::new(K).unwrap_or(NonZero::<usize>::MIN);
     let step = points.len().div_ceil(SAMPLES).max(1);
-    let mut noise: Vec<f64> = (0..points.len())
+    let (mut small, mut large): (Vec<f64>, Vec<f64>) = (0..points.len())
         .step_by(step)
         .collect::<Vec<_>>()
         .par_iter()
         .filter_map(|&i| {
             let near =
                 tree.query(&points[i].to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+            // Nearest first.
             let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
-            quadric_residual(&hood)
+            Some((quadric_residual(&hood[..K_SMALL])?, quadric_residual(&hood)?))
         })
-        .collect();
-    if noise.is_empty() {
+        .unzip();
+    if small.is_empty() {
         return 0.0;
     }
-    noise.sort_by(f64::total_cmp);
-    noise[noise.len() / 2]
+    let s_small = median(&mut small) / chi_median_ratio(K_SMALL - 6);
+    let s_large = median(&mut large) / chi_median_ratio(K - 6);
+    // σ² + m² at each scale, m₂₄² = 8 m₁₂² (the module documentation).
+    let ratio = ((K as f64) / (K_SMALL as f64)).powi(3);
+    let sigma2 = (ratio * s_small * s_small - s_large * s_large) / (ratio - 1.0);
+    sigma2.clamp(0.0, s_small * s_small).sqrt()
+}
+
+/// The median of `values` (reordered), which must not be empty.
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
+/// The median of √(χ²ᵥ/ν), the ratio of a sample's root mean square residual with ν degrees of
+/// freedom to σ at its median, by the Wilson–Hilferty approximation of χ²ᵥ's median,
+/// ν (1 − 2/(9ν))³.
+fn chi_median_ratio(nu: usize) -> f64 {
+    let nu = nu.max(1) as f64;
+    (1.0 - 2.0 / (9.0 * nu)).powi(3).sqrt()
 }
 
 /// The corrected RMS residual of the least-squares quadric height field through `hood`, over
@@ -92,12 +128,18 @@ fn quadric_residual(hood: &[DVec3]) -> Option<f64> {
     let normal = smallest_eigenvector(cov)?;
     let e1 = normal.any_orthonormal_vector();
     let e2 = normal.cross(e1);
+    // In units of the neighbourhood's radius, so that the six columns are of one size whatever
+    // the scan's units (see `implicit::fit_patch`).
+    let radius = hood.iter().map(|p| p.distance(centre)).fold(0.0, f64::max);
+    if !(radius > 0.0 && radius.is_finite()) {
+        return None;
+    }
     // Normal equations of h = a + bx + cy + dx² + exy + fy², 6 × 6.
     let mut ata = [[0.0f64; 6]; 6];
     let mut atb = [0.0f64; 6];
     let mut rows = Vec::with_capacity(n);
     for p in hood {
-        let d = *p - centre;
+        let d = (*p - centre) / radius;
         let (x, y, h) = (d.dot(e1), d.dot(e2), d.dot(normal));
         let r = [1.0, x, y, x * x, x * y, y * y];
         for i in 0..6 {
@@ -116,7 +158,7 @@ fn quadric_residual(hood: &[DVec3]) -> Option<f64> {
             (h - fit).powi(2)
         })
         .sum();
-    Some((ss / (n as f64 - 6.0).max(1.0)).sqrt())
+    Some(radius * (ss / (n as f64 - 6.0).max(1.0)).sqrt())
 }
 
 /// The unit eigenvector of the smallest eigenvalue of a symmetric 3 × 3 matrix, by inverse

@@ -9,7 +9,7 @@
 //! | method | from | texels | when [`Method::Auto`] picks it |
 //! |---|---|---|---|
 //! | [`Method::Mesh`] | a mesh | each part of the mesh ([`hi_scan::repair`]) parameterised over the domain its topology asks for ([`Domain`], [`parts`]), each texel the surface point its parameter falls on | the scan has triangles, and its parts above the floor ([`PART_FLOOR`]) hold at least half its area |
-//! | [`Method::ShrinkWrap`] | points | each part of the zero set of the points' signed distance ([`hi_scan::implicit`]) parameterised the same way, its texels projected onto the points and pulled into the creases it bridged ([`crate::shrinkwrap`]); a cloud larger than the images can hold is first summarised on a grid ([`hi_scan::cloud`]) | otherwise: point sets, and meshes the mesh method cannot take |
+//! | [`Method::ShrinkWrap`] | points | each part of the zero set of the points' signed distance ([`hi_scan::implicit`]) parameterised the same way, its texels projected onto the points' patches, pulled into the creases it bridged ([`crate::shrinkwrap`]) and refined by a moving least-squares fit to the points about each ([`hi_scan::implicit::MovingLeastSquares`]); a cloud larger than the images can hold is first summarised on a grid ([`hi_scan::cloud`]) | otherwise: point sets, and meshes the mesh method cannot take |
 //! | [`Method::Radial`] | points | the distance along each ray from a centre (algorithm 2, [`crate::spherical`]) | never (the thesis's algorithm 2) |
 //! | [`Method::Contours`] | points | the scan point each ray located, rows made contours (§5.8, [`crate::contours`]) | never (the thesis's §5.8) |
 //!
@@ -23,8 +23,8 @@
 //!
 //! Then, per part, the thesis's optional Gaussian smoothing, the regularisation
 //! ([`Regularisation`]: by default, for images made from points, a thin-plate penalty weighed
-//! so that the surface departs from the texels by the scan's own noise level
-//! ([`hi_scan::noise`]), and none for images sampled from a mesh, whose texels lie exactly on
+//! so that the surface departs from the texels by the noise left in them (the scan's own noise
+//! level, [`hi_scan::noise`], as averaged by the quadric patches the texels lie on), and none for images sampled from a mesh, whose texels lie exactly on
 //! the scan's surface), the optional reduction, and the harmonic surface through the result.
 //!
 //! The defaults ([`FitOptions::default`]) are the best this crate knows; [`FitOptions::thesis`]
@@ -42,7 +42,7 @@ use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_scan::cloud::{cell_for_count, summarise};
 use hi_scan::distance::{Distances, bounding_diagonal};
-use hi_scan::implicit::{CELL, PointSurface};
+use hi_scan::implicit::{MovingLeastSquares, PointSurface};
 use hi_scan::repair::{MeshParts, Repair, mesh_parts};
 use hi_scan::scan::Scan;
 use hi_surface::HarmonicSurface;
@@ -145,8 +145,9 @@ pub struct FitOptions {
     /// A smoothing filter applied to the geometry image (§5.4), if any.
     pub smoothing: Option<Smoothing>,
     /// The regularisation of the surface through the image. Default
-    /// [`Regularisation::Auto`]: to the scan's noise level for images made from points, none
-    /// for images sampled from a mesh.
+    /// [`Regularisation::Auto`]: to the noise left in the texels for images made from points
+    /// (the scan's noise level times √(6/16), see [`crate::fit()`]), none for images sampled
+    /// from a mesh.
     pub regularisation: Regularisation,
     /// Keep about this fraction of the texels by Theorem 5.3 (each side scaled by its square
     /// root; §5.8 keeps 0.25), if any. In (0, 1].
@@ -447,7 +448,8 @@ pub const UNREACHED: f64 = 0.02;
 /// ([`FitOptions::max_hole_fraction`]): the image is mostly guesswork.
 pub const MAX_HOLE_FRACTION: f64 = 0.5;
 
-/// The grids a point set's zero set is taken on, in [`CELL`]s of its spacing, until its parts
+/// The grids a point set's zero set is taken on, in multiples of
+/// [`PointSurface::zero_set_cell`], until its parts
 /// above the floor that can be made surfaces hold [`MIN_AREA_KEPT`] of its area (else the rays
 /// are wrapped).
 const ZERO_SET_COARSER: [f64; 2] = [1.0, 2.0];
@@ -460,6 +462,11 @@ const NEIGHBOURS: usize = 16;
 /// hold (a finer summary changes the fit by less than the scan's noise), few enough that the
 /// zero set and its parameterisation cost what the image does.
 const SUMMARY_POINTS: f64 = 0.5;
+
+/// How far, in point spacings (of the summary, for a summarised cloud), a texel settled on the
+/// points' patches may move when refined on the points themselves, and how far off its tangent
+/// plane the points it is fitted to may lie (farther, they belong to another sheet).
+const REFINE_BAND: f64 = 0.5;
 
 /// A summary has at least this many points, however small the images (the zero set of the
 /// points' signed distance and its topology do not depend on them).
@@ -713,7 +720,8 @@ fn mesh_sources(
 }
 
 /// The images of a point set's parts: the zero set of its signed distance split into parts,
-/// each parameterised over its domain and settled onto the points; the radial image wrapped
+/// each parameterised over its domain, settled onto the points' patches and refined by moving
+/// least squares on the points themselves ([`MovingLeastSquares`]); the radial image wrapped
 /// where the zero set gives no part. A cloud larger than the images can hold is summarised
 /// first.
 fn point_sources(
@@ -745,7 +753,7 @@ fn point_sources(
         let mut fragments = (0, 0);
         for coarser in ZERO_SET_COARSER {
             planned = surface
-                .zero_set(coarser * CELL * surface.spacing())
+                .zero_set(coarser * surface.zero_set_cell())
                 .and_then(|(v, t)| mesh_parts(&v, &t))
                 .map(|mut parts| {
                     fragments = drop_fragments(&mut parts, &reps, PART_MIN_VERTICES);
@@ -807,12 +815,16 @@ fn point_sources(
     let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
     let n = planned.len();
     let size = user_size(options, &planned);
+    // The texels settled on the blend of the patches of their nearest points (of a summary,
+    // whose cells average the points, for a large cloud) are refined by a quadric fitted about
+    // each texel itself, to the points themselves.
+    let mls = MovingLeastSquares::try_new(points)?;
     let mut out = Vec::with_capacity(n);
     for (k, part) in planned.iter().enumerate() {
         let image = clock.run(StageKind::GeometryImage, (k, n), || -> Result<_, Error> {
             let image = part_image(part, share(texels, part.area_fraction, kept), size)?;
             let (r, c) = (image.image.rows(), image.image.cols());
-            let settled = settle(
+            let mut settled = settle(
                 &surface,
                 &reps,
                 image.image.texels().to_vec(),
@@ -820,6 +832,14 @@ fn point_sources(
                 part.domain,
                 (r, c),
                 0,
+            );
+            crate::shrinkwrap::refine(
+                &mls,
+                &mut settled.texels,
+                &settled.filled,
+                part.domain,
+                (r, c),
+                REFINE_BAND * surface.spacing(),
             );
             Ok(ShrinkWrapImage {
                 image: GeometryImage::try_new(r, c, settled.texels)?,
@@ -1051,9 +1071,15 @@ fn leave_out_guesswork(sources: &mut Sources, max_hole_fraction: f64) -> Result<
     Ok(())
 }
 
+/// The noise of a point set's texels over the noise of its points: a texel lies on quadric
+/// patches fitted by least squares to [`NEIGHBOURS`] points, whose fitted values scatter by
+/// σ √(p/k) on average (the mean leverage p/k of a fit of p = 6 parameters to k points).
+const TEXEL_NOISE: f64 = 0.612_372_435_695_794_5; // √(6/16)
+
 /// The regularisation of the parts' images, and the noise estimated for it: images sampled
 /// from a mesh lie on the scan's surface, with nothing to smooth away; images made from points
-/// carry the points' scatter: smooth it away, and no more.
+/// carry what is left of the points' scatter once the quadric patches have averaged it
+/// ([`TEXEL_NOISE`] of it): smooth that away, and no more.
 fn regularisation_for(
     options: &FitOptions,
     method: Method,
@@ -1063,7 +1089,7 @@ fn regularisation_for(
         (Regularisation::Auto, Method::Mesh) => (Regularisation::Off, None),
         (Regularisation::Auto, _) => {
             let sigma = hi_scan::noise::noise_estimate(image_points);
-            (Regularisation::Noise(sigma), Some(sigma))
+            (Regularisation::Noise(TEXEL_NOISE * sigma), Some(sigma))
         }
         (r, _) => (r, None),
     }

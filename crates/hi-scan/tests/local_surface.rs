@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+//! The local surface of a point set, its moving least-squares projection and its noise estimate
+//! in any units, on samples whose answers are known: spheres, tori and parallel sheets, clean or
+//! displaced by a known noise, evenly or unevenly dense.
+
+use std::f64::consts::TAU;
+
+use glam::DVec3;
+use hi_scan::implicit::PointSurface;
+use hi_scan::noise::noise_estimate;
+
+/// A deterministic pseudo-random sequence in [0, 1).
+fn lcg(seed: &mut u64) -> f64 {
+    *seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+    (*seed >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// A standard normal deviate (Box–Muller).
+fn gaussian(seed: &mut u64) -> f64 {
+    let u = lcg(seed).max(f64::MIN_POSITIVE);
+    (-2.0 * u.ln()).sqrt() * (TAU * lcg(seed)).cos()
+}
+
+/// `n` points scattered uniformly at random over the torus of radii `big` and `small` (by
+/// rejection on the area element), displaced along the normal by N(0, `sigma`²).
+fn torus_points(n: usize, big: f64, small: f64, sigma: f64, seed: u64) -> Vec<DVec3> {
+    let mut s = seed;
+    let mut out = Vec::with_capacity(n);
+    while out.len() < n {
+        let (u, v) = (TAU * lcg(&mut s), TAU * lcg(&mut s));
+        // The area element is small (big + small cos v) du dv.
+        if lcg(&mut s) * (big + small) > big + small * v.cos() {
+            continue;
+        }
+        let normal = DVec3::new(v.cos() * u.cos(), v.cos() * u.sin(), v.sin());
+        let centre = DVec3::new(big * u.cos(), big * u.sin(), 0.0);
+        out.push(centre + normal * (small + sigma * gaussian(&mut s)));
+    }
+    out
+}
+
+/// `n` points scattered uniformly at random over the unit sphere whose z lies in `z_range`
+/// (Archimedes: z uniform).
+fn zone_points(n: usize, (z0, z1): (f64, f64), seed: u64) -> Vec<DVec3> {
+    let mut s = seed;
+    (0..n)
+        .map(|_| {
+            let z = z0 + (z1 - z0) * lcg(&mut s);
+            let a = TAU * lcg(&mut s);
+            let e = (1.0 - z * z).sqrt();
+            DVec3::new(e * a.cos(), e * a.sin(), z)
+        })
+        .collect()
+}
+
+#[test]
+fn the_noise_estimate_finds_the_noise_in_any_units() {
+    // 20 000 points on a torus of radii 1 and 0.3, displaced by σ = 0.002 along the normal.
+    let sigma = 0.002;
+    let points = torus_points(20_000, 1.0, 0.3, sigma, 3);
+    let at_one = noise_estimate(&points);
+    assert!((at_one / sigma - 1.0).abs() < 0.15, "σ estimated as {at_one}, not {sigma}");
+    // The same scan in other units: the estimate scales with it (a scan in metres whose
+    // neighbourhoods span a millimetre is fitted as well as one in millimetres).
+    for scale in [1e-4, 1e3] {
+        let scaled: Vec<DVec3> = points.iter().map(|p| *p * scale).collect();
+        let estimate = noise_estimate(&scaled) / scale;
+        assert!(
+            (estimate / at_one - 1.0).abs() < 1e-6,
+            "at scale {scale}: {estimate} against {at_one}"
+        );
+    }
+}
+
+#[test]
+fn a_sparse_clean_sample_of_a_curved_surface_has_no_noise() {
+    // 1 500 points on a thin torus: 24 neighbours span a third of the tube's circumference, where
+    // a quadric misses the circle by far more than rounding. The two scales tell that apart
+    // from noise: the clean sample's estimate is below a tenth of the noise that a sample with
+    // σ = 0.003 gets.
+    let clean = noise_estimate(&torus_points(1_500, 1.0, 0.25, 0.0, 5));
+    let sigma = 0.003;
+    let noisy = noise_estimate(&torus_points(1_500, 1.0, 0.25, sigma, 5));
+    assert!(clean < 0.1 * sigma, "clean sample: {clean}");
+    assert!((noisy / sigma - 1.0).abs() < 0.35, "σ estimated as {noisy}, not {sigma}");
+}
+
+#[test]
+fn patches_follow_a_small_sphere_as_closely_as_a_large_one() {
+    // 4 000 points on spheres of radius 1 and 10⁻³ (a part in metres whose spacing is 50 µm):
+    // points off the sphere project onto it to the accuracy of a quadric, in both units. A plane
+    // through each point would miss the sphere between points by about spacing²/(2r), 10⁻³ r.
+    for radius in [1.0, 1e-3] {
+        let points: Vec<DVec3> =
+            zone_points(4_000, (-1.0, 1.0), 11).iter().map(|p| *p * radius).collect();
+        let surface = PointSurface::try_new(&points, None, 16).unwrap();
+        let mut seed = 13;
+        let worst = (0..500)
+            .map(|_| {
+                let z = 2.0 * lcg(&mut seed) - 1.0;
+                let a = TAU * lcg(&mut seed);
+                let e = (1.0 - z * z).sqrt();
+                let direction = DVec3::new(e * a.cos(), e * a.sin(), z);
+                let (q, _) = surface.project(direction * radius * 1.01, direction);
+                (q.length() / radius - 1.0).abs()
+            })
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-4, "radius {radius}: projections {worst} of the radius off the sphere");
+    }
+}
+
+/// The documented rule of [`PointSurface::fine_spacing`] computed by brute force: each point's
+/// spacing r/√2 from its 8th nearest other point, found by sorting all distances.
+fn fine_spacing_by_brute_force(points: &[DVec3]) -> (f64, f64) {
+    let mut spacings: Vec<f64> = points
+        .iter()
+        .map(|p| {
+            let mut d: Vec<f64> = points.iter().map(|q| q.distance_squared(*p)).collect();
+            d.sort_by(f64::total_cmp);
+            // d[0] is the point itself.
+            (d[8] / 2.0).sqrt()
+        })
+        .collect();
+    spacings.sort_by(f64::total_cmp);
+    let median = spacings[spacings.len() / 2];
+    let evenness = spacings[spacings.len() / 10] / (0.78 * median);
+    (median, if evenness >= 0.8 { median } else { evenness.max(0.5) * median })
+}
+
+#[test]
+fn the_zero_set_grid_follows_the_denser_parts() {
+    // Evenly dense at random: the grid follows the median spacing.
+    let even = PointSurface::try_new(&zone_points(4_000, (-1.0, 1.0), 17), None, 16).unwrap();
+    let ratio = even.fine_spacing() / even.spacing();
+    assert!(ratio > 0.95 && ratio <= 1.0, "even: {ratio}");
+    // A cap (z > 0.8, a tenth of the sphere) with 1 000 points, the rest with 3 000: the cap is
+    // three times as dense, its points a quarter of all, so the 10th percentile of the spacings
+    // lies among its points and the median among the rest's.
+    let mut points = zone_points(1_000, (0.8, 1.0), 19);
+    points.extend(zone_points(3_000, (-1.0, 0.8), 23));
+    let uneven = PointSurface::try_new(&points, None, 16).unwrap();
+    let (median, fine) = fine_spacing_by_brute_force(&points);
+    assert!((uneven.spacing() / median - 1.0).abs() < 1e-12);
+    assert!((uneven.fine_spacing() / fine - 1.0).abs() < 1e-12);
+    let ratio = fine / median;
+    assert!(ratio < 0.8, "uneven: {ratio}");
+    assert!((uneven.zero_set_cell() / fine - hi_scan::implicit::CELL).abs() < 1e-12);
+    // And its zero set on that grid is one closed surface of genus 0 near the sphere.
+    let (vertices, triangles) = uneven.zero_set(uneven.zero_set_cell()).unwrap();
+    assert!(vertices.iter().all(|p| (p.length() - 1.0).abs() < 0.01));
+    assert_eq!(vertices.len() as i64 - triangles.len() as i64 / 2, 2);
+}
+
+#[test]
+fn moving_least_squares_keeps_to_the_sheet_it_starts_on() {
+    // Two parallel sheets of a thin part, z = 0 and z = 0.04, sampled at 0.02 (staggered): a
+    // point just above the lower sheet projects onto it when the fit keeps to points within
+    // 0.01 of its tangent plane, and lands between the sheets when it takes all its neighbours.
+    let mut points = Vec::new();
+    for i in 0..30 {
+        for j in 0..30 {
+            let (x, y) = (i as f64 * 0.02, j as f64 * 0.02);
+            points.push(DVec3::new(x, y, 0.0));
+            points.push(DVec3::new(x + 0.01, y + 0.01, 0.04));
+        }
+    }
+    let mls = hi_scan::implicit::MovingLeastSquares::try_new(&points).unwrap();
+    let x = DVec3::new(0.3, 0.3, 0.005);
+    let q = mls.project(x, DVec3::Z, 0.01).unwrap();
+    assert!(q.distance(DVec3::new(0.3, 0.3, 0.0)) < 1e-12, "{q}");
+    let mixed = mls.project(x, DVec3::Z, 1.0).unwrap();
+    assert!(mixed.z > 0.005 && mixed.z < 0.035, "{mixed}");
+    // Too few points within the band: no projection.
+    assert!(mls.project(DVec3::new(0.3, 0.3, 0.02), DVec3::Z, 0.001).is_none());
+    // Bad input is named.
+    assert!(hi_scan::implicit::MovingLeastSquares::try_new(&points[..10]).is_err());
+    let mut bad = points.clone();
+    bad[3].x = f64::NAN;
+    assert!(hi_scan::implicit::MovingLeastSquares::try_new(&bad).is_err());
+}
