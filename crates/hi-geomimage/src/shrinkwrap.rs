@@ -284,7 +284,8 @@ pub(crate) fn settle(
 /// Moves every texel of a `rows × cols` image over `domain` not flagged `filled` to its
 /// moving least-squares projection onto the points of `mls` along its normal across the grid
 /// ([`MovingLeastSquares::project`], the points within `band` of its tangent plane), by at most
-/// `band`; a texel whose projection fails stays. The image's copies of a texel follow it.
+/// `band`; a texel whose projection fails stays. The image's copies of a texel follow it (and
+/// each pole row of the latitude–longitude sphere stays one point).
 pub(crate) fn refine(
     mls: &MovingLeastSquares<'_>,
     x: &mut [DVec3],
@@ -307,10 +308,13 @@ pub(crate) fn refine(
     for (t, texel) in x.iter_mut().enumerate() {
         *texel = moved[owner[t]];
     }
+    // The latitude–longitude sphere's pole rows one point again.
+    symmetrise(x, &owner, domain, rows, cols);
 }
 
 /// The zero set of the points' signed distance on the grid of
-/// [`PointSurface::zero_set_cell`] ([`PointSurface::zero_set`]), its holes closed and the whole made genus 0 by
+/// [`PointSurface::zero_set_cell`] ([`PointSurface::zero_set`]), its holes closed and the whole
+/// made genus 0 by
 /// [`hi_scan::repair::close_mesh`].
 fn implicit_surface(patches: &PointSurface) -> Result<ClosedMesh, Error> {
     let (positions, triangles) = patches.zero_set(patches.zero_set_cell())?;

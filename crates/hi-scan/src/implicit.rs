@@ -387,6 +387,18 @@ impl PointSurface {
 fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
     let e1 = normal.any_orthonormal_vector();
     let e2 = normal.cross(e1);
+    let c = fit_quadric(p, (e1, e2, normal), hood).unwrap_or([0.0; 6]);
+    Patch { origin: p, e1, e2, normal, c, local: 0.0 }
+}
+
+/// The coefficients of the quadric height field h(x, y) about `p` in the frame `(e1, e2,
+/// normal)`, fitted by least squares to `hood` weighted by exp(−d²/R²), d the distance from p
+/// and R the largest; `None` if the fit is degenerate.
+fn fit_quadric(
+    p: DVec3,
+    (e1, e2, normal): (DVec3, DVec3, DVec3),
+    hood: &[DVec3],
+) -> Option<[f64; 6]> {
     let h2 = hood.iter().map(|q| q.distance_squared(p)).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
     // In units of the neighbourhood's radius, so that the six columns are of one size whatever
     // the scan's units (in metres, a quadric term of a millimetre's neighbourhood is 10⁻⁶ of
@@ -407,10 +419,8 @@ fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
         }
     }
     // Back to the scan's units: h = R·H(x/R, y/R).
-    let c = crate::noise::solve6(ata, atb).map_or([0.0; 6], |c| {
-        [c[0] * radius, c[1], c[2], c[3] / radius, c[4] / radius, c[5] / radius]
-    });
-    Patch { origin: p, e1, e2, normal, c, local: 0.0 }
+    crate::noise::solve6(ata, atb)
+        .map(|c| [c[0] * radius, c[1], c[2], c[3] / radius, c[4] / radius, c[5] / radius])
 }
 
 /// The unit eigenvector of the least eigenvalue of the points' covariance.
@@ -502,12 +512,7 @@ impl PointSurface {
             .iter()
             .map(|p| p.origin)
             .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
-        // The band about a point reaches MAX_BAND cells, or as far as MAX_BAND cells of the
-        // grid of the median spacing where this one is finer (up to four times as many).
-        #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
-        let max_band = ((MAX_BAND as f64 * CELL * self.spacing / h).ceil().min(1e3) as usize)
-            .clamp(MAX_BAND, 4 * MAX_BAND);
-        let pad = (max_band + 2) as f64 * h;
+        let pad = (MAX_BAND + 2) as f64 * h;
         let origin = lo - DVec3::splat(pad);
         #[expect(
             clippy::cast_possible_truncation,
@@ -530,7 +535,7 @@ impl PointSurface {
             #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
             let c = ((p - origin) / h).floor().to_array().map(|x| x as isize);
             #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
-            let b = ((1.5 * patch.local / h).ceil() as usize).clamp(BAND, max_band) as isize;
+            let b = ((1.5 * patch.local / h).ceil() as usize).clamp(BAND, MAX_BAND) as isize;
             for dk in -b..=b + 1 {
                 for dj in -b..=b + 1 {
                     for di in -b..=b + 1 {
@@ -647,9 +652,10 @@ impl<'a> MovingLeastSquares<'a> {
         if hood.len() < MLS_MIN {
             return None;
         }
-        let patch = fit_patch(x, normal, &hood);
-        // The patch's frame is x's: its height at the foot is c₀.
-        Some(x + normal * patch.c[0])
+        let e1 = normal.any_orthonormal_vector();
+        let c = fit_quadric(x, (e1, normal.cross(e1), normal), &hood)?;
+        // The frame is x's: the height at its foot is c₀.
+        Some(x + normal * c[0])
     }
 }
 

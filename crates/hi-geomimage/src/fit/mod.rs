@@ -24,8 +24,9 @@
 //! Then, per part, the thesis's optional Gaussian smoothing, the regularisation
 //! ([`Regularisation`]: by default, for images made from points, a thin-plate penalty weighed
 //! so that the surface departs from the texels by the noise left in them (the scan's own noise
-//! level, [`hi_scan::noise`], as averaged by the quadric patches the texels lie on), and none for images sampled from a mesh, whose texels lie exactly on
-//! the scan's surface), the optional reduction, and the harmonic surface through the result.
+//! level, [`hi_scan::noise`], as averaged by the quadric patches the texels lie on), and none
+//! for images sampled from a mesh, whose texels lie exactly on the scan's surface), the
+//! optional reduction, and the harmonic surface through the result.
 //!
 //! The defaults ([`FitOptions::default`]) are the best this crate knows; [`FitOptions::thesis`]
 //! reproduces the thesis's algorithm 2 (a 128² latitude–longitude image, no regularisation).
