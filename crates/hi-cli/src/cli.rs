@@ -473,9 +473,10 @@ pub(crate) struct FitArgs {
     /// smoothing and regularisation off, so that the surface interpolates the image (the thesis).
     #[arg(long, value_name = "K", value_parser = parse_finite)]
     pub(crate) smooth: Option<f64>,
-    /// The thin-plate regularisation of the surface: auto (to the scan's estimated noise for
-    /// images made from points, none for a mesh's), off, gcv (weight by generalised
-    /// cross-validation), noise=S (to the noise level S), or a weight W.
+    /// The thin-plate regularisation of the surface: auto (for images made from points, to the
+    /// noise left in the texels, √(6/16) of the scan's estimated noise; none for a mesh's), off,
+    /// gcv (weight by generalised cross-validation), noise=S (to the noise level S), or a
+    /// weight W.
     #[arg(long, value_name = "auto|off|gcv|noise=S|W", value_parser = parse_regularisation)]
     pub(crate) regularise: Option<Regularisation>,
     /// Measure the error exactly, by projecting onto the harmonic surface, rather than onto its

@@ -39,9 +39,9 @@ use crate::{Error, GeometryImage};
 pub enum Regularisation {
     /// None: the surface interpolates the texels (the thesis).
     Off,
-    /// Left to the caller: [`crate::fit()`] makes it [`Regularisation::Noise`] with the scan's
-    /// estimated noise for images made from points and [`Regularisation::Off`] for images
-    /// sampled from a mesh; [`regularise`] itself treats it as [`Regularisation::Gcv`].
+    /// Left to the caller: [`crate::fit()`] makes it [`Regularisation::Noise`] with the noise
+    /// left in the texels (√(6/16) of the scan's estimated noise) for images made from points
+    /// and [`Regularisation::Off`] for images sampled from a mesh; [`regularise`] itself treats it as [`Regularisation::Gcv`].
     #[default]
     Auto,
     /// λ by the discrepancy principle for this noise level σ (≥ 0, in the units of the
