@@ -95,7 +95,8 @@ def distances(points_path, scan_path, out_path, n, seed):
         d_surf, _ = cKDTree(pts).query(samples)
     def summary(d):
         d = np.asarray(d) / diag
-        return {"mean": float(d.mean()), "rms": float(np.sqrt((d * d).mean())), "max": float(d.max())}
+        return {"mean": float(d.mean()), "rms": float(np.sqrt((d * d).mean())),
+                "p99": float(np.percentile(d, 99)), "max": float(d.max())}
     print(json.dumps({
         "scan_to_surface": summary(d_scan),
         "surface_to_scan": summary(d_surf),

@@ -77,6 +77,8 @@ pub(super) struct Measured {
     pub(super) mean: f64,
     /// Scan → surface, largest.
     pub(super) max: f64,
+    /// Surface → scan, 99th percentile.
+    pub(super) back_p99: f64,
     /// Surface → scan, largest.
     pub(super) back_max: f64,
     /// Every edge shared by two faces, as stored.
@@ -92,6 +94,7 @@ fn measured(v: &serde_json::Value) -> Measured {
     Measured {
         mean: f("scan_to_surface", "mean"),
         max: f("scan_to_surface", "max"),
+        back_p99: f("surface_to_scan", "p99"),
         back_max: f("surface_to_scan", "max"),
         watertight: v["watertight"].as_bool().unwrap_or(false),
         bodies: v["bodies"].as_u64(),
