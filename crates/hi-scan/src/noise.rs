@@ -87,7 +87,7 @@ pub fn noise_estimate(points: &[DVec3]) -> f64 {
                 tree.query(&points[i].to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
             // Nearest first.
             let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
-            Some((quadric_residual(&hood[..K_SMALL])?, quadric_residual(&hood)?))
+            Some((quadric_residual(hood.get(..K_SMALL)?)?, quadric_residual(&hood)?))
         })
         .unzip();
     if small.is_empty() {
@@ -129,7 +129,7 @@ fn quadric_residual(hood: &[DVec3]) -> Option<f64> {
     let e1 = normal.any_orthonormal_vector();
     let e2 = normal.cross(e1);
     // In units of the neighbourhood's radius, so that the six columns are of one size whatever
-    // the scan's units (see `implicit::fit_patch`).
+    // the scan's units (see `implicit::fit_quadric`).
     let radius = hood.iter().map(|p| p.distance(centre)).fold(0.0, f64::max);
     if !(radius > 0.0 && radius.is_finite()) {
         return None;
