@@ -3,8 +3,9 @@
 //! an open sheet) gives three named meshes in one scene, which read back with the glTF reader,
 //! pass the Khronos glTF-Validator and open in trimesh as three named geometries; an open sheet
 //! gives a mesh with one boundary loop that follows the scan's rim; `--closed` caps it instead;
-//! and bad clouds are named. The validator and trimesh are peers: without them a check says so
-//! and passes, unless `HI_REQUIRE_PEERS=1` (as in CI).
+//! an unevenly dense range scan (CGAL's, where present) is fitted; and bad clouds are named.
+//! The validator and trimesh are peers: without them a check says so and passes, unless
+//! `HI_REQUIRE_PEERS=1` (as in CI).
 
 #[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
 mod common;
@@ -338,4 +339,34 @@ fn bad_clouds_are_named() {
         &["fit", plane.path(), "-o", out.path(), "--param", "sections", "--open"],
         "--closed and --open apply",
     );
+}
+
+#[test]
+fn an_uneven_scan_whose_fine_grid_folds_is_fitted_on_the_median_grid() {
+    // CGAL's `radar.xyz` (a range scan of 20 950 points whose density follows its scan lines):
+    // unevenly dense, so its zero set is first taken on the finer grid of its dense parts,
+    // whose largest sheet does not map onto the square without folds. The fit then takes the
+    // grid of the median spacing, as for evenly dense points, and succeeds.
+    let archive = Path::new("/usr/share/doc/libcgal-demo/data.tar.gz");
+    if !archive.exists() {
+        eprintln!("skipped: {} is absent (Debian's libcgal-demo)", archive.display());
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("hi-cli-radar-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let status = Command::new("tar")
+        .args(["xzf", &archive.to_string_lossy(), "-C", &dir.to_string_lossy()])
+        .arg("data/points_3/radar.xyz")
+        .status()
+        .expect("tar runs");
+    assert!(status.success(), "tar could not extract radar.xyz");
+    let scan = dir.join("data/points_3/radar.xyz");
+    let out = TempFile::path_with("obj");
+    let report = fitted(&["fit", &scan.to_string_lossy(), "-o", out.path()]);
+    let _ = std::fs::remove_dir_all(&dir);
+    let domains = report["topology"]["domains"].as_array().expect("domains");
+    assert!(domains.iter().all(|d| d == "sheet"), "{report}");
+    let mean = num(&report["both_ways"]["scan_to_surface"]["relative"][0]);
+    assert!(mean < 1e-3, "mean {mean} of the diagonal");
+    assert!(num(&report["both_ways"]["unreached_fraction"]) < 0.01, "{report}");
 }

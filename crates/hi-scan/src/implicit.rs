@@ -83,7 +83,9 @@ const FINE_MIN: f64 = 0.5;
 /// varies with the angle of view, not with the detail: Hoppe's cactus, distcap and duck), and
 /// the vertices of scanned meshes near 1 or above (bunny, horse, nefertiti); the vertices of
 /// meshes modelled by hand, dense where they have detail and sparse on their broad faces, at
-/// 0.3–0.7 (spot, cow, wuson, an aeroplane, a spider).
+/// 0.3–0.7 (spot, cow, wuson, an aeroplane, a spider). A range scan whose density follows its
+/// scan lines may lie as low (CGAL's `radar.xyz`, 0.54); `hi-geomimage`'s fit takes the median
+/// spacing's grid again where the finer grid's zero set cannot be parameterised.
 const EVEN: f64 = 0.8;
 
 /// Patches blended per projection.

@@ -43,7 +43,7 @@ use glam::DVec3;
 use hi_curve::ReductionError;
 use hi_scan::cloud::{cell_for_count, summarise};
 use hi_scan::distance::{Distances, bounding_diagonal};
-use hi_scan::implicit::{MovingLeastSquares, PointSurface};
+use hi_scan::implicit::{CELL, MovingLeastSquares, PointSurface};
 use hi_scan::repair::{MeshParts, Repair, mesh_parts};
 use hi_scan::scan::Scan;
 use hi_surface::HarmonicSurface;
@@ -744,22 +744,51 @@ fn point_sources(
     } else {
         (points.to_vec(), normals.map(<[DVec3]>::to_vec))
     };
+    let sources = |median: bool, finer: &mut bool, clock: &mut Clock<'_>| {
+        let wanted = (rows, cols, texels, median);
+        point_sources_on(points, (&reps, rep_normals.as_deref()), options, wanted, finer, clock)
+    };
+    let mut finer = false;
+    let made = match sources(false, &mut finer, clock) {
+        // A grid finer than the median spacing's (for unevenly dense points) resolves thin
+        // parts, but its zero set may be too ragged to parameterise: then the median's, as for
+        // evenly dense points.
+        Err(_) if finer => sources(true, &mut finer, clock),
+        done => done,
+    };
+    made.map(|s| Sources { image_points: reps, ..s })
+}
+
+/// [`point_sources`] on the points `reps` (a summary of `points`, or the points themselves)
+/// with their normals; the zero set taken on the grid of [`PointSurface::zero_set_cell`], or
+/// of [`CELL`] median spacings when `median` (the last of `wanted` = (rows, cols, texels,
+/// median)). `finer` says whether the grid taken was finer than the median's. The sources'
+/// `image_points` are left empty for the caller.
+fn point_sources_on(
+    points: &[DVec3],
+    (reps, rep_normals): (&[DVec3], Option<&[DVec3]>),
+    options: &FitOptions,
+    (rows, cols, texels, median): (usize, usize, usize, bool),
+    finer: &mut bool,
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
     let kept = |planned: &[PlannedPart]| planned.iter().map(|p| p.area_fraction).sum::<f64>();
     let built = clock.run(StageKind::Parts, (0, 1), || -> Result<_, Error> {
-        let surface = PointSurface::try_new(&reps, rep_normals.as_deref(), NEIGHBOURS)?;
+        let surface = PointSurface::try_new(reps, rep_normals, NEIGHBOURS)?;
+        let cell = if median { CELL * surface.spacing() } else { surface.zero_set_cell() };
+        *finer = cell < CELL * surface.spacing();
         // A zero set whose parts cannot be made surfaces (tunnels beyond counting between the
         // walls of a thin part, or a cloud too sparse for its grid) is taken again on a coarser
         // grid.
         let mut planned = Err(hi_scan::Error::Degenerate { what: "no zero set" });
         let mut fragments = (0, 0);
         for coarser in ZERO_SET_COARSER {
-            planned = surface
-                .zero_set(coarser * surface.zero_set_cell())
-                .and_then(|(v, t)| mesh_parts(&v, &t))
-                .map(|mut parts| {
-                    fragments = drop_fragments(&mut parts, &reps, PART_MIN_VERTICES);
+            planned = surface.zero_set(coarser * cell).and_then(|(v, t)| mesh_parts(&v, &t)).map(
+                |mut parts| {
+                    fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
                     plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
-                });
+                },
+            );
             if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {
                 break;
             }
@@ -788,9 +817,8 @@ fn point_sources(
                 centre: options.centre,
                 ..ShrinkWrapOptions::default()
             };
-            let image = clock.run(StageKind::GeometryImage, (0, 1), || {
-                shrink_wrap(&reps, rep_normals.as_deref(), &wrap)
-            })?;
+            let image = clock
+                .run(StageKind::GeometryImage, (0, 1), || shrink_wrap(reps, rep_normals, &wrap))?;
             let reason = format!("the points shrink-wrapped from the rays: {why}");
             return Ok(Sources {
                 parts: vec![Sourced {
@@ -806,7 +834,7 @@ fn point_sources(
                 dropped: Vec::new(),
                 method: Method::ShrinkWrap,
                 reason,
-                image_points: reps,
+                image_points: Vec::new(),
             });
         }
     };
@@ -827,7 +855,7 @@ fn point_sources(
             let (r, c) = (image.image.rows(), image.image.cols());
             let mut settled = settle(
                 &surface,
-                &reps,
+                reps,
                 image.image.texels().to_vec(),
                 Some(&image.filled),
                 part.domain,
@@ -881,7 +909,13 @@ fn point_sources(
             fragments.1,
         ));
     }
-    Ok(Sources { parts: out, dropped, method: Method::ShrinkWrap, reason, image_points: reps })
+    Ok(Sources {
+        parts: out,
+        dropped,
+        method: Method::ShrinkWrap,
+        reason,
+        image_points: Vec::new(),
+    })
 }
 
 /// The one image of the ray methods (algorithm 2, §5.8) over the whole scan, its sparse mesh
