@@ -24,11 +24,11 @@
 //!    triangles shrinking to a new vertex at the loop's centroid, flagged in
 //!    [`ClosedMesh::filled`] (for a [`Closing::Disc`], every hole but the one whose loop spans
 //!    the largest area: the disc's rim);
-//! 7. handles are cut (but a [`Closing::Torus`]'s), one at a time, each along the shortest loop
-//!    found that does not separate the surface (searched within blocks of [`HANDLE_BLOCKS`]
+//! 7. handles are cut (but a [`Closing::Torus`]'s), each along the shortest loop found that
+//!    does not separate the surface (searched within blocks of [`HANDLE_BLOCKS`]
 //!    mean edge lengths and over the whole mesh: the tunnels and bridges a zero set grows where
 //!    two sheets of a scan nearly touch, a tail that touches a body, the tube of a ring), and
-//!    both cuts are closed as holes are, so the genus drops by one. The caps of a cut lie on
+//!    both sides of each cut are closed as holes are, so the genus drops by one per loop. The caps of a cut lie on
 //!    each other, so the shape is kept: a ring stays a ring, closed across its tube at one
 //!    place;
 //! 8. the Euler characteristic V − E + F must then be 2 (sphere), 0 (torus) or 1 (disc), else
@@ -40,8 +40,11 @@
 //! so that a short loop seldom straddles blocks of both), a shortest-path tree from a root and
 //! a spanning tree of the faces across the other edges, taken longest loop first; an edge that
 //! would close a cycle of faces closes a loop of the tree that does not separate the block,
-//! hence not the surface. The shortest such loop over every block, every size and a few roots
-//! is cut; the whole mesh, as one block, always holds one while the genus is above 0.
+//! hence not the surface. The loops of every block, every size and a few roots are taken
+//! shortest first, and each search cuts as many of them as share no vertex and, cut together,
+//! leave the surface in one piece (then each lowers the genus by one; the greedy shortest
+//! system of loops); the whole mesh, as one block, always holds one while the genus is above
+//! 0. The search is repeated until the genus is 0.
 
 use crate::par::*;
 use glam::DVec3;
@@ -1006,7 +1009,7 @@ pub fn shortest_handle(mesh: &ClosedMesh) -> Option<f64> {
     HANDLE_BLOCKS
         .iter()
         .chain(&[f64::INFINITY])
-        .filter_map(|&side| handle_loop(&mesh.triangles, &mesh.positions, side))
+        .flat_map(|&side| handle_loops(&mesh.triangles, &mesh.positions, side))
         .map(|(length, _)| length)
         .min_by(f64::total_cmp)
 }
@@ -1029,8 +1032,10 @@ fn euler_characteristic(vertices: usize, faces: usize, boundary_edges: i64) -> i
 }
 
 /// Step 7 of [`close_mesh`] on a closed, consistently oriented mesh: while its genus is above
-/// 0, cuts the shortest non-separating loop found ([`handle_loop`], in blocks of every
-/// size of [`HANDLE_BLOCKS`] and over the whole mesh) and closes both cuts.
+/// 0, cuts the shortest non-separating loops found ([`handle_loops`], in blocks of every
+/// size of [`HANDLE_BLOCKS`] and over the whole mesh; several at once when they are disjoint
+/// and do not separate the surface together, [`independent_loops`]) and closes both sides of
+/// each cut.
 fn cut_handles(
     faces: &mut Vec<[u32; 3]>,
     positions: &mut Vec<DVec3>,
@@ -1047,22 +1052,36 @@ fn cut_handles(
         })
         .collect();
     let open = kept_open.iter().map(Vec::len).sum::<usize>() as i64;
-    for _ in 0..MAX_HANDLES {
+    while repair.handles_cut < MAX_HANDLES {
         let chi = euler_characteristic(positions.len(), faces.len(), open);
         if chi >= chi_wanted {
             return;
         }
-        // The shortest loop found at any size of block (a loop may fit a block of one grid and
-        // not the next, and the roots differ).
-        let Some((_, lp)) = HANDLE_BLOCKS
+        // Every block's loop at every size of block (a loop may fit a block of one grid and
+        // not the next, and the roots differ), shortest first; as many of them cut at once as
+        // are disjoint and, together, do not separate the surface.
+        let mut found: Vec<(f64, Vec<u32>)> = HANDLE_BLOCKS
             .iter()
             .chain(&[f64::INFINITY])
-            .filter_map(|&side| handle_loop(faces, positions, side))
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-        else {
+            .flat_map(|&side| handle_loops(faces, positions, side))
+            .collect();
+        found.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let wanted = usize::try_from((chi_wanted - chi) / 2)
+            .unwrap_or(0)
+            .min(MAX_HANDLES - repair.handles_cut)
+            .max(1);
+        let loops = independent_loops(faces, positions.len(), found, wanted);
+        if loops.is_empty() {
             return;
-        };
-        if !cut_along(&lp, faces, positions, scan_vertex) {
+        }
+        let mut cut = 0;
+        for lp in &loops {
+            if !cut_along(lp, faces, positions, scan_vertex) {
+                break;
+            }
+            cut += 1;
+        }
+        if cut == 0 {
             return;
         }
         filled.resize(faces.len(), false);
@@ -1075,12 +1094,91 @@ fn cut_handles(
                 fill_hole(&lp, faces, positions, scan_vertex, filled);
             }
         }
-        if euler_characteristic(positions.len(), faces.len(), open) != chi + 2 {
-            // Cannot happen for a non-separating loop of a closed mesh; stop rather than loop.
+        if euler_characteristic(positions.len(), faces.len(), open) != chi + 2 * cut as i64 {
+            // Cannot happen for non-separating loops of a closed mesh; stop rather than loop.
             return;
         }
-        repair.handles_cut += 1;
+        repair.handles_cut += cut;
     }
+}
+
+/// Of the loops `found` (shortest first), at most `wanted` that share no vertex and that,
+/// cut together, leave the faces of the closed mesh `faces` (over `vertices` vertices)
+/// connected: each would lower the genus by one (the greedy choice of a shortest system of
+/// loops, Erickson and Whittlesey 2005). The first loop is always taken: it does not
+/// separate the surface on its own.
+fn independent_loops(
+    faces: &[[u32; 3]],
+    vertices: usize,
+    found: Vec<(f64, Vec<u32>)>,
+    wanted: usize,
+) -> Vec<Vec<u32>> {
+    // Pairs of faces across each edge, keyed by the edge.
+    let mut sides: Vec<(u64, u32)> = faces
+        .iter()
+        .enumerate()
+        .flat_map(|(f, t)| {
+            let f = u32::try_from(f).unwrap_or(u32::MAX);
+            (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f))
+        })
+        .collect();
+    sides.par_sort_unstable();
+    let pairs: Vec<(u64, u32, u32)> = sides
+        .chunk_by(|a, b| a.0 == b.0)
+        .filter(|pair| pair.len() == 2)
+        .map(|pair| (pair[0].0, pair[0].1, pair[1].1))
+        .collect();
+    let mut used = vec![false; vertices];
+    let mut barrier: Vec<u64> = Vec::new();
+    let mut chosen: Vec<Vec<u32>> = Vec::new();
+    for (_, lp) in found {
+        if chosen.len() >= wanted {
+            break;
+        }
+        if lp.iter().any(|&v| used.get(v as usize).is_none_or(|&u| u)) {
+            continue;
+        }
+        let before = barrier.len();
+        let m = lp.len();
+        barrier.extend((0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])));
+        barrier.sort_unstable();
+        if chosen.is_empty() || faces_connected(faces.len(), &pairs, &barrier) {
+            for &v in &lp {
+                used[v as usize] = true;
+            }
+            chosen.push(lp);
+        } else {
+            let keys: Vec<u64> = (0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])).collect();
+            barrier.retain(|k| !keys.contains(k));
+            debug_assert_eq!(barrier.len(), before);
+        }
+    }
+    chosen
+}
+
+/// Whether `n` faces joined across the edges of `pairs` (edge, face, face) but the sorted
+/// `barrier` edges form one piece.
+fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u64]) -> bool {
+    let mut parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let mut pieces = n;
+    for &(key, f, g) in pairs {
+        if barrier.binary_search(&key).is_ok() {
+            continue;
+        }
+        let (rf, rg) = (find(&mut parent, f), find(&mut parent, g));
+        if rf != rg {
+            parent[rf as usize] = rg;
+            pieces -= 1;
+        }
+    }
+    pieces <= 1
 }
 
 /// The half-edges of `faces` sorted by (from, to): half-edge 3f + k runs from corner k of face
@@ -1103,10 +1201,10 @@ fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
     half.binary_search_by_key(&key, |&(k, _)| k).ok().map(|i| half[i].1 as usize / 3)
 }
 
-/// The shortest non-separating loop of a closed mesh found within one block of `blocks` mean
-/// edge lengths (see the module documentation; infinite for the whole mesh): its length and
-/// its vertices in order; `None` when no block holds one.
-fn handle_loop(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Option<(f64, Vec<u32>)> {
+/// The shortest non-separating loop of a closed mesh found within each block of `blocks` mean
+/// edge lengths (see the module documentation; infinite for the whole mesh), on both grids of
+/// blocks: each loop's length and vertices in order; none when no block holds one.
+fn handle_loops(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Vec<(f64, Vec<u32>)> {
     let at = |k: u32| positions[k as usize];
     let mean_edge = faces
         .iter()
@@ -1117,10 +1215,10 @@ fn handle_loop(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Option<(
         / (3 * faces.len()).max(1) as f64;
     let side = blocks * mean_edge;
     if !(side > 0.0 && mean_edge.is_finite()) {
-        return None;
+        return Vec::new();
     }
     let lo = positions.iter().fold(DVec3::INFINITY, |a, p| a.min(*p));
-    let mut best: Option<(f64, Vec<u32>)> = None;
+    let mut all: Vec<(f64, Vec<u32>)> = Vec::new();
     for offset in [0.0, 0.5] {
         if blocks.is_infinite() && offset > 0.0 {
             // One block either way.
@@ -1147,13 +1245,9 @@ fn handle_loop(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Option<(
                 block_loop(faces, positions, &block)
             })
             .collect();
-        for (length, lp) in found {
-            if best.as_ref().is_none_or(|(b, _)| length < *b) {
-                best = Some((length, lp));
-            }
-        }
+        all.extend(found);
     }
-    best
+    all
 }
 
 /// The shortest loop found in the faces `block` of a closed mesh that does not separate them:
@@ -1439,5 +1533,112 @@ mod tests {
         check_cut(&ring, &p, 2.0 * std::f64::consts::PI.powi(2) * 0.15 * 0.15, 0.2);
         let on_cuts = ring.scan_vertex.iter().filter(|&&k| k != ADDED_VERTEX).count() - p.len();
         assert_eq!(on_cuts, 6, "one copy of each vertex of the cut");
+    }
+
+    /// The boundary of a union of unit voxels (`filled(x, y, z)` on `0..n[0]` × …), two
+    /// triangles per face between a filled voxel and an empty one, wound outward.
+    fn voxel_surface(
+        n: [i32; 3],
+        filled: impl Fn(i32, i32, i32) -> bool,
+    ) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        let inside =
+            |c: [i32; 3]| (0..3).all(|k| (0..n[k]).contains(&c[k])) && filled(c[0], c[1], c[2]);
+        let mut index = std::collections::HashMap::new();
+        let mut p: Vec<DVec3> = Vec::new();
+        let mut id = |c: [i32; 3]| {
+            *index.entry(c).or_insert_with(|| {
+                p.push(DVec3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2])));
+                (p.len() - 1) as u32
+            })
+        };
+        let mut t = Vec::new();
+        for x in -1..=n[0] {
+            for y in -1..=n[1] {
+                for z in -1..=n[2] {
+                    let c = [x, y, z];
+                    if !inside(c) {
+                        continue;
+                    }
+                    for axis in 0..3 {
+                        for dir in [-1, 1] {
+                            let mut o = c;
+                            o[axis] += dir;
+                            if inside(o) {
+                                continue;
+                            }
+                            // The face's corners, counter-clockwise seen from outside.
+                            let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+                            let mut base = c;
+                            base[axis] += i32::from(dir > 0);
+                            let corner = |du: i32, dv: i32| {
+                                let mut q = base;
+                                q[u] += du;
+                                q[v] += dv;
+                                q
+                            };
+                            let mut quad = [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)];
+                            if dir < 0 {
+                                quad.reverse();
+                            }
+                            let q = quad.map(&mut id);
+                            t.push([q[0], q[1], q[2]]);
+                            t.push([q[0], q[2], q[3]]);
+                        }
+                    }
+                }
+            }
+        }
+        (p, t)
+    }
+
+    #[test]
+    fn three_handles_are_cut_and_the_surface_stays_whole() {
+        // A plate of 7 × 3 × 1 voxels with three square holes through it: genus 3, volume 18.
+        let (p, t) = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
+        assert!(closed_and_oriented(&t));
+        let chi = |p: usize, t: &[[u32; 3]]| {
+            let mut edges: Vec<u64> = t
+                .iter()
+                .flat_map(|f| (0..3).map(move |k| edge_key(f[k], f[(k + 1) % 3])))
+                .collect();
+            edges.sort_unstable();
+            edges.dedup();
+            p as i64 - edges.len() as i64 + t.len() as i64
+        };
+        assert_eq!(chi(p.len(), &t), 2 - 2 * 3, "genus 3");
+        let closed = close_mesh(&p, &t).expect("cut");
+        assert_eq!(closed.repair.handles_cut, 3);
+        assert!(closed_and_oriented(&closed.triangles));
+        assert_eq!(chi(closed.positions.len(), &closed.triangles), 2);
+        // One piece: its faces joined across their edges.
+        let mut sides: Vec<(u64, u32)> = closed
+            .triangles
+            .iter()
+            .enumerate()
+            .flat_map(|(f, t)| (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f as u32)))
+            .collect();
+        sides.sort_unstable();
+        let pairs: Vec<(u64, u32, u32)> =
+            sides.chunk_by(|a, b| a.0 == b.0).map(|w| (w[0].0, w[0].1, w[1].1)).collect();
+        assert!(faces_connected(closed.triangles.len(), &pairs, &[]));
+        // The caps of each cut lie on each other: the plate's volume is kept (to 5 %: the
+        // caps are faired to the plate's sides about them and bulge a little).
+        assert!((closed.volume() - 18.0).abs() < 0.9, "{}", closed.volume());
+    }
+
+    #[test]
+    fn loops_around_the_same_handle_are_not_cut_together() {
+        // Two meridians of a torus share no vertex, but cut together they split it in two;
+        // a meridian and a parallel share a vertex. Only the first loop is taken.
+        let (p, t) = torus(8, 4, 1.0, 0.5);
+        let id = |i: u32, j: u32| (i % 8) * 4 + j % 4;
+        let meridian = |i: u32| (0..4).map(|j| id(i, j)).collect::<Vec<u32>>();
+        let parallel: Vec<u32> = (0..8).map(|i| id(i, 0)).collect();
+        let found = vec![(1.0, meridian(0)), (1.0, meridian(4)), (2.0, parallel)];
+        let chosen = independent_loops(&t, p.len(), found, 3);
+        assert_eq!(chosen, vec![meridian(0)]);
+        // With no loop in the way, the second meridian alone would do.
+        let chosen = independent_loops(&t, p.len(), vec![(1.0, meridian(4))], 3);
+        assert_eq!(chosen, vec![meridian(4)]);
     }
 }
