@@ -1138,19 +1138,16 @@ fn independent_loops(
         if lp.iter().any(|&v| used.get(v as usize).is_none_or(|&u| u)) {
             continue;
         }
-        let before = barrier.len();
         let m = lp.len();
-        barrier.extend((0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])));
-        barrier.sort_unstable();
-        if chosen.is_empty() || faces_connected(faces.len(), &pairs, &barrier) {
+        let mut trial = barrier.clone();
+        trial.extend((0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])));
+        trial.sort_unstable();
+        if chosen.is_empty() || faces_connected(faces.len(), &pairs, &trial) {
             for &v in &lp {
                 used[v as usize] = true;
             }
             chosen.push(lp);
-        } else {
-            let keys: Vec<u64> = (0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])).collect();
-            barrier.retain(|k| !keys.contains(k));
-            debug_assert_eq!(barrier.len(), before);
+            barrier = trial;
         }
     }
     chosen
