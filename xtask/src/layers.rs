@@ -4,8 +4,10 @@
 //! {hi-interval, hi-bezier} → {hi-curve, hi-mesh} → {hi-surface, hi-compare, hi-scan} →
 //! {hi-geomimage, hi-raytrace} → hi-cli,
 //! with xtask on top. Every `[dependencies]`, `[dev-dependencies]` and
-//! `[build-dependencies]` table of every crate under `crates/` is read; a `hi-*` entry whose
-//! layer is not strictly lower than the crate's own is an error.
+//! `[build-dependencies]` table (and the same under `[target.'…']`) of every crate under
+//! `crates/`, of xtask, and of the fuzz crates under `crates/*/fuzz/` is read with a TOML
+//! parser; a `hi-*` dependency whose layer is not strictly lower than the crate's own is an
+//! error. A fuzz crate stands on the crate it fuzzes: it may depend on it and below.
 
 use std::path::Path;
 
@@ -30,66 +32,85 @@ fn layer_of(name: &str) -> Option<u32> {
     LAYERS.iter().find(|(n, _)| *n == name).map(|(_, l)| *l)
 }
 
-/// The `hi-*` crates a manifest depends on, from its dependency tables.
-pub(crate) fn hi_dependencies(manifest: &str) -> Vec<String> {
-    let mut in_deps = false;
+/// The `hi-*` crates a manifest depends on, from its dependency tables (`[dependencies]`,
+/// `[dev-dependencies]`, `[build-dependencies]`, and the same under `[target.'…']`), by the
+/// package each entry names (its `package` key, for a renamed dependency).
+///
+/// # Errors
+///
+/// When the manifest is not valid TOML.
+pub(crate) fn hi_dependencies(manifest: &str) -> Result<Vec<String>> {
+    let table: toml::Table = manifest.parse().context("the manifest is not valid TOML")?;
+    let kinds = ["dependencies", "dev-dependencies", "build-dependencies"];
+    let targets = table.get("target").and_then(toml::Value::as_table);
+    let scopes = std::iter::once(&table)
+        .chain(targets.into_iter().flat_map(|t| t.values().filter_map(toml::Value::as_table)));
+    let tables: Vec<&toml::Table> = scopes
+        .flat_map(|t| kinds.iter().filter_map(|k| t.get(*k).and_then(toml::Value::as_table)))
+        .collect();
     let mut res = Vec::new();
-    for line in manifest.lines().map(str::trim) {
-        if line.starts_with('[') {
-            let table = line.trim_matches(|c| c == '[' || c == ']');
-            // [dependencies], [dev-dependencies], [target.'…'.dependencies], and a dotted
-            // table such as [dependencies.hi-curve].
-            let last = table.rsplit('.').next().unwrap_or(table);
-            if last.starts_with("hi-") && table.contains("dependencies.") {
-                res.push(last.to_string());
-                in_deps = false;
-            } else {
-                in_deps = table.ends_with("dependencies");
-            }
-            continue;
-        }
-        if in_deps {
-            let key = line.split(['=', '.', ' ']).next().unwrap_or("").trim_matches('"');
-            if key.starts_with("hi-") {
-                res.push(key.to_string());
+    for deps in tables {
+        for (key, value) in deps {
+            let package = value.get("package").and_then(toml::Value::as_str).unwrap_or(key);
+            if package.starts_with("hi-") {
+                res.push(package.to_owned());
             }
         }
     }
-    res
+    Ok(res)
 }
 
-/// Checks every crate under `crates/` and `xtask/`.
+/// A crate's manifest: its name, the crate whose fuzz targets it holds (for a fuzz crate), and
+/// its text.
+struct Manifest {
+    name: String,
+    fuzzes: Option<String>,
+    text: String,
+}
+
+/// Checks every crate under `crates/` and `xtask/`, and the fuzz crates under `crates/*/fuzz/`.
 pub(crate) fn check(root: &Path) -> Result<()> {
-    let mut manifests = vec![("xtask".to_string(), root.join("xtask/Cargo.toml"))];
+    let mut found = vec![("xtask".to_owned(), None, root.join("xtask/Cargo.toml"))];
     for entry in std::fs::read_dir(root.join("crates")).context("reading crates/")? {
         let dir = entry?.path();
-        let name = dir.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string();
-        manifests.push((name, dir.join("Cargo.toml")));
+        let name = dir.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_owned();
+        let fuzz = dir.join("fuzz/Cargo.toml");
+        if fuzz.is_file() {
+            found.push((format!("{name}/fuzz"), Some(name.clone()), fuzz));
+        }
+        found.push((name, None, dir.join("Cargo.toml")));
     }
-    manifests.sort();
-    let mut texts = Vec::new();
-    for (name, path) in manifests {
+    found.sort();
+    let mut manifests = Vec::new();
+    for (name, fuzzes, path) in found {
         let text = std::fs::read_to_string(&path)
             .with_context(|| format!("reading {}", path.display()))?;
-        texts.push((name, text));
+        manifests.push(Manifest { name, fuzzes, text });
     }
-    let problems = violations(&texts);
+    let problems = violations(&manifests)?;
     if problems.is_empty() { Ok(()) } else { bail!("layer rule broken:\n{}", problems.join("\n")) }
 }
 
-/// The layer-rule violations among (crate name, manifest text) pairs.
-fn violations(manifests: &[(String, String)]) -> Vec<String> {
+/// The layer-rule violations among the manifests. A fuzz crate stands on the crate it fuzzes:
+/// it may depend on that crate and on what that crate may depend on.
+///
+/// # Errors
+///
+/// When a manifest is not valid TOML.
+fn violations(manifests: &[Manifest]) -> Result<Vec<String>> {
     let mut problems = Vec::new();
-    for (name, text) in manifests {
-        let Some(own) = layer_of(name) else {
+    for Manifest { name, fuzzes, text } in manifests {
+        let Some(own) = layer_of(fuzzes.as_deref().unwrap_or(name)) else {
             problems.push(format!(
                 "{name} has no layer in docs/architecture.md (add it to xtask/src/layers.rs)"
             ));
             continue;
         };
-        for dep in hi_dependencies(text) {
+        let deps = hi_dependencies(text).with_context(|| format!("reading {name}'s manifest"))?;
+        for dep in deps {
             match layer_of(&dep) {
                 None => problems.push(format!("{name} depends on {dep}, which has no layer")),
+                Some(_) if fuzzes.as_deref() == Some(dep.as_str()) => {}
                 Some(l) if l >= own => problems.push(format!(
                     "{name} (layer {own}) depends on {dep} (layer {l}): crates may depend only on lower layers"
                 )),
@@ -97,7 +118,7 @@ fn violations(manifests: &[(String, String)]) -> Vec<String> {
             }
         }
     }
-    problems
+    Ok(problems)
 }
 
 #[cfg(test)]
@@ -112,27 +133,54 @@ mod tests {
     #[test]
     fn upward_edges_are_found() {
         let manifest = "[package]\nname = \"hi-curve\"\n\n[dependencies]\nglam.workspace = true\nhi-surface = { path = \"../hi-surface\" }\n\n[dev-dependencies]\nhi-raytrace.workspace = true\n\n[dependencies.hi-cli]\npath = \"x\"\n";
-        assert_eq!(hi_dependencies(manifest), ["hi-surface", "hi-raytrace", "hi-cli"]);
-        let deps = hi_dependencies("[package]\nname = \"hi-x\"\n[features]\nhi-y = []\n");
+        let mut deps = hi_dependencies(manifest).unwrap();
+        deps.sort();
+        assert_eq!(deps, ["hi-cli", "hi-raytrace", "hi-surface"]);
+        let deps = hi_dependencies("[package]\nname = \"hi-x\"\n[features]\nhi-y = []\n").unwrap();
         assert!(deps.is_empty(), "features are not dependencies: {deps:?}");
+        // A renamed dependency counts by its package; a target's tables count too.
+        let renamed = "[dependencies]\ncurve = { package = \"hi-curve\", path = \"x\" }\n\
+                       [target.'cfg(unix)'.dev-dependencies]\nhi-mesh = \"0.1\"\n";
+        let mut deps = hi_dependencies(renamed).unwrap();
+        deps.sort();
+        assert_eq!(deps, ["hi-curve", "hi-mesh"]);
+        assert!(hi_dependencies("[dependencies\nhi-x = 1").is_err(), "not TOML");
     }
 
     #[test]
     fn an_upward_or_sideways_dependency_is_an_error() {
-        let m = |name: &str, text: &str| (name.to_string(), text.to_string());
+        let m = |name: &str, text: &str| Manifest {
+            name: name.to_owned(),
+            fuzzes: None,
+            text: text.to_owned(),
+        };
         let ok = [m("hi-surface", "[dependencies]\nhi-curve.workspace = true\n")];
-        assert!(violations(&ok).is_empty());
+        assert!(violations(&ok).unwrap().is_empty());
         let upward = [m("hi-curve", "[dependencies]\nhi-surface.workspace = true\n")];
-        assert_eq!(violations(&upward).len(), 1, "{:?}", violations(&upward));
+        assert_eq!(violations(&upward).unwrap().len(), 1);
         let sideways = [m(
             "hi-raytrace",
             "[dev-dependencies]\nhi-geomimage = { path = \"../hi-geomimage\" }\n",
         )];
-        assert_eq!(violations(&sideways).len(), 1);
+        assert_eq!(violations(&sideways).unwrap().len(), 1);
         let foundation = [m("hi-bezier", "[dependencies]\nhi-interval.workspace = true\n")];
-        assert_eq!(violations(&foundation).len(), 1, "foundations depend on no hi-* crate");
+        assert_eq!(
+            violations(&foundation).unwrap().len(),
+            1,
+            "foundations depend on no hi-* crate"
+        );
         let unknown = [m("hi-new", "")];
-        assert_eq!(violations(&unknown).len(), 1);
+        assert_eq!(violations(&unknown).unwrap().len(), 1);
+        // A fuzz crate may depend on the crate it fuzzes and below, not beside or above it.
+        let fuzz = |text: &str| Manifest {
+            name: "hi-mesh/fuzz".to_owned(),
+            fuzzes: Some("hi-mesh".to_owned()),
+            text: text.to_owned(),
+        };
+        let ok = [fuzz("[dependencies]\nhi-mesh = { path = \"..\" }\nhi-bezier = \"0.1\"\n")];
+        assert!(violations(&ok).unwrap().is_empty());
+        let sideways = [fuzz("[dependencies]\nhi-curve = { path = \"../../hi-curve\" }\n")];
+        assert_eq!(violations(&sideways).unwrap().len(), 1);
     }
 
     #[test]

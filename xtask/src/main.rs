@@ -2,7 +2,7 @@
 //! Project automation for the `harmonic` workspace, run as `cargo xtask <command>`
 //! (see <https://github.com/matklad/cargo-xtask/>).
 //!
-//! Commands:
+//! Commands (`cargo xtask --help`, and `--help` after each):
 //! - `figures [--check] [--no-renders]`: regenerate the thesis figures into `docs/figures/`
 //!   (with `--check`, fail instead if a committed file is stale; with `--no-renders`, leave the
 //!   renders, most of the work, as they are: for drafting, as the figure test checks);
@@ -21,39 +21,127 @@ mod figures;
 mod layers;
 
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
-use anyhow::{Result, bail};
+use anyhow::Result;
+use clap::{Parser, Subcommand, ValueEnum};
 
-fn main() -> Result<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let root = project_root();
-    match args.first().map(String::as_str) {
-        Some("figures") => {
-            let renders = if args.iter().any(|a| a == "--no-renders") {
-                figures::Renders::Skip
+/// Project automation for the harmonic workspace: the thesis figures, the benchmarks against
+/// the peer programs, the cross-checks of the emitted models, and the layer rule.
+#[derive(Debug, Parser)]
+#[command(name = "cargo xtask", bin_name = "cargo xtask")]
+struct Cli {
+    #[command(subcommand)]
+    command: Task,
+}
+
+/// The tasks.
+#[derive(Debug, Subcommand)]
+enum Task {
+    /// Regenerate every figure and table of the thesis into docs/figures/.
+    Figures {
+        /// Fail instead of writing if a committed file is stale.
+        #[arg(long)]
+        check: bool,
+        /// Leave the renders (most of the work) as they are: for drafting, as the figure test
+        /// checks.
+        #[arg(long)]
+        no_renders: bool,
+    },
+    /// Time our code and the peer programs side by side in the same run, into
+    /// docs/performance.md.
+    Bench {
+        /// The topic: every one (all, the default), one topic's section, or one subsection
+        /// (fit-clouds: point clouds, bare vertices and scans of any topology against
+        /// screened Poisson).
+        #[arg(value_enum, default_value_t = Topic::All)]
+        topic: Topic,
+        /// Small inputs, for trying the bench out (fit-clouds only): written under
+        /// target/xtask-bench/small/, never into docs/.
+        #[arg(long)]
+        small: bool,
+        /// Only the rows whose name contains one of these words (fit-clouds only).
+        #[arg(long, value_delimiter = ',', value_name = "WORD,...")]
+        only: Vec<String>,
+    },
+    /// Read back every model the figures emit with other programs (tobj, trimesh, the Khronos
+    /// glTF-Validator, Blender) and run every peer comparison, into docs/crosscheck.md.
+    Crosscheck,
+    /// Check that no crate depends on a crate above it (docs/architecture.md).
+    Layers,
+}
+
+/// The topics of `cargo xtask bench`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Topic {
+    /// Every topic, the whole report written afresh.
+    All,
+    /// Uniform sampling of a harmonic curve: the direct sum, the FFT path and scipy's resample.
+    Curves,
+    /// One step of each subdivision scheme against `OpenMesh` and CGAL.
+    Subdivision,
+    /// The fitting pipeline against scipy and screened Poisson, with its fit-clouds subsection.
+    Fit,
+    /// The fit-clouds subsection alone.
+    FitClouds,
+    /// Ray tracing the torus by interval Newton, bisection, Bézier patches and a mesh.
+    Render,
+}
+
+impl Topic {
+    /// The topic's name, as the report's section markers spell it.
+    fn name(self) -> &'static str {
+        match self {
+            Self::All => "all",
+            Self::Curves => "curves",
+            Self::Subdivision => "subdivision",
+            Self::Fit => "fit",
+            Self::FitClouds => "fit-clouds",
+            Self::Render => "render",
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            // The chain of causes on one line; the backtrace only when asked for.
+            if std::env::var_os("RUST_BACKTRACE").is_some_and(|v| v != "0") {
+                eprintln!("error: {e:?}");
             } else {
-                figures::Renders::Draw
-            };
-            figures::run(&root, args.iter().any(|a| a == "--check"), renders)
+                eprintln!("error: {e:#}");
+            }
+            ExitCode::FAILURE
         }
-        Some("bench") => {
-            // `bench [topic] [--small] [--only a,b]`.
-            let rest = &args[1..];
-            let (topic, rest) = match rest.split_first() {
-                Some((t, more)) if !t.starts_with("--") => (Some(t.as_str()), more),
-                _ => (None, rest),
-            };
-            bench::run(&root, topic, &bench::Options::parse(rest)?)
+    }
+}
+
+fn run(task: Task) -> Result<()> {
+    let root = project_root();
+    match task {
+        Task::Figures { check, no_renders } => {
+            let renders = if no_renders { figures::Renders::Skip } else { figures::Renders::Draw };
+            figures::run(&root, check, renders)
         }
-        Some("crosscheck") => crosscheck::run(&root),
-        Some("layers") => {
+        Task::Bench { topic, small, only } => {
+            let options = bench::Options {
+                small,
+                only: only
+                    .iter()
+                    .filter(|w| !w.is_empty())
+                    .map(|w| w.to_ascii_lowercase())
+                    .collect(),
+            };
+            bench::run(&root, Some(topic.name()), &options)
+        }
+        Task::Crosscheck => crosscheck::run(&root),
+        Task::Layers => {
             layers::check(&root)?;
             println!("layers: every crate depends only on crates below it");
             Ok(())
         }
-        _ => bail!(
-            "usage: cargo xtask <figures [--check] [--no-renders] | bench [all|curves|subdivision|fit|render|fit-clouds [--small] [--only a,b]] | crosscheck | layers>"
-        ),
     }
 }
 
@@ -63,4 +151,35 @@ pub(crate) fn project_root() -> PathBuf {
         .parent()
         .expect("xtask lives in the workspace root")
         .to_path_buf()
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    use super::*;
+
+    #[test]
+    fn the_command_line_is_well_formed_and_read_as_documented() {
+        Cli::command().debug_assert();
+        let read = |args: &[&str]| Cli::try_parse_from([&["cargo xtask"], args].concat());
+        let Task::Bench { topic, small, only } =
+            read(&["bench", "fit-clouds", "--small", "--only", "Bunny,knot"]).unwrap().command
+        else {
+            panic!("not bench");
+        };
+        assert_eq!((topic, small), (Topic::FitClouds, true));
+        assert_eq!(only, ["Bunny", "knot"]);
+        let Task::Bench { topic, .. } = read(&["bench"]).unwrap().command else { panic!() };
+        assert_eq!(topic, Topic::All);
+        assert!(read(&["bench", "fast"]).is_err(), "an unknown topic");
+        assert!(read(&["bench", "--only"]).is_err(), "--only without its list");
+        assert!(read(&["figures", "--fast"]).is_err(), "an unknown option");
+        // Help is an answer, not an error: clap's DisplayHelp.
+        let help = read(&["--help"]).unwrap_err();
+        assert_eq!(help.kind(), clap::error::ErrorKind::DisplayHelp);
+        assert!(help.to_string().contains("figures") && help.to_string().contains("layers"));
+        let help = read(&["bench", "--help"]).unwrap_err().to_string();
+        assert!(help.contains("fit-clouds") && help.contains("--only"), "{help}");
+    }
 }

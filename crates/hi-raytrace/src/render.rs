@@ -3,8 +3,8 @@
 //! light and written as sRGB PNG; tiles in parallel.
 //!
 //! **Determinism.** Every pixel's samples come from a fixed pattern — the pixel centre for one
-//! sample, otherwise a Hammersley set rotated per pixel by a hash of the pixel's position (a
-//! fixed seed) — and each pixel is computed by one thread from its own samples, so a render is
+//! sample, otherwise the first points of the (0, 2)-sequence in base 2, shifted per pixel by a
+//! hash of the pixel's position (a fixed seed) — and each pixel is computed by one thread from its own samples, so a render is
 //! the same, byte for byte, whatever the number of threads and the order they run in.
 
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -75,29 +75,6 @@ pub(crate) struct Options {
 }
 
 impl Options {
-    /// The options from the arguments after the topic: `--small`, `--only a,b`.
-    ///
-    /// # Errors
-    ///
-    /// For an unknown option or `--only` without its list.
-    pub(crate) fn parse(args: &[String]) -> Result<Self> {
-        let mut options = Self::default();
-        let mut args = args.iter();
-        while let Some(a) = args.next() {
-            match a.as_str() {
-                "--small" => options.small = true,
-                "--only" => {
-                    let list = args.next().context("--only takes a list of names, a,b,…")?;
-                    options.only.extend(
-                        list.split(',').filter(|w| !w.is_empty()).map(str::to_ascii_lowercase),
-                    );
-                }
-                other => bail!("unknown bench option {other:?}; options: --small, --only a,b"),
-            }
-        }
-        Ok(options)
-    }
-
     /// Whether the row `name` is to be measured.
     pub(crate) fn wants(&self, name: &str) -> bool {
         let name = name.to_ascii_lowercase();
@@ -754,16 +731,10 @@ mod tests {
     }
 
     #[test]
-    fn options_are_read_after_the_topic() {
-        let args = |a: &[&str]| a.iter().map(|s| (*s).to_owned()).collect::<Vec<_>>();
-        assert_eq!(Options::parse(&[]).unwrap(), Options::default());
-        let o = Options::parse(&args(&["--small", "--only", "Bunny,knot"])).unwrap();
-        assert!(o.small);
-        assert_eq!(o.only, ["bunny", "knot"]);
-        assert!(o.wants("bunny, 2·10⁵ points") && o.wants("torus knot") && !o.wants("cow"));
+    fn rows_are_chosen_by_words() {
+        let o = Options { small: false, only: vec!["bunny".to_owned(), "knot".to_owned()] };
+        assert!(o.wants("Bunny, 2·10⁵ points") && o.wants("torus knot") && !o.wants("cow"));
         assert!(Options::default().wants("anything"));
-        assert!(Options::parse(&args(&["--only"])).is_err());
-        assert!(Options::parse(&args(&["--fast"])).is_err());
     }
 
     #[test]
