@@ -7,7 +7,8 @@
 //! `[build-dependencies]` table (and the same under `[target.'…']`) of every crate under
 //! `crates/`, of xtask, and of the fuzz crates under `crates/*/fuzz/` is read with a TOML
 //! parser; a `hi-*` dependency whose layer is not strictly lower than the crate's own is an
-//! error. A fuzz crate stands on the crate it fuzzes: it may depend on it and below.
+//! error. A fuzz crate stands on the crate it fuzzes: it may depend on it and below. A crate's
+//! dev-dependency on itself (its tests asking for a feature such as `testing`) is allowed.
 
 use std::path::Path;
 
@@ -110,7 +111,8 @@ fn violations(manifests: &[Manifest]) -> Result<Vec<String>> {
         for dep in deps {
             match layer_of(&dep) {
                 None => problems.push(format!("{name} depends on {dep}, which has no layer")),
-                Some(_) if fuzzes.as_deref() == Some(dep.as_str()) => {}
+                // A fuzz crate on its crate; a crate's tests on itself, with a test feature.
+                Some(_) if fuzzes.as_deref() == Some(dep.as_str()) || dep == *name => {}
                 Some(l) if l >= own => problems.push(format!(
                     "{name} (layer {own}) depends on {dep} (layer {l}): crates may depend only on lower layers"
                 )),
@@ -163,6 +165,8 @@ mod tests {
             "[dev-dependencies]\nhi-geomimage = { path = \"../hi-geomimage\" }\n",
         )];
         assert_eq!(violations(&sideways).unwrap().len(), 1);
+        let itself = [m("hi-curve", "[dev-dependencies]\nhi-curve = { path = \".\" }\n")];
+        assert!(violations(&itself).unwrap().is_empty(), "its tests, with a feature");
         let foundation = [m("hi-bezier", "[dependencies]\nhi-interval.workspace = true\n")];
         assert_eq!(
             violations(&foundation).unwrap().len(),

@@ -70,6 +70,7 @@ mod point;
 mod resample;
 #[cfg(feature = "serde")]
 mod serde_impls;
+#[cfg(feature = "testing")]
 pub mod testing;
 mod trig;
 mod trigonometric;

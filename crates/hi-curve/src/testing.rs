@@ -3,6 +3,8 @@
 //! thesis's direct sums beside the spectral (FFT) paths of [`HarmonicCurve`]. Each gives the
 //! same result as a faster method of the curve, named in its documentation; none is the way
 //! to compute anything.
+//!
+//! Compiled only with the crate's `testing` feature.
 
 use crate::curve::check_count;
 use crate::{ControlPoint, Error, HarmonicCurve};

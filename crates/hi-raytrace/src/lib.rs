@@ -48,6 +48,7 @@ mod render;
 mod scene;
 #[cfg(feature = "serde")]
 mod serde_impls;
+#[cfg(feature = "testing")]
 pub mod testing;
 
 pub use bezier::{BezierHit, BezierObject, BezierOptions};

@@ -4,6 +4,8 @@
 //! Hardy 2005, figure 5.26, rendered by each method, for timing: "the process of raytracing
 //! the image took several hours" (§5.6). A report generator calls [`render_torus`] at
 //! 512 × 512 for each [`TorusMethod`]; the benchmarks do the same at a small size.
+//!
+//! Compiled only with the crate's `testing` feature.
 
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};

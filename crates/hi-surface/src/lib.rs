@@ -59,6 +59,7 @@ mod resample;
 mod serde_impls;
 mod spectrum;
 mod surface;
+#[cfg(feature = "testing")]
 pub mod testing;
 
 pub use error::Error;

@@ -2,6 +2,8 @@
 //! Reference computations, for tests and benchmarks: the thesis's direct sum beside the fast
 //! grid paths of [`HarmonicSurface`]. Each gives the same result as a faster method, named in
 //! its documentation; none is the way to compute anything.
+//!
+//! Compiled only with the crate's `testing` feature.
 
 use crate::par::*;
 
