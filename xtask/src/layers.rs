@@ -9,6 +9,8 @@
 //! parser; a `hi-*` dependency whose layer is not strictly lower than the crate's own is an
 //! error. A fuzz crate stands on the crate it fuzzes: it may depend on it and below. A crate's
 //! dev-dependency on itself (its tests asking for a feature such as `testing`) is allowed.
+//! `hi-testkit` lies below every layer: any crate may have it as a dev-dependency, none as
+//! anything else, and it depends on no `hi-*` crate.
 
 use std::path::Path;
 
@@ -33,6 +35,17 @@ fn layer_of(name: &str) -> Option<u32> {
     LAYERS.iter().find(|(n, _)| *n == name).map(|(_, l)| *l)
 }
 
+/// The crate every crate's tests may use: a dev-dependency of any crate, below every layer,
+/// itself depending on no `hi-*` crate.
+pub(crate) const TEST_KIT: &str = "hi-testkit";
+
+/// A `hi-*` dependency of a manifest: the package, and whether it is a dev-dependency.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) struct Dependency {
+    pub(crate) package: String,
+    pub(crate) dev: bool,
+}
+
 /// The `hi-*` crates a manifest depends on, from its dependency tables (`[dependencies]`,
 /// `[dev-dependencies]`, `[build-dependencies]`, and the same under `[target.'…']`), by the
 /// package each entry names (its `package` key, for a renamed dependency).
@@ -40,24 +53,28 @@ fn layer_of(name: &str) -> Option<u32> {
 /// # Errors
 ///
 /// When the manifest is not valid TOML.
-pub(crate) fn hi_dependencies(manifest: &str) -> Result<Vec<String>> {
+pub(crate) fn hi_dependencies(manifest: &str) -> Result<Vec<Dependency>> {
     let table: toml::Table = manifest.parse().context("the manifest is not valid TOML")?;
     let kinds = ["dependencies", "dev-dependencies", "build-dependencies"];
     let targets = table.get("target").and_then(toml::Value::as_table);
     let scopes = std::iter::once(&table)
         .chain(targets.into_iter().flat_map(|t| t.values().filter_map(toml::Value::as_table)));
-    let tables: Vec<&toml::Table> = scopes
-        .flat_map(|t| kinds.iter().filter_map(|k| t.get(*k).and_then(toml::Value::as_table)))
-        .collect();
     let mut res = Vec::new();
-    for deps in tables {
-        for (key, value) in deps {
-            let package = value.get("package").and_then(toml::Value::as_str).unwrap_or(key);
-            if package.starts_with("hi-") {
-                res.push(package.to_owned());
+    for scope in scopes {
+        for kind in kinds {
+            let Some(deps) = scope.get(kind).and_then(toml::Value::as_table) else { continue };
+            for (key, value) in deps {
+                let package = value.get("package").and_then(toml::Value::as_str).unwrap_or(key);
+                if package.starts_with("hi-") {
+                    res.push(Dependency {
+                        package: package.to_owned(),
+                        dev: kind == "dev-dependencies",
+                    });
+                }
             }
         }
     }
+    res.sort();
     Ok(res)
 }
 
@@ -101,14 +118,26 @@ pub(crate) fn check(root: &Path) -> Result<()> {
 fn violations(manifests: &[Manifest]) -> Result<Vec<String>> {
     let mut problems = Vec::new();
     for Manifest { name, fuzzes, text } in manifests {
+        let deps = hi_dependencies(text).with_context(|| format!("reading {name}'s manifest"))?;
+        if name == TEST_KIT {
+            problems.extend(deps.iter().map(|d| {
+                format!("{name} depends on {}: the test kit depends on no hi-* crate", d.package)
+            }));
+            continue;
+        }
         let Some(own) = layer_of(fuzzes.as_deref().unwrap_or(name)) else {
             problems.push(format!(
                 "{name} has no layer in docs/architecture.md (add it to xtask/src/layers.rs)"
             ));
             continue;
         };
-        let deps = hi_dependencies(text).with_context(|| format!("reading {name}'s manifest"))?;
-        for dep in deps {
+        for Dependency { package: dep, dev } in deps {
+            if dep == TEST_KIT {
+                if !dev {
+                    problems.push(format!("{name} depends on {dep} outside its dev-dependencies"));
+                }
+                continue;
+            }
             match layer_of(&dep) {
                 None => problems.push(format!("{name} depends on {dep}, which has no layer")),
                 // A fuzz crate on its crate; a crate's tests on itself, with a test feature.
@@ -135,17 +164,20 @@ mod tests {
     #[test]
     fn upward_edges_are_found() {
         let manifest = "[package]\nname = \"hi-curve\"\n\n[dependencies]\nglam.workspace = true\nhi-surface = { path = \"../hi-surface\" }\n\n[dev-dependencies]\nhi-raytrace.workspace = true\n\n[dependencies.hi-cli]\npath = \"x\"\n";
-        let mut deps = hi_dependencies(manifest).unwrap();
-        deps.sort();
-        assert_eq!(deps, ["hi-cli", "hi-raytrace", "hi-surface"]);
-        let deps = hi_dependencies("[package]\nname = \"hi-x\"\n[features]\nhi-y = []\n").unwrap();
+        let names = |m: &str| -> Vec<(String, bool)> {
+            hi_dependencies(m).unwrap().into_iter().map(|d| (d.package, d.dev)).collect()
+        };
+        let dep = |p: &str, dev: bool| (p.to_owned(), dev);
+        assert_eq!(
+            names(manifest),
+            [dep("hi-cli", false), dep("hi-raytrace", true), dep("hi-surface", false)]
+        );
+        let deps = names("[package]\nname = \"hi-x\"\n[features]\nhi-y = []\n");
         assert!(deps.is_empty(), "features are not dependencies: {deps:?}");
         // A renamed dependency counts by its package; a target's tables count too.
         let renamed = "[dependencies]\ncurve = { package = \"hi-curve\", path = \"x\" }\n\
                        [target.'cfg(unix)'.dev-dependencies]\nhi-mesh = \"0.1\"\n";
-        let mut deps = hi_dependencies(renamed).unwrap();
-        deps.sort();
-        assert_eq!(deps, ["hi-curve", "hi-mesh"]);
+        assert_eq!(names(renamed), [dep("hi-curve", false), dep("hi-mesh", true)]);
         assert!(hi_dependencies("[dependencies\nhi-x = 1").is_err(), "not TOML");
     }
 
@@ -167,6 +199,13 @@ mod tests {
         assert_eq!(violations(&sideways).unwrap().len(), 1);
         let itself = [m("hi-curve", "[dev-dependencies]\nhi-curve = { path = \".\" }\n")];
         assert!(violations(&itself).unwrap().is_empty(), "its tests, with a feature");
+        // The test kit: any crate's dev-dependency, nobody's dependency, and on nothing.
+        let kit = [m("hi-interval", "[dev-dependencies]\nhi-testkit.workspace = true\n")];
+        assert!(violations(&kit).unwrap().is_empty());
+        let kit = [m("hi-curve", "[dependencies]\nhi-testkit.workspace = true\n")];
+        assert_eq!(violations(&kit).unwrap().len(), 1, "outside the dev-dependencies");
+        let kit = [m("hi-testkit", "[dependencies]\nhi-interval.workspace = true\n")];
+        assert_eq!(violations(&kit).unwrap().len(), 1, "the kit depends on no hi-* crate");
         let foundation = [m("hi-bezier", "[dependencies]\nhi-interval.workspace = true\n")];
         assert_eq!(
             violations(&foundation).unwrap().len(),
@@ -191,7 +230,7 @@ mod tests {
     fn every_crate_directory_has_a_layer() {
         for entry in std::fs::read_dir(crate::project_root().join("crates")).unwrap() {
             let name = entry.unwrap().file_name().into_string().unwrap();
-            assert!(layer_of(&name).is_some(), "crates/{name} has no layer");
+            assert!(name == TEST_KIT || layer_of(&name).is_some(), "crates/{name} has no layer");
         }
     }
 }

@@ -11,21 +11,8 @@ use hi_bezier::{
     Aabb, Bernstein, BezierCurve, BezierPatch, ParamRange, RationalBezierCurve, TriangularPatch,
     convex_hull_2d, polygon_area,
 };
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 fn point2() -> impl Strategy<Value = DVec2> {
     (-10.0..10.0f64, -10.0..10.0f64).prop_map(|(x, y)| DVec2::new(x, y))
@@ -40,7 +27,7 @@ fn curve2(max_points: usize) -> impl Strategy<Value = BezierCurve<DVec2>> {
 }
 
 proptest! {
-    #![proptest_config(config(256))]
+    #![proptest_config(proptest_config(256))]
 
     /// Σᵢ Bⁿᵢ(t) = 1 and every Bⁿᵢ(t) ≥ 0 on [0, 1].
     #[test]

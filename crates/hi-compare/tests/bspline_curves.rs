@@ -12,21 +12,8 @@ use hi_compare::bspline::{BSplineBasis, BSplineCurve};
 use hi_compare::bspline_interp::{EndCondition, InterpolatingSpline, Parameters};
 use hi_compare::nurbs::NurbsCurve;
 use hi_curve::ParamCurve;
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 fn points_2d(min: usize, max: usize) -> impl Strategy<Value = Vec<DVec2>> {
     prop::collection::vec(
@@ -238,7 +225,7 @@ fn not_a_knot_reproduces_cubics_and_natural_lines() {
 }
 
 proptest! {
-    #![proptest_config(config(128))]
+    #![proptest_config(proptest_config(128))]
 
     /// Partition of unity, non-negativity and local support (§2.9–2.10) on random clamped
     /// knot vectors with repeated knots, of every degree up to 5.

@@ -13,11 +13,8 @@ use hi_compare::bspline::BSplineCurve;
 use hi_compare::bspline_fit::{
     BSplineFit, BSplineFitOptions, BSplineSurface, EndCondition, Parameters, insert_knots,
 };
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-fn config(cases: u32) -> ProptestConfig {
-    ProptestConfig { cases, failure_persistence: None, ..ProptestConfig::default() }
-}
 
 /// A bumpy open surface cut into `n_slices` slices of different lengths and uneven spacing.
 fn bumpy_slices(n_slices: usize) -> Vec<Vec<DVec3>> {
@@ -476,7 +473,7 @@ fn meshes_sample_the_surface() {
 }
 
 proptest! {
-    #![proptest_config(config(48))]
+    #![proptest_config(proptest_config(48))]
 
     /// Random slices of random lengths over a jittered grid: the fit interpolates every point
     /// and its exact Bézier patches agree with it.

@@ -7,21 +7,8 @@
 use glam::{DVec2, DVec3};
 use hi_compare::cardinal::{Closure, HermiteSpline, Tcb, chord_length_parameters};
 use hi_curve::ParamCurve;
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 fn points_3d(min: usize, max: usize) -> impl Strategy<Value = Vec<DVec3>> {
     prop::collection::vec(
@@ -121,7 +108,7 @@ fn chord_length_parameters_open_and_closed() {
 }
 
 proptest! {
-    #![proptest_config(config(128))]
+    #![proptest_config(proptest_config(128))]
 
     /// Catmull-Rom (§2.6) passes through xᵢ at t = i/s with tangent (x_{i+1} − x_{i−1})/2 per
     /// unit segment; the ends of an open one have the end secant (reflected phantom point).

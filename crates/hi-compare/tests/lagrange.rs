@@ -5,21 +5,8 @@
 
 use glam::DVec2;
 use hi_compare::lagrange::{LagrangeBasis, LagrangeCurve};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 /// The r-th derivative of Σ cₖ uᵏ, Σₖ≥ᵣ cₖ·k!/(k − r)!·uᵏ⁻ʳ by Horner's rule.
 fn poly(coeffs: &[f64], u: f64, order: usize) -> f64 {
@@ -86,7 +73,7 @@ fn to_bezier_of_huge_degree_overflows_cleanly() {
 }
 
 proptest! {
-    #![proptest_config(config(256))]
+    #![proptest_config(proptest_config(256))]
 
     /// Lagrange interpolation reproduces every polynomial of degree < n (§2.4), with its
     /// derivatives, on random distinct nodes.

@@ -7,6 +7,7 @@ use glam::{DVec2, DVec3};
 use hi_bezier::BezierCurve;
 use hi_curve::bezier::{BasisPieces, BezierScheme, HermiteDegree};
 use hi_curve::{Error, HarmonicCurve, Sigma};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
 
 /// max over k and a dense t grid of |σₖ(t) − approximation|.
@@ -372,22 +373,8 @@ fn bad_tolerances_and_counts_are_errors() {
     }
 }
 
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
-
 proptest! {
-    #![proptest_config(config(48))]
+    #![proptest_config(proptest_config(48))]
 
     #[test]
     fn hermite_bounds_hold_on_random_curves(seed in 0u64..1_000_000, n in 2usize..24, exp in 2i32..8) {

@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use glam::DVec2;
 use hi_curve::{Error, HarmonicCurve, NonUniformCurve, NonUniformVariant, chord_length_params};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
 
 fn distinct_params(n: usize) -> impl Strategy<Value = Vec<f64>> {
@@ -28,22 +29,8 @@ fn uniform(n: usize) -> Vec<f64> {
     (0..n).map(|k| k as f64 / n as f64).collect()
 }
 
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
-
 proptest! {
-    #![proptest_config(config(128))]
+    #![proptest_config(proptest_config(128))]
 
     /// The nodes variant passes through xₖ at tₖ, for any distinct nodes.
     #[test]

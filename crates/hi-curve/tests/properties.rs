@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 
 use glam::{DMat2, DVec2, DVec3};
 use hi_curve::{HarmonicCurve, ParamCurve, PlaneCurve, Sigma};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
 
 /// The suggested tolerance of docs/math.md for O(1) data.
@@ -29,20 +30,6 @@ fn points_3d(max_n: usize) -> impl Strategy<Value = Vec<DVec3>> {
 
 fn max_norm2(a: DVec2, b: DVec2, scale: f64) -> bool {
     (a - b).length() <= 1e-11 * (1.0 + scale)
-}
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
 }
 
 /// σₖ(j/n) = δⱼₖ (for j, k reduced mod n), up to the rounding of j/n to a double
@@ -113,7 +100,7 @@ fn regular_polygon_is_a_circle_at(
 }
 
 proptest! {
-    #![proptest_config(config(256))]
+    #![proptest_config(proptest_config(256))]
 
     /// σₖ(j/n) = δⱼₖ, up to the rounding of j/n to a double (|σ′| ≤ πn/… times 2⁻⁵⁴).
     #[test]

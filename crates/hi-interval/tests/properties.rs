@@ -8,20 +8,8 @@
 //! comparison with an independent reference).
 
 use hi_interval::{Interval, Scalar};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-use proptest::test_runner::Config as ProptestConfig;
-
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 /// An interval [c − r, c + r]-ish and a point in it, from fractions in [0, 1].
 fn interval_and_point(c: f64, w: f64, s: f64) -> (Interval, f64) {
@@ -53,7 +41,7 @@ fn formula<S: Scalar>(x: S, y: S) -> S {
 }
 
 proptest! {
-    #![proptest_config(config(4096))]
+    #![proptest_config(proptest_config(4096))]
 
     #[test]
     fn binary_operations_include_point_results(

@@ -13,22 +13,8 @@ use hi_raytrace::{
     MeshObject, Ray,
 };
 use hi_surface::{HarmonicSurface, MeshOptions, sphere, torus};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-use proptest::test_runner::Config as ProptestConfig;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 fn settings(method: IntervalMethod) -> HarmonicOptions {
     HarmonicOptions { method, ..HarmonicOptions::default() }
@@ -402,7 +388,7 @@ fn any_hit_occlusion_matches_the_nearest_hit() {
 }
 
 proptest! {
-    #![proptest_config(config(64))]
+    #![proptest_config(proptest_config(64))]
 
     /// Random rays aimed near the sphere: Krawczyk finds the analytic root.
     #[test]

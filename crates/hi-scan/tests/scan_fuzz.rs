@@ -4,19 +4,8 @@
 //! coverage-guided fuzzing with `cargo fuzz`.)
 
 use hi_scan::scan::{ScanFormat, parse_scan};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 /// A small valid file of each format.
 fn seed(format: ScanFormat) -> Vec<u8> {
@@ -132,7 +121,7 @@ fn apply(bytes: &mut Vec<u8>, edit: &Edit) {
 }
 
 proptest! {
-    #![proptest_config(config(2000))]
+    #![proptest_config(proptest_config(2000))]
 
     /// Random bytes: an error or a scan, never a panic.
     #[test]

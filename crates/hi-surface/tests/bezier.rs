@@ -6,21 +6,8 @@
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_surface::{Error, HarmonicSurface, torus};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 /// A bumpy m×n closed surface: a torus with a deterministic ripple.
 fn bumpy(m: usize, n: usize, seed: f64) -> HarmonicSurface<DVec3> {
@@ -222,7 +209,7 @@ fn bad_tolerances_and_small_grids_are_errors() {
 }
 
 proptest! {
-    #![proptest_config(config(12))]
+    #![proptest_config(proptest_config(12))]
 
     #[test]
     fn hermite_bounds_hold_on_random_surfaces(

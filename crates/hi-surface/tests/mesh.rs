@@ -10,6 +10,7 @@ use hi_surface::{
     CurvatureColoring, CurvatureQuantity, Error, HarmonicSurface, MeshOptions, Seam, sphere, torus,
 };
 use hi_surface::{ParamRange, ParamWindow};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
 
 fn mesh(s: &HarmonicSurface<DVec3>, opts: MeshOptions) -> TriangleMesh {
@@ -360,7 +361,7 @@ fn invalid_options_are_errors() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(proptest_config(24))]
 
     /// Random grids, windows and resolutions: normals unit and finite, counts as predicted for
     /// a surface without collapsed rows, triangles consistently oriented.

@@ -6,21 +6,8 @@ use std::f64::consts::PI;
 
 use glam::{DMat3, DVec3};
 use hi_surface::{Axis, Error, HarmonicSurface, sphere, torus};
+use hi_testkit::proptest_config;
 use proptest::prelude::*;
-
-/// A reproducible configuration: `cases` cases and a fixed seed unless `PROPTEST_CASES` or
-/// `PROPTEST_RNG_SEED` say otherwise, and no failure files written into the source tree.
-fn config(cases: u32) -> ProptestConfig {
-    let mut config = ProptestConfig::default();
-    if std::env::var_os("PROPTEST_CASES").is_none() {
-        config.cases = cases;
-    }
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = proptest::test_runner::RngSeed::Fixed(20_051_122);
-    }
-    config.failure_persistence = None;
-    config
-}
 
 fn grid(max: usize) -> impl Strategy<Value = Vec<Vec<DVec3>>> {
     (1..max, 1..max).prop_flat_map(|(m, n)| {
@@ -36,7 +23,7 @@ fn grid(max: usize) -> impl Strategy<Value = Vec<Vec<DVec3>>> {
 }
 
 proptest! {
-    #![proptest_config(config(96))]
+    #![proptest_config(proptest_config(96))]
 
     /// p(j/m, k/n) = xⱼₖ.
     #[test]
