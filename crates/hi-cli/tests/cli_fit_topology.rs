@@ -17,6 +17,7 @@ use std::path::Path;
 use std::process::Command;
 
 use common::{TempFile, bad, num, run};
+use hi_testkit::skip;
 
 /// A triangle mesh as OBJ text.
 fn obj(points: &[[f64; 3]], triangles: &[[usize; 3]]) -> String {
@@ -95,16 +96,6 @@ fn scan_file(text: &str, ext: &str) -> TempFile {
     let file = TempFile::path_with(ext);
     std::fs::write(file.as_path(), text).expect("temp file is writable");
     file
-}
-
-/// Whether the peer checks must run.
-fn require_peers() -> bool {
-    std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1")
-}
-
-fn skip(what: &str) {
-    assert!(!require_peers(), "HI_REQUIRE_PEERS=1, but {what}");
-    eprintln!("skipped: {what}");
 }
 
 /// The edges of a mesh with the number of triangles on each.
@@ -347,11 +338,7 @@ fn an_uneven_scan_whose_fine_grid_folds_is_fitted_on_the_median_grid() {
     // unevenly dense, so its zero set is first taken on the finer grid of its dense parts,
     // whose largest sheet does not map onto the square without folds. The fit then takes the
     // grid of the median spacing, as for evenly dense points, and succeeds.
-    let archive = Path::new("/usr/share/doc/libcgal-demo/data.tar.gz");
-    if !archive.exists() {
-        eprintln!("skipped: {} is absent (Debian's libcgal-demo)", archive.display());
-        return;
-    }
+    let Some(archive) = hi_testkit::cgal_demo_data() else { return };
     let dir = std::env::temp_dir().join(format!("hi-cli-radar-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let status = Command::new("tar")

@@ -262,7 +262,7 @@ fn live_scipy_matches() {
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn();
-    let required = std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1");
+    let required = hi_testkit::peers_required();
     let output = child.and_then(|mut c| {
         c.stdin.take().expect("piped").write_all(input.to_string().as_bytes())?;
         c.wait_with_output()

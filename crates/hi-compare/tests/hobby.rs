@@ -188,7 +188,7 @@ fn live_metapost_matches() {
     let cases = live_cases();
     let input = json!({"cases": cases.iter().map(Case::to_json).collect::<Vec<_>>()});
     let script = format!("{FIXTURE_DIR}/mpost_hobby.py");
-    let required = std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1");
+    let required = hi_testkit::peers_required();
     let child = Command::new("python3")
         .arg(&script)
         .stdin(Stdio::piped())

@@ -148,15 +148,9 @@ fn fixture(file: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/models").join(file)
 }
 
+/// A model of the shared folder beside the repository, where it is (see `hi_testkit`).
 fn model(file: &str) -> Option<PathBuf> {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/models").join(file);
-    if path.exists() {
-        Some(path)
-    } else {
-        eprintln!("{file} is absent (the shared data folder is not here); skipped");
-        None
-    }
+    hi_testkit::shared_model(file)
 }
 
 #[test]

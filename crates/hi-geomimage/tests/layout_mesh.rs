@@ -118,7 +118,7 @@ fn bad_options_are_refused() {
 /// wound and enclosing a positive volume, in every layout.
 #[test]
 fn trimesh_finds_the_written_meshes_watertight() {
-    let required = std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1");
+    let required = hi_testkit::peers_required();
     for layout in [Layout::Sphere, Layout::FlatOctahedron, Layout::Octahedron] {
         let m = layout_mesh(&bumpy_surface(layout, 32, 32), layout, 2).unwrap().mesh;
         let path = std::env::temp_dir()

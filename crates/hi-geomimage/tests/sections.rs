@@ -436,15 +436,9 @@ fn given_sections_of_equally_spaced_spherical_coordinates_fit_with_some_oscillat
     assert!(matches!(e, Error::InvalidOption { name: "sections", .. }), "{e}");
 }
 
+/// A model of the shared folder beside the repository, where it is (see `hi_testkit`).
 fn model(file: &str) -> Option<PathBuf> {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/models").join(file);
-    if path.exists() {
-        Some(path)
-    } else {
-        eprintln!("{file} is absent (the shared data folder is not here); skipped");
-        None
-    }
+    hi_testkit::shared_model(file)
 }
 
 #[test]

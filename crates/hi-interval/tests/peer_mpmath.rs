@@ -333,7 +333,7 @@ fn live(op: &str) {
         std::env::var("HI_PEER_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(100_000usize);
     let cases = cases(op, n_cases, 0x5eed_2005);
     let input: String = cases.iter().map(|c| c.line() + "\n").collect();
-    let required = std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1");
+    let required = hi_testkit::peers_required();
     let reply = match run_script(&input, &[]) {
         Ok(r) => r,
         Err(why) => {

@@ -18,18 +18,10 @@ use std::process::Command;
 use glam::{DVec2, DVec3};
 use hi_mesh::export::{self, Connectivity, NamedMesh};
 use hi_mesh::{Error, TriangleMesh};
+use hi_testkit::skip;
 
 const VALIDATOR_DIR: &str =
     concat!(env!("CARGO_MANIFEST_DIR"), "/../../xtask/peers/gltf-validator");
-
-fn require_peers() -> bool {
-    std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1")
-}
-
-fn skip(what: &str) {
-    assert!(!require_peers(), "HI_REQUIRE_PEERS=1, but {what}");
-    eprintln!("SKIPPED: {what}");
-}
 
 /// A directory of this test's own.
 fn dir(name: &str) -> PathBuf {

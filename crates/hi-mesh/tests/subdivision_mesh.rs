@@ -223,15 +223,13 @@ fn to_triangle_mesh_goes_to_gltf() {
 fn a_real_mesh_with_a_pinched_vertex_is_rejected() {
     // cow.obj has one vertex where two fans of faces touch (checked independently when the
     // peers were chosen); spot.obj is a closed manifold.
-    let models =
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/models");
-    let (Ok(cow), Ok(spot)) = (
-        std::fs::read_to_string(models.join("cow.obj")),
-        std::fs::read_to_string(models.join("spot.obj")),
-    ) else {
-        eprintln!("SKIPPED: the real meshes in ../shared/data/models are absent");
+    let (Some(cow), Some(spot)) =
+        (hi_testkit::shared_model("cow.obj"), hi_testkit::shared_model("spot.obj"))
+    else {
         return;
     };
+    let (cow, spot) =
+        (std::fs::read_to_string(cow).unwrap(), std::fs::read_to_string(spot).unwrap());
     let err = PolyMesh::from_obj_str(&cow).expect_err("pinched vertex");
     assert!(matches!(err, MeshError::NonManifoldVertex { .. }), "{err}");
     let spot = PolyMesh::from_obj_str(&spot).expect("spot");

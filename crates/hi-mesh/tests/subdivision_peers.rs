@@ -8,7 +8,7 @@
 //! - the committed fixtures of `fixtures/subdivision/<peer>/` (made by `generate.py` there),
 //!   always checked;
 //! - the live peers, run through `fixtures/subdivision/peer.py` on the same inputs and on a
-//!   real mesh from `../shared/data/models`; a missing peer or model is skipped with a
+//!   real mesh from `fixtures/models`; a missing peer is skipped with a
 //!   message, unless `HI_REQUIRE_PEERS=1`, which makes it a failure.
 
 use std::collections::HashMap;
@@ -17,6 +17,7 @@ use std::process::Command;
 
 use glam::DVec3;
 use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
+use hi_testkit::skip;
 
 fn project_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -24,15 +25,6 @@ fn project_root() -> PathBuf {
 
 fn fixtures() -> PathBuf {
     project_root().join("fixtures/subdivision")
-}
-
-fn require_peers() -> bool {
-    std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1")
-}
-
-fn skip(what: &str) {
-    assert!(!require_peers(), "HI_REQUIRE_PEERS=1, but {what}");
-    eprintln!("SKIPPED: {what}");
 }
 
 fn scheme(name: &str) -> Scheme {
@@ -242,13 +234,9 @@ fn live_peers_match() {
             (s.to_string(), m)
         })
         .collect();
-    let models = project_root().join("../shared/data/models");
-    // spot.obj: closed, 2930 vertices, 5856 triangles (SOURCES.md there).
-    match PolyMesh::load(models.join("spot.obj")) {
-        Ok(spot) => inputs.push(("spot".into(), spot)),
-        // Third-party data, not a peer program: its absence is said, never an error.
-        Err(e) => eprintln!("real mesh skipped: the shared data folder is absent ({e})"),
-    }
+    // spot.obj: closed, 2930 vertices, 5856 triangles (fixtures/models/SOURCES.md).
+    let spot = PolyMesh::load(project_root().join("fixtures/models/spot.obj")).expect("spot");
+    inputs.push(("spot".into(), spot));
     let mut jobs = String::new();
     let mut expected = Vec::new();
     for (name, mesh) in &inputs {

@@ -314,17 +314,9 @@ fn formats_come_from_extensions() {
     assert!(e.to_string().starts_with("OBJ: cannot read no/such/file.obj:"), "{e}");
 }
 
-/// The shared folder of third-party models, if present.
+/// The shared folder of third-party models, where it is (see `hi_testkit`).
 fn models() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/models");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "real-model checks skipped: the shared data folder (../shared/data/models) is absent"
-        );
-        None
-    }
+    hi_testkit::shared_models()
 }
 
 #[test]
@@ -350,7 +342,7 @@ fn real_models_have_the_counts_their_sources_list() {
     for (file, points, triangles, normals) in expected {
         let path = dir.join(file);
         if !path.exists() {
-            eprintln!("{file} is absent; skipped");
+            hi_testkit::skip(&format!("the shared model {file} is absent"));
             continue;
         }
         let scan = read_scan(&path).unwrap_or_else(|e| panic!("{file}: {e}"));

@@ -137,7 +137,7 @@ fn the_mesh_loader_computes_flat_normals() {
         }
     }
     // trimesh, as a peer, sees the same points.
-    let required = std::env::var("HI_REQUIRE_PEERS").is_ok_and(|v| v == "1");
+    let required = hi_testkit::peers_required();
     let script = "import sys, trimesh\n\
                   s = trimesh.load(sys.argv[1], force='mesh', process=False)\n\
                   print(' '.join('%.6f %.6f %.6f' % tuple(v) for v in s.vertices))";

@@ -31,3 +31,107 @@ pub fn proptest_config(cases: u32) -> Config {
     config.failure_persistence = None;
     config
 }
+
+/// The variable that makes every check needing something outside the repository run (a peer
+/// program, a data set): `HI_REQUIRE_PEERS=1`, as CI sets. Without it, such a check that cannot
+/// run says so and passes.
+pub const REQUIRE_PEERS: &str = "HI_REQUIRE_PEERS";
+
+/// The variable that tells the checks reading the shared models (`../shared/data/models`,
+/// beside the repository) to skip them even under [`REQUIRE_PEERS`]: for a machine that cannot
+/// have that folder, which then says so.
+pub const SKIP_SHARED_DATA: &str = "HI_SKIP_SHARED_DATA";
+
+/// Debian's `libcgal-demo` data: meshes and point sets of every topology, read where installed
+/// and never committed.
+pub const CGAL_DEMO_DATA: &str = "/usr/share/doc/libcgal-demo/data.tar.gz";
+
+fn set(variable: &str) -> bool {
+    std::env::var(variable).is_ok_and(|v| v == "1")
+}
+
+/// Whether the checks that need something outside the repository must run
+/// ([`REQUIRE_PEERS`]`=1`).
+#[must_use]
+pub fn peers_required() -> bool {
+    set(REQUIRE_PEERS)
+}
+
+/// Says that a check is skipped because `what` is missing, on standard error; a failure
+/// instead when [`peers_required`].
+///
+/// # Panics
+///
+/// When [`REQUIRE_PEERS`]`=1`: a check that must run could not.
+#[track_caller]
+pub fn skip(what: &str) {
+    assert!(!peers_required(), "{REQUIRE_PEERS}=1, but {what}");
+    eprintln!("skipped: {what}");
+}
+
+/// The workspace's root directory.
+#[must_use]
+pub fn workspace_root() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The folder of third-party models beside the repository (`../shared/data/models`), if it is
+/// there. Where it is not, the check is skipped ([`skip`]: a failure under [`REQUIRE_PEERS`]),
+/// unless [`SKIP_SHARED_DATA`]`=1` says the machine cannot have it.
+///
+/// # Panics
+///
+/// When the folder is absent, [`REQUIRE_PEERS`]`=1` and [`SKIP_SHARED_DATA`] is not set.
+#[track_caller]
+#[must_use]
+pub fn shared_models() -> Option<std::path::PathBuf> {
+    let dir = workspace_root().join("../shared/data/models");
+    if dir.is_dir() {
+        return Some(dir);
+    }
+    if set(SKIP_SHARED_DATA) {
+        eprintln!("skipped, as {SKIP_SHARED_DATA}=1 asks: the shared models are not here");
+    } else {
+        skip(&format!(
+            "the shared models (../shared/data/models) are absent; {SKIP_SHARED_DATA}=1 skips \
+             their checks on a machine that cannot have them"
+        ));
+    }
+    None
+}
+
+/// The model `file` of [`shared_models`], if the folder is there; a missing file in a present
+/// folder is skipped as [`skip`] says.
+///
+/// # Panics
+///
+/// As [`shared_models`], and when the folder is there without the file under
+/// [`REQUIRE_PEERS`]`=1`.
+#[track_caller]
+#[must_use]
+pub fn shared_model(file: &str) -> Option<std::path::PathBuf> {
+    let path = shared_models()?.join(file);
+    if path.is_file() {
+        Some(path)
+    } else {
+        skip(&format!("the shared model {file} is absent"));
+        None
+    }
+}
+
+/// [`CGAL_DEMO_DATA`], if `libcgal-demo` is installed; else the check is skipped ([`skip`]).
+///
+/// # Panics
+///
+/// When the archive is absent and [`REQUIRE_PEERS`]`=1`.
+#[track_caller]
+#[must_use]
+pub fn cgal_demo_data() -> Option<std::path::PathBuf> {
+    let path = std::path::PathBuf::from(CGAL_DEMO_DATA);
+    if path.is_file() {
+        Some(path)
+    } else {
+        skip(&format!("{CGAL_DEMO_DATA} is absent (Debian's libcgal-demo)"));
+        None
+    }
+}
