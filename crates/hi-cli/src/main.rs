@@ -24,6 +24,7 @@ mod args;
 mod cli;
 mod commands;
 mod error;
+mod help;
 mod input;
 mod output;
 

@@ -47,7 +47,8 @@ fn bezier_and_interval_agree_on_a_fitted_scan() {
         .expect("converts");
     let bound = patches.report.bound;
     assert!(bound <= 1e-4, "the conversion's bound {bound}");
-    let bezier = BezierObject::from_surface(&patches, &BezierOptions::default()).expect("patches");
+    let bezier =
+        BezierObject::try_from_surface(&patches, &BezierOptions::default()).expect("patches");
     let interval =
         HarmonicObject::try_new(surface, &HarmonicOptions::default()).expect("the surface");
     let camera =

@@ -187,7 +187,7 @@ pub enum Error {
     },
     /// An error from the harmonic curves of `hi-curve` (a [`crate::CurveKind::Harmonic`] or
     /// [`crate::CurveKind::Trig`] curve).
-    Harmonic(hi_curve::Error),
+    Curve(hi_curve::Error),
     /// An error from `hi-mesh` (a triangle mesh of a B-spline surface).
     Mesh(hi_mesh::Error),
 }
@@ -281,7 +281,7 @@ impl fmt::Display for Error {
             Error::CoincidentSlices { first, second } => {
                 write!(f, "slices {first} and {second} coincide (zero chord length between them)")
             }
-            Error::Harmonic(e) => write!(f, "{e}"),
+            Error::Curve(e) => write!(f, "{e}"),
             Error::Mesh(e) => write!(f, "{e}"),
         }
     }
@@ -290,7 +290,7 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
-            Error::Harmonic(e) => Some(e),
+            Error::Curve(e) => Some(e),
             Error::Mesh(e) => Some(e),
             _ => None,
         }
@@ -299,7 +299,7 @@ impl std::error::Error for Error {
 
 impl From<hi_curve::Error> for Error {
     fn from(e: hi_curve::Error) -> Self {
-        Error::Harmonic(e)
+        Error::Curve(e)
     }
 }
 

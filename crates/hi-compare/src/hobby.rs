@@ -153,8 +153,8 @@ impl Join {
 /// use hi_compare::hobby::{HobbyOptions, Tension};
 ///
 /// // z₀{curl 2}..tension atleast 1..z₁..…..{curl 0}zₙ₋₁
-/// let config = HobbyOptions::open().with_curls(2.0, 0.0).with_tension(Tension::at_least(1.0));
-/// assert!(!config.closed);
+/// let options = HobbyOptions::open().with_curls(2.0, 0.0).with_tension(Tension::at_least(1.0));
+/// assert!(!options.closed);
 /// assert_eq!(HobbyOptions::default(), HobbyOptions::open());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -281,7 +281,7 @@ pub struct HobbyCurve {
 }
 
 impl HobbyCurve {
-    /// The METAPOST path through `points` with the ends and tensions of `config`.
+    /// The METAPOST path through `points` with the ends and tensions of `options`.
     ///
     /// # Errors
     ///
@@ -289,22 +289,22 @@ impl HobbyCurve {
     ///   coordinate, [`Error::TooFewPoints`] for a single point;
     /// - [`Error::ParameterOutOfBounds`] for a tension below 3/4 or not finite, or a curl that
     ///   is negative or not finite;
-    /// - [`Error::InvalidCount`] if `config.joins` is neither empty nor one per segment.
-    pub fn try_new(points: Vec<DVec2>, config: &HobbyOptions) -> Result<Self, Error> {
+    /// - [`Error::InvalidCount`] if `options.joins` is neither empty nor one per segment.
+    pub fn try_new(points: Vec<DVec2>, options: &HobbyOptions) -> Result<Self, Error> {
         check_points(&points)?;
         let n = points.len();
         if n < 2 {
             return Err(Error::TooFewPoints { what: "a Hobby curve", needed: 2, got: n });
         }
-        let n_segments = if config.closed { n } else { n - 1 };
-        let joins = if config.joins.is_empty() {
-            vec![Join::uniform(config.tension); n_segments]
-        } else if config.joins.len() == n_segments {
-            config.joins.clone()
+        let n_segments = if options.closed { n } else { n - 1 };
+        let joins = if options.joins.is_empty() {
+            vec![Join::uniform(options.tension); n_segments]
+        } else if options.joins.len() == n_segments {
+            options.joins.clone()
         } else {
             return Err(Error::InvalidCount {
                 what: "number of joins",
-                value: config.joins.len(),
+                value: options.joins.len(),
                 expected: "one per segment: n - 1 for an open path of n points, n for a closed one",
             });
         };
@@ -312,9 +312,9 @@ impl HobbyCurve {
             check_tension(join.start)?;
             check_tension(join.end)?;
         }
-        if !config.closed {
-            check_curl(config.start_curl)?;
-            check_curl(config.end_curl)?;
+        if !options.closed {
+            check_curl(options.start_curl)?;
+            check_curl(options.end_curl)?;
         }
 
         let mut knots: Vec<Knot> = points
@@ -333,10 +333,10 @@ impl HobbyCurve {
             knots[k].right_tension = join.start.signed();
             knots[(k + 1) % n].left_tension = join.end.signed();
         }
-        if !config.closed {
+        if !options.closed {
             knots[0].left = Side::Endpoint;
-            knots[0].right = Side::Curl(config.start_curl);
-            knots[n - 1].left = Side::Curl(config.end_curl);
+            knots[0].right = Side::Curl(options.start_curl);
+            knots[n - 1].left = Side::Curl(options.end_curl);
             knots[n - 1].right = Side::Endpoint;
         }
         make_choices(&mut knots);
@@ -346,7 +346,7 @@ impl HobbyCurve {
             .map(|k| HobbyKnot { point: k.point, precontrol: k.pre, postcontrol: k.post })
             .collect();
         let centroid = points.iter().copied().sum::<DVec2>() / n as f64;
-        Ok(Self { knots, closed: config.closed, scale: spread(&points, centroid) })
+        Ok(Self { knots, closed: options.closed, scale: spread(&points, centroid) })
     }
 
     /// The METAPOST path through `points`.
@@ -355,8 +355,8 @@ impl HobbyCurve {
     ///
     /// Panics on invalid input; see [`HobbyCurve::try_new`].
     #[must_use]
-    pub fn new(points: Vec<DVec2>, config: &HobbyOptions) -> Self {
-        Self::try_new(points, config).unwrap_or_else(|e| panic!("{e}"))
+    pub fn new(points: Vec<DVec2>, options: &HobbyOptions) -> Self {
+        Self::try_new(points, options).unwrap_or_else(|e| panic!("{e}"))
     }
 
     /// The knots with their control points, as METAPOST reports them.
@@ -958,8 +958,8 @@ mod tests {
     #[test]
     fn coincident_points_give_degenerate_segments() {
         let a = DVec2::new(1.0, 2.0);
-        for config in [HobbyOptions::open(), HobbyOptions::closed()] {
-            let curve = HobbyCurve::new(vec![a, a, a], &config);
+        for options in [HobbyOptions::open(), HobbyOptions::closed()] {
+            let curve = HobbyCurve::new(vec![a, a, a], &options);
             for knot in curve.knots() {
                 assert_eq!((knot.precontrol, knot.postcontrol), (a, a));
             }
@@ -972,8 +972,8 @@ mod tests {
     fn derivatives_match_finite_differences() {
         let pts =
             vec![DVec2::ZERO, DVec2::new(3.0, 1.0), DVec2::new(4.0, 4.0), DVec2::new(1.0, 5.0)];
-        for config in [HobbyOptions::open(), HobbyOptions::closed()] {
-            let curve = HobbyCurve::new(pts.clone(), &config);
+        for options in [HobbyOptions::open(), HobbyOptions::closed()] {
+            let curve = HobbyCurve::new(pts.clone(), &options);
             let h = 1e-6;
             for t in [0.05, 0.3, 0.61, 0.9] {
                 for order in 0..3 {

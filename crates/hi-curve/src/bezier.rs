@@ -266,7 +266,7 @@ impl BasisPieces {
     /// The zeros of σ′ in [0, 1), from interval Newton, reduced modulo 1 and sorted; 0 is one.
     fn sigma_prime_zeros(n: usize) -> Result<Vec<f64>, Error> {
         let sigma = Sigma::try_new(n)?;
-        let roots = sigma.deriv_roots(Interval::new(-0.01, 1.01), &RootOptions::default());
+        let roots = sigma.deriv_roots(1, Interval::new(-0.01, 1.01), &RootOptions::default());
         if !roots.complete {
             return Err(Error::Singular { what: "the zeros of σ′ (the root search hit a cap)" });
         }

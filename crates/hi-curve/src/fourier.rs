@@ -23,7 +23,7 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::{Fft, FftPlanner};
 
 use crate::ControlPoint;
-use crate::trig::{for_each_harmonic, pow_order, quarter_turns};
+use crate::sinpi::{for_each_harmonic, pow_order, quarter_turns};
 
 thread_local! {
     static PLANNER: RefCell<RealFftPlanner<f64>> = RefCell::new(RealFftPlanner::new());

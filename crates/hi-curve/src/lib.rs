@@ -70,9 +70,9 @@ mod point;
 mod resample;
 #[cfg(feature = "serde")]
 mod serde_impls;
+mod sinpi;
 #[cfg(feature = "testing")]
 pub mod testing;
-mod trig;
 mod trigonometric;
 
 pub use basis::{Form, Sigma};

@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 
 use crate::differential::ParamCurve;
 use crate::point::check_points;
-use crate::trig::{for_each_harmonic, pow_order, quarter_turns};
+use crate::sinpi::{for_each_harmonic, pow_order, quarter_turns};
 use crate::{ControlPoint, Error, Fourier};
 
 /// The trigonometric interpolant of §2.13 (frequencies 0…n−1), real part per coordinate.

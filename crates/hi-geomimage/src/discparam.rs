@@ -48,7 +48,7 @@
 
 use glam::{DVec2, DVec3, IVec2};
 
-use crate::flat::{self, FlatMap, Freedom, RelaxSettings, Relaxation, solve_until_embedded};
+use crate::flat::{self, FlatMap, Freedom, RelaxOptions, Relaxation, solve_until_embedded};
 pub use crate::flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
 use crate::laplace::{CgOptions, Laplacian, NONE, Topology, head, tail};
 use crate::{Error, GeometryImage, MAX_TEXELS};
@@ -512,7 +512,7 @@ pub fn parameterise_disc(
     }
     let relaxation = Relaxation::new(positions, triangles, &topology, freedom, flat.as_deref());
     let settings =
-        RelaxSettings { rounds: options.rounds, sweeps: options.sweeps, cg, harmonic_iterations };
+        RelaxOptions { rounds: options.rounds, sweeps: options.sweeps, cg, harmonic_iterations };
     let done =
         relaxation.run(&mut lap, Some(&fixed), &|_: &Laplacian| zero.clone(), &mut map, settings);
     iterations += done.iterations;

@@ -457,7 +457,7 @@ pub(crate) struct Relaxation<'a> {
 
 /// Settings of [`Relaxation::run`].
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct RelaxSettings {
+pub(crate) struct RelaxOptions {
     pub(crate) rounds: usize,
     pub(crate) sweeps: usize,
     pub(crate) cg: CgOptions,
@@ -740,7 +740,7 @@ impl<'a> Relaxation<'a> {
         fixed: Option<&[bool]>,
         rhs: &dyn Fn(&Laplacian) -> Vec<[f64; 2]>,
         map: &mut FlatMap,
-        settings: RelaxSettings,
+        settings: RelaxOptions,
     ) -> RelaxReport {
         let mut report = RelaxReport {
             rounds: 0,
@@ -1150,7 +1150,7 @@ mod tests {
         let relaxation = Relaxation::new(&p, &t, &topology, freedom, None);
         let zero = vec![[0.0; 2]; p.len()];
         let before = quality(&p, &t, &harmonic, None).0.stretch_efficiency;
-        let settings = RelaxSettings {
+        let settings = RelaxOptions {
             rounds: 8,
             sweeps: 0,
             cg: CgOptions::new(1e-8, 100_000),
@@ -1171,7 +1171,7 @@ mod tests {
         assert_ne!(done.end, RoundsEnd::Unsolved, "{done:?}");
         // One iteration per solve: the first round is dropped, the map kept as it was.
         let mut map = harmonic.clone();
-        let starved = RelaxSettings { cg: CgOptions::new(1e-8, 1), ..settings };
+        let starved = RelaxOptions { cg: CgOptions::new(1e-8, 1), ..settings };
         let done = relaxation.run(
             &mut lap,
             Some(&fixed),
@@ -1186,7 +1186,7 @@ mod tests {
         );
         assert_eq!(map.uv, harmonic.uv, "the harmonic map kept");
         // No rounds asked for.
-        let none = RelaxSettings { rounds: 0, ..settings };
+        let none = RelaxOptions { rounds: 0, ..settings };
         let done =
             relaxation.run(&mut lap, Some(&fixed), &|_: &Laplacian| zero.clone(), &mut map, none);
         assert_eq!(

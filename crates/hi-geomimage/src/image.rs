@@ -85,7 +85,7 @@ impl GeometryImage {
     /// # Errors
     ///
     /// As [`GeometryImage::try_new`].
-    pub fn from_surface(surface: &HarmonicSurface<DVec3>) -> Result<Self, Error> {
+    pub fn try_from_surface(surface: &HarmonicSurface<DVec3>) -> Result<Self, Error> {
         Self::try_new(surface.m(), surface.n(), surface.points().to_vec())
     }
 }

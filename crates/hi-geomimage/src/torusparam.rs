@@ -88,7 +88,7 @@
 use glam::{DVec2, DVec3, IVec2};
 
 use crate::flat::{
-    self, FlatMap, Freedom, RelaxSettings, Relaxation, count_folds, form_rhs, inverse, reduce,
+    self, FlatMap, Freedom, RelaxOptions, Relaxation, count_folds, form_rhs, inverse, reduce,
     solve_until_embedded,
 };
 pub use crate::flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
@@ -393,7 +393,7 @@ pub fn parameterise_torus(
     let (harmonic, _) = flat::quality(positions, triangles, &map, None);
     let relaxation = Relaxation::new(positions, triangles, &topology, vec![Freedom::Free; n], None);
     let settings =
-        RelaxSettings { rounds: options.rounds, sweeps: options.sweeps, cg, harmonic_iterations };
+        RelaxOptions { rounds: options.rounds, sweeps: options.sweeps, cg, harmonic_iterations };
     let done = relaxation.run(
         &mut lap,
         Some(&fixed),

@@ -167,8 +167,8 @@ fn contraction(jacobian: &IntervalMatrix, precond: &[Vec<f64>]) -> f64 {
 /// preconditioner update (keep Yₙ₋₁ while rₙ ≤ rₙ₋₁).
 ///
 /// `f` evaluates an interval extension of f on a box, `jacobian` one of F′. Stops when Krawczyk's
-/// test has succeeded and the box is narrower than `config.tolerance`, when the iteration makes no
-/// progress, when X is proven to hold no zero, or after `config.max_iterations`. Boxes whose
+/// test has succeeded and the box is narrower than `options.tolerance`, when the iteration makes no
+/// progress, when X is proven to hold no zero, or after `options.max_iterations`. Boxes whose
 /// midpoint Jacobian is singular end with `Unknown`.
 ///
 /// # Examples
@@ -193,7 +193,7 @@ pub fn interval_newton<F, J>(
     f: F,
     jacobian: J,
     x: &[Interval],
-    config: &RootOptions,
+    options: &RootOptions,
 ) -> NewtonOutcome
 where
     F: Fn(&[Interval]) -> Vec<Interval>,
@@ -202,7 +202,7 @@ where
     let mut x = x.to_vec();
     let mut previous: Option<(Vec<Vec<f64>>, f64)> = None;
     let mut unique = false;
-    for it in 0..config.max_iterations {
+    for it in 0..options.max_iterations {
         if x.iter().any(|v| v.is_empty() || !v.is_bounded()) {
             return NewtonOutcome {
                 enclosure: Some(x),
@@ -251,13 +251,13 @@ where
         let stalled = next == x;
         x = next;
         previous = Some((precond, r));
-        if (unique && max_width(&x) <= config.tolerance) || stalled {
+        if (unique && max_width(&x) <= options.tolerance) || stalled {
             let verdict = if unique { Verdict::Unique } else { Verdict::Unknown };
             return NewtonOutcome { enclosure: Some(x), verdict, n_iterations: it + 1 };
         }
     }
     let verdict = if unique { Verdict::Unique } else { Verdict::Unknown };
-    NewtonOutcome { enclosure: Some(x), verdict, n_iterations: config.max_iterations }
+    NewtonOutcome { enclosure: Some(x), verdict, n_iterations: options.max_iterations }
 }
 
 /// A kept preconditioner must also give r ≤ this. The thesis keeps Yₙ₋₁ whenever rₙ ≤ rₙ₋₁, but
@@ -276,7 +276,7 @@ fn bisect_boxes(
     f: BoxFn<'_>,
     domain: &[Interval],
     leaf_width: f64,
-    config: &RootOptions,
+    options: &RootOptions,
 ) -> (Vec<Vec<Interval>>, bool) {
     let mut stack = vec![domain.to_vec()];
     let mut leaves = Vec::new();
@@ -284,7 +284,7 @@ fn bisect_boxes(
     let tol = if leaf_width.is_nan() { 0.0 } else { leaf_width };
     while let Some(b) = stack.pop() {
         n_boxes += 1;
-        if n_boxes > config.max_boxes {
+        if n_boxes > options.max_boxes {
             stack.push(b);
             leaves.extend(stack);
             return (leaves, false);
@@ -365,15 +365,15 @@ fn decide(
     jac: JacFn<'_>,
     domain: &[Interval],
     h: Vec<Interval>,
-    config: &RootOptions,
+    options: &RootOptions,
     depth: u32,
 ) -> Vec<Root> {
     if f(&h).iter().any(|v| !v.contains(0.0)) {
         return Vec::new(); // No zero in h.
     }
-    let eps = max_width(&h) * 0.25 + config.tolerance.max(0.0) + f64::MIN_POSITIVE;
+    let eps = max_width(&h) * 0.25 + options.tolerance.max(0.0) + f64::MIN_POSITIVE;
     let z: Vec<Interval> = h.iter().map(|v| v.inflate(eps)).collect();
-    let out = interval_newton(f, jac, &z, config);
+    let out = interval_newton(f, jac, &z, options);
     let Some(e) = out.enclosure else {
         return Vec::new(); // No zero in z ⊇ h.
     };
@@ -383,7 +383,7 @@ fn decide(
             .enumerate()
             .map(|(i, v)| (i, if v.lo().next_up() >= v.hi() { 0.0 } else { v.width() }))
             .fold((0, 0.0), |acc, c| if c.1 > acc.1 { c } else { acc });
-        if depth == 0 || w <= config.tolerance {
+        if depth == 0 || w <= options.tolerance {
             return vec![Root { enclosure: h, verdict: Verdict::Unknown }];
         }
         let (left, right) = h[dim].bisect();
@@ -391,7 +391,7 @@ fn decide(
         for half in [left, right] {
             let mut b = h.clone();
             b[dim] = half;
-            parts.extend(decide(f, jac, domain, b, config, depth - 1));
+            parts.extend(decide(f, jac, domain, b, options, depth - 1));
         }
         return merge_overlapping(parts)
             .into_iter()
@@ -401,7 +401,7 @@ fn decide(
                 }
                 // Two unique zeros with overlapping enclosures: one zero on the cut, or two?
                 // Krawczyk on the (narrow) hull decides it.
-                let out = interval_newton(f, jac, &r.enclosure, config);
+                let out = interval_newton(f, jac, &r.enclosure, options);
                 match out.enclosure {
                     Some(e) if out.verdict == Verdict::Unique => {
                         Root { enclosure: e, verdict: Verdict::Unique }
@@ -449,21 +449,21 @@ fn search(
     f: BoxFn<'_>,
     jac: Option<JacFn<'_>>,
     domain: &[Interval],
-    config: &RootOptions,
+    options: &RootOptions,
 ) -> Roots {
     if domain.is_empty() || domain.iter().any(|v| v.is_empty()) {
         return Roots { roots: Vec::new(), complete: true };
     }
     let leaf_width = match jac {
-        Some(_) => config.tolerance.max(config.newton_width),
-        None => config.tolerance,
+        Some(_) => options.tolerance.max(options.newton_width),
+        None => options.tolerance,
     };
-    let (leaves, complete) = bisect_boxes(f, domain, leaf_width, config);
+    let (leaves, complete) = bisect_boxes(f, domain, leaf_width, options);
     let clusters = cluster(leaves);
     let mut roots: Vec<Root> = clusters
         .into_iter()
         .flat_map(|h| match jac {
-            Some(jac) => decide(f, jac, domain, h, config, MAX_SPLIT_DEPTH),
+            Some(jac) => decide(f, jac, domain, h, options, MAX_SPLIT_DEPTH),
             None => vec![Root { enclosure: h, verdict: Verdict::Unknown }],
         })
         .collect();
@@ -496,12 +496,12 @@ fn search(
 /// let y = (5f64.sqrt() - 1.0) / 2.0;
 /// assert!(res.roots[1].enclosure[1].contains(y) || res.roots[1].enclosure[1].width() < 1e-9);
 /// ```
-pub fn find_roots<F, J>(f: F, jacobian: J, domain: &[Interval], config: &RootOptions) -> Roots
+pub fn find_roots<F, J>(f: F, jacobian: J, domain: &[Interval], options: &RootOptions) -> Roots
 where
     F: Fn(&[Interval]) -> Vec<Interval>,
     J: Fn(&[Interval]) -> IntervalMatrix,
 {
-    search(&f, Some(&jacobian), domain, config)
+    search(&f, Some(&jacobian), domain, options)
 }
 
 /// All zeros of f in `domain` by plain interval bisection (§5.6), without derivatives: every
@@ -516,11 +516,11 @@ where
 /// assert_eq!(res.roots.len(), 1);
 /// assert!(res.roots[0].enclosure[0].contains(2f64.sqrt()));
 /// ```
-pub fn bisect<F>(f: F, domain: &[Interval], config: &RootOptions) -> Roots
+pub fn bisect<F>(f: F, domain: &[Interval], options: &RootOptions) -> Roots
 where
     F: Fn(&[Interval]) -> Vec<Interval>,
 {
-    search(&f, None, domain, config)
+    search(&f, None, domain, options)
 }
 
 /// All zeros of a real function f in the interval `domain` (§5.6 bisection, then Krawczyk on each
@@ -544,14 +544,14 @@ where
 /// assert!(res.roots[0].enclosure.contains(1.0));
 /// assert!(res.roots[1].enclosure.contains(2.0)); // the double zero: enclosed, not unique
 /// ```
-pub fn find_roots_1d<F, D>(f: F, df: D, domain: Interval, config: &RootOptions) -> Roots1
+pub fn find_roots_1d<F, D>(f: F, df: D, domain: Interval, options: &RootOptions) -> Roots1
 where
     F: Fn(Interval) -> Interval,
     D: Fn(Interval) -> Interval,
 {
     let fv = |v: &[Interval]| vec![f(v[0])];
     let jac = |v: &[Interval]| IntervalMatrix::from_rows(vec![vec![df(v[0])]]);
-    let res = search(&fv, Some(&jac), &[domain], config);
+    let res = search(&fv, Some(&jac), &[domain], options);
     refine_1d(&f, Some(&df), res)
 }
 
@@ -566,12 +566,12 @@ where
 /// assert_eq!(res.roots.len(), 3); // π/2, 3π/2, 5π/2
 /// assert!(res.roots.iter().all(|r| r.verdict == Verdict::Exists));
 /// ```
-pub fn bisect_1d<F>(f: F, domain: Interval, config: &RootOptions) -> Roots1
+pub fn bisect_1d<F>(f: F, domain: Interval, options: &RootOptions) -> Roots1
 where
     F: Fn(Interval) -> Interval,
 {
     let fv = |v: &[Interval]| vec![f(v[0])];
-    let res = search(&fv, None, &[domain], config);
+    let res = search(&fv, None, &[domain], options);
     refine_1d(&f, None::<&fn(Interval) -> Interval>, res)
 }
 
@@ -640,10 +640,10 @@ mod tests {
     #[test]
     fn caps_stop_the_search() {
         // f ≡ 0: every box holds zeros; the box cap must stop the bisection.
-        let config =
+        let options =
             RootOptions { tolerance: 0.0, newton_width: 0.0, max_iterations: 5, max_boxes: 1000 };
-        let res = bisect_1d(|x: Interval| x * 0.0, Interval::new(0.0, 1.0), &config);
-        assert!(bisect(|v: &[Interval]| v.to_vec(), &[], &config).roots.is_empty(), "no dims");
+        let res = bisect_1d(|x: Interval| x * 0.0, Interval::new(0.0, 1.0), &options);
+        assert!(bisect(|v: &[Interval]| v.to_vec(), &[], &options).roots.is_empty(), "no dims");
         assert!(!res.complete, "capped");
         // f vanishes exactly at the cluster ends, so zeros exist there, but nothing is unique.
         assert!(res.roots.iter().all(|r| r.verdict != Verdict::Unique), "not unique");

@@ -30,9 +30,9 @@ fn the_fuzzing_corpus_replays_without_a_failure() {
         let Some((&first, rest)) = data.split_first() else { continue };
         let text = String::from_utf8_lossy(rest);
         let parsed = if first & 1 == 0 {
-            PolyMesh::from_obj_str(&text)
+            PolyMesh::try_from_obj_str(&text)
         } else {
-            PolyMesh::from_off_str(&text)
+            PolyMesh::try_from_off_str(&text)
         };
         let Ok(mesh) = parsed else { continue };
         read += 1;

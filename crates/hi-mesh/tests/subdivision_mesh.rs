@@ -110,10 +110,10 @@ fn obj_and_off_round_trip_exactly() {
 #[test]
 fn obj_reader_accepts_common_records() {
     let text = "# comment\nmtllib x.mtl\no thing\nv 0 0 0\nv 1 0 0 1.0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\ns off\nusemtl m\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf -4 -2 -1\n";
-    let err = PolyMesh::from_obj_str(text).expect_err("same direction");
+    let err = PolyMesh::try_from_obj_str(text).expect_err("same direction");
     // `f -4 -2 -1` is `f 1 3 4`, which runs 3 → 4 as the quad `f 1 2 3 4` does.
     assert!(matches!(err, MeshError::InconsistentOrientation { .. }), "{err}");
-    let ok = PolyMesh::from_obj_str(&text.replace("f -4 -2 -1\n", "")).expect("quad");
+    let ok = PolyMesh::try_from_obj_str(&text.replace("f -4 -2 -1\n", "")).expect("quad");
     assert_eq!((ok.n_vertices(), ok.n_faces(), ok.face(0).len()), (4, 1, 4));
 }
 
@@ -129,7 +129,7 @@ fn malformed_files_report_the_line() {
         ("v 0 0 0\nf a b c\n", 2, "not a vertex index"),
     ];
     for (text, line, what) in cases_obj {
-        let err = PolyMesh::from_obj_str(text).expect_err(text);
+        let err = PolyMesh::try_from_obj_str(text).expect_err(text);
         let MeshError::Parse { format: "OBJ", line: l, ref message } = err else {
             panic!("{text:?}: {err}");
         };
@@ -148,7 +148,7 @@ fn malformed_files_report_the_line() {
         ("OFF\n-3 1 0\n", 2, "not a count"),
     ];
     for (text, line, what) in cases_off {
-        let err = PolyMesh::from_off_str(text).expect_err(text);
+        let err = PolyMesh::try_from_off_str(text).expect_err(text);
         let MeshError::Parse { format: "OFF", line: l, ref message } = err else {
             panic!("{text:?}: {err}");
         };
@@ -156,8 +156,9 @@ fn malformed_files_report_the_line() {
         assert!(message.contains(what), "{text:?}: {err}");
     }
     // OFF with the counts on the header line, comments and colours after a face.
-    let m = PolyMesh::from_off_str("OFF 3 1 0 # counts\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n")
-        .expect("valid");
+    let m =
+        PolyMesh::try_from_off_str("OFF 3 1 0 # counts\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n")
+            .expect("valid");
     assert_eq!(m.n_faces(), 1);
 }
 
@@ -190,8 +191,8 @@ fn readers_never_panic_on_mutated_files() {
             }
         }
         let text = String::from_utf8_lossy(&bytes);
-        let _ = PolyMesh::from_obj_str(&text);
-        let _ = PolyMesh::from_off_str(&text);
+        let _ = PolyMesh::try_from_obj_str(&text);
+        let _ = PolyMesh::try_from_off_str(&text);
     }
 }
 
@@ -230,9 +231,9 @@ fn a_real_mesh_with_a_pinched_vertex_is_rejected() {
     };
     let (cow, spot) =
         (std::fs::read_to_string(cow).unwrap(), std::fs::read_to_string(spot).unwrap());
-    let err = PolyMesh::from_obj_str(&cow).expect_err("pinched vertex");
+    let err = PolyMesh::try_from_obj_str(&cow).expect_err("pinched vertex");
     assert!(matches!(err, MeshError::NonManifoldVertex { .. }), "{err}");
-    let spot = PolyMesh::from_obj_str(&spot).expect("spot");
+    let spot = PolyMesh::try_from_obj_str(&spot).expect("spot");
     assert!(spot.is_closed());
     assert_eq!((spot.n_vertices(), spot.n_faces()), (2930, 5856));
     assert_eq!(spot.n_vertices() + spot.n_faces(), spot.n_edges() + 2);

@@ -68,7 +68,7 @@ pub struct BezierObject {
     /// Normal cones of the pieces (`None` where a normal is undefined or the cone is too wide).
     cones: Vec<Option<Cone>>,
     bvh: Bvh,
-    settings: BezierOptions,
+    options: BezierOptions,
     /// The absolute Newton tolerance.
     tolerance: f64,
     /// Bound on the coordinates, for the evaluation error.
@@ -81,13 +81,13 @@ impl BezierObject {
     /// # Errors
     ///
     /// [`Error::EmptyScene`] for no patches, [`Error::InvalidValue`] or [`Error::NonFinite`] for
-    /// bad settings.
+    /// bad options.
     pub fn try_new(
         patches: Vec<BezierPatch<DVec3>>,
-        settings: &BezierOptions,
+        options: &BezierOptions,
     ) -> Result<Self, Error> {
         let windows = vec![ParamWindow::UNIT; patches.len()];
-        Self::build(patches, windows, settings)
+        Self::build(patches, windows, options)
     }
 
     /// The patches of a harmonic surface (§5.7), coloured by [`patch_color`]; hits report the
@@ -96,28 +96,28 @@ impl BezierObject {
     /// # Errors
     ///
     /// As [`BezierObject::try_new`].
-    pub fn from_surface(
+    pub fn try_from_surface(
         surface: &SurfaceBezier<DVec3>,
-        settings: &BezierOptions,
+        options: &BezierOptions,
     ) -> Result<Self, Error> {
         let windows = (0..surface.patches.len()).map(|i| surface.window(i)).collect();
-        Self::build(surface.patches.clone(), windows, settings)
+        Self::build(surface.patches.clone(), windows, options)
     }
 
     fn build(
         patches: Vec<BezierPatch<DVec3>>,
         windows: Vec<ParamWindow>,
-        settings: &BezierOptions,
+        options: &BezierOptions,
     ) -> Result<Self, Error> {
         if patches.is_empty() {
             return Err(Error::EmptyScene);
         }
-        check_positive("Bézier flatness", settings.flatness)?;
-        check_positive("Bézier tolerance", settings.tolerance)?;
-        if settings.max_depth > 12 || settings.max_ray_depth > 12 {
+        check_positive("Bézier flatness", options.flatness)?;
+        check_positive("Bézier tolerance", options.tolerance)?;
+        if options.max_depth > 12 || options.max_ray_depth > 12 {
             return Err(Error::InvalidValue {
                 what: "Bézier subdivision depth",
-                value: f64::from(settings.max_depth.max(settings.max_ray_depth)),
+                value: f64::from(options.max_depth.max(options.max_ray_depth)),
                 expected: "at most 12",
             });
         }
@@ -135,7 +135,7 @@ impl BezierObject {
                 [0.0, 1.0],
                 [0.0, 1.0],
                 0,
-                settings,
+                options,
                 &mut pieces,
                 &mut boxes,
                 &mut nets,
@@ -144,7 +144,7 @@ impl BezierObject {
         let bvh = Bvh::build(&boxes);
         let cones = pieces.iter().map(|p| normal_cone(&patches[p.patch], p.u, p.v)).collect();
         let (lo, hi) = bvh.bounds();
-        let tolerance = settings.tolerance * ((hi - lo).length() + magnitude);
+        let tolerance = options.tolerance * ((hi - lo).length() + magnitude);
         let colors = (0..patches.len()).map(patch_color).collect();
         Ok(BezierObject {
             patches,
@@ -155,7 +155,7 @@ impl BezierObject {
             nets,
             cones,
             bvh,
-            settings: *settings,
+            options: *options,
             tolerance,
             magnitude,
         })
@@ -252,7 +252,7 @@ impl BezierObject {
         let pad = self.tolerance * 4.0;
         let (t0, t1) = slab(ray, lo - pad, hi + pad, ray.t_min, ray.t_max)?;
         let first = self.newton(ray, piece, 0.5 * (t0 + t1));
-        let at_bottom = depth >= self.settings.max_ray_depth;
+        let at_bottom = depth >= self.options.max_ray_depth;
         // Whether the ray is transversal to the piece's normals: asked only where it decides
         // something (a root found, or none inside, above the deepest level).
         let transversal = || {
@@ -444,14 +444,14 @@ fn split_flat(
     u: [f64; 2],
     v: [f64; 2],
     depth: u32,
-    settings: &BezierOptions,
+    options: &BezierOptions,
     pieces: &mut Vec<Piece>,
     boxes: &mut Vec<(DVec3, DVec3)>,
     nets: &mut Vec<Option<Net>>,
 ) {
     let sub =
         patch.subpatch(ParamWindow::new(ParamRange::new(u[0], u[1]), ParamRange::new(v[0], v[1])));
-    if depth >= settings.max_depth || is_flat(&sub, settings.flatness) {
+    if depth >= options.max_depth || is_flat(&sub, options.flatness) {
         pieces.push(Piece { patch: index, u, v });
         let bb = sub.control_bounding_box();
         boxes.push((bb.min, bb.max));
@@ -465,7 +465,7 @@ fn split_flat(
         ([u[0], um], [vm, v[1]]),
         ([um, u[1]], [vm, v[1]]),
     ] {
-        split_flat(patch, index, a, b, depth + 1, settings, pieces, boxes, nets);
+        split_flat(patch, index, a, b, depth + 1, options, pieces, boxes, nets);
     }
 }
 

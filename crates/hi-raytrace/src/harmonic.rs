@@ -139,7 +139,7 @@ pub struct HarmonicObject {
     eval_err: [f64; 3],
     cells: Vec<Cell>,
     bvh: Bvh,
-    settings: HarmonicOptions,
+    options: HarmonicOptions,
     /// Size of the surface (box diagonal plus largest coordinate).
     scale: f64,
     color: [f32; 3],
@@ -189,11 +189,11 @@ impl HarmonicObject {
     /// positive, cells between 1 and 1024 per direction, `max_boxes` at least 1).
     pub fn try_new(
         surface: HarmonicSurface<DVec3>,
-        settings: &HarmonicOptions,
+        options: &HarmonicOptions,
     ) -> Result<Self, Error> {
-        check_positive("distance tolerance", settings.distance_tolerance)?;
-        check_positive("parameter tolerance", settings.parameter_tolerance)?;
-        for c in [settings.cells.0, settings.cells.1] {
+        check_positive("distance tolerance", options.distance_tolerance)?;
+        check_positive("parameter tolerance", options.parameter_tolerance)?;
+        for c in [options.cells.0, options.cells.1] {
             if !(1..=1024).contains(&c) {
                 return Err(Error::InvalidValue {
                     what: "number of cells",
@@ -202,7 +202,7 @@ impl HarmonicObject {
                 });
             }
         }
-        if settings.max_boxes == 0 {
+        if options.max_boxes == 0 {
             return Err(Error::InvalidValue {
                 what: "max_boxes",
                 value: 0.0,
@@ -239,12 +239,12 @@ impl HarmonicObject {
             eval_err,
             cells: Vec::new(),
             bvh: Bvh::build(&[(DVec3::ZERO, DVec3::ZERO)]),
-            settings: *settings,
+            options: *options,
             scale: 1.0,
             color: [0.8, 0.8, 0.8],
             curvature: None,
         };
-        let (nu, nv) = settings.cells;
+        let (nu, nv) = options.cells;
         let mut boxes = Vec::with_capacity(nu * nv);
         for i in 0..nu {
             for j in 0..nv {
@@ -294,10 +294,10 @@ impl HarmonicObject {
         &self.surface
     }
 
-    /// The settings.
+    /// The options.
     #[must_use]
-    pub fn settings(&self) -> &HarmonicOptions {
-        &self.settings
+    pub fn options(&self) -> &HarmonicOptions {
+        &self.options
     }
 
     /// The box of the surface (the union of the cell enclosures, padded).
@@ -428,15 +428,15 @@ impl HarmonicObject {
     ) -> Option<HarmonicHit> {
         let mut best: Option<HarmonicHit> = None;
         let mut n_boxes = 0;
-        let dist_tol = self.settings.distance_tolerance * self.scale;
-        let par_tol = self.settings.parameter_tolerance;
+        let dist_tol = self.options.distance_tolerance * self.scale;
+        let par_tol = self.options.parameter_tolerance;
         while let Some(mut node) = stack.pop() {
             let limit = best.map_or(t_max, |b| b.t);
             if node.t[0] > limit {
                 continue;
             }
             n_boxes += 1;
-            if n_boxes > self.settings.max_boxes {
+            if n_boxes > self.options.max_boxes {
                 // The cap: where no root was found, the nearest box still open counts as an
                 // unproven hit (its enclosure meets the ray; typically a pole, where a whole
                 // interval of v maps to one point and boxes cannot be excluded).
@@ -450,7 +450,7 @@ impl HarmonicObject {
             let reaches_limit = node.t[1] >= limit;
             node.t[1] = node.t[1].min(limit);
             let narrow = (node.u[1] - node.u[0]).max(node.v[1] - node.v[0]) <= par_tol;
-            match self.settings.method {
+            match self.options.method {
                 IntervalMethod::Bisection => {
                     let extent = (node.enc.radius * 2.0).max_element();
                     if extent <= dist_tol || narrow {
@@ -553,8 +553,8 @@ impl HarmonicObject {
             }
             proven = proven || interior;
             let shrunk = (0..3).any(|i| next[i].width() < 0.5 * x[i].width());
-            let done = next[0].width().max(next[1].width()) <= self.settings.parameter_tolerance
-                && next[2].width() <= 1e-3 * self.settings.distance_tolerance * self.scale;
+            let done = next[0].width().max(next[1].width()) <= self.options.parameter_tolerance
+                && next[2].width() <= 1e-3 * self.options.distance_tolerance * self.scale;
             if !proven && !shrunk {
                 break;
             }

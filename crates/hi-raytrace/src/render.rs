@@ -134,9 +134,9 @@ impl Rendering {
 /// A progress report: tiles finished and tiles in all.
 pub type Progress<'a> = &'a (dyn Fn(usize, usize) + Sync);
 
-/// Checks the settings against the limits.
-fn check_settings(settings: &RenderOptions) -> Result<(), Error> {
-    let (w, h) = (settings.width, settings.height);
+/// Checks the options against the limits.
+fn check_options(options: &RenderOptions) -> Result<(), Error> {
+    let (w, h) = (options.width, options.height);
     if w == 0 || h == 0 {
         return Err(Error::ZeroSizeImage { width: w, height: h });
     }
@@ -149,14 +149,14 @@ fn check_settings(settings: &RenderOptions) -> Result<(), Error> {
             });
         }
     }
-    if !(1..=MAX_SAMPLES).contains(&settings.samples_per_pixel) {
+    if !(1..=MAX_SAMPLES).contains(&options.samples_per_pixel) {
         return Err(Error::InvalidValue {
             what: "samples per pixel",
-            value: f64::from(settings.samples_per_pixel),
+            value: f64::from(options.samples_per_pixel),
             expected: "1 to 1024",
         });
     }
-    if settings.tile_size == 0 {
+    if options.tile_size == 0 {
         return Err(Error::InvalidValue { what: "tile size", value: 0.0, expected: "at least 1" });
     }
     Ok(())
@@ -222,9 +222,9 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
 /// let light = Light::Directional { direction: DVec3::new(1.0, 1.0, 2.0), intensity: [1.0; 3] };
 /// let scene = Scene::try_new(vec![SceneObject::new(Geometry::Harmonic(torus))], vec![light], [0.1; 3])?;
 /// let camera = Camera::try_new(DVec3::new(0.0, -6.0, 4.0), DVec3::ZERO, DVec3::Z, 0.7)?;
-/// let settings =
+/// let options =
 ///     RenderOptions { width: 24, height: 16, samples_per_pixel: 1, tile_size: 8, first_pass: 0 };
-/// let out = render(&scene, &camera, &settings, None)?;
+/// let out = render(&scene, &camera, &options, None)?;
 /// assert_eq!((out.width, out.height, out.pixels.len()), (24, 16, 24 * 16));
 /// assert_eq!(out.counts.camera, 24 * 16);
 /// assert!(out.counts.hits > 0);
@@ -233,17 +233,17 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
 pub fn render(
     scene: &Scene,
     camera: &Camera,
-    settings: &RenderOptions,
+    options: &RenderOptions,
     progress: Option<Progress<'_>>,
 ) -> Result<Rendering, Error> {
-    check_settings(settings)?;
+    check_options(options)?;
     let start = Instant::now();
-    let (w, h, ts) = (settings.width, settings.height, settings.tile_size);
+    let (w, h, ts) = (options.width, options.height, options.tile_size);
     let (nx, ny) = (w.div_ceil(ts), h.div_ceil(ts));
     let n_tiles = (nx * ny) as usize;
     let done = AtomicUsize::new(0);
     let aspect = f64::from(w) / f64::from(h);
-    let spp = settings.samples_per_pixel;
+    let spp = options.samples_per_pixel;
     let background = scene.background();
     // The tiles on all cores (the `parallel` feature) or in turn; each is computed alone, so
     // the image is the same either way.
@@ -288,7 +288,7 @@ pub fn render(
                 }
                 (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max)
             };
-            let first = settings.first_pass;
+            let first = options.first_pass;
             let adaptive = first > 0 && first < spp;
             // The first pass over the tile and a one-pixel border around it (a pixel whose
             // few samples all miss a thin edge shows it by differing from a neighbour): the

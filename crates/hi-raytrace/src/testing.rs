@@ -84,7 +84,7 @@ pub fn torus_scene(method: TorusMethod) -> Result<(Scene, Camera), Error> {
                 hi_curve::bezier::Tolerance::Absolute(1e-4),
             )?;
             Geometry::Bezier(
-                BezierObject::from_surface(&patches, &BezierOptions::default())?
+                BezierObject::try_from_surface(&patches, &BezierOptions::default())?
                     .with_uniform_color(color),
             )
         }

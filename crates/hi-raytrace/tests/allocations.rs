@@ -58,10 +58,11 @@ fn intersections_allocate_nothing_per_ray() {
 
     let cubic = BezierScheme::Hermite(HermiteDegree::Cubic);
     let patches = surface.to_bezier(cubic, Tolerance::Absolute(1e-4)).expect("converts");
-    let bezier = BezierObject::from_surface(&patches, &BezierOptions::default()).expect("valid");
+    let bezier =
+        BezierObject::try_from_surface(&patches, &BezierOptions::default()).expect("valid");
     // A coarse build leaves pieces that rays must split (the sub-piece path of the search).
     let coarse = BezierOptions { max_depth: 1, ..BezierOptions::default() };
-    let split = BezierObject::from_surface(&patches, &coarse).expect("valid");
+    let split = BezierObject::try_from_surface(&patches, &coarse).expect("valid");
     let pieces = measure(|| {
         for r in &rays {
             black_box(bezier.intersect(r));

@@ -214,7 +214,7 @@ fn bezier_agrees_with_interval(surface: HarmonicSurface<DVec3>, camera: &Camera,
         .unwrap();
     let bound = patches.report.bound;
     assert!(bound <= 1e-4, "the conversion's bound");
-    let bez = BezierObject::from_surface(&patches, &BezierOptions::default()).unwrap();
+    let bez = BezierObject::try_from_surface(&patches, &BezierOptions::default()).unwrap();
     let interval = HarmonicObject::try_new(surface, &HarmonicOptions::default()).unwrap();
     let all = rays(camera, n);
     let hb: Vec<_> = all.iter().map(|r| bez.intersect(r)).collect();
@@ -359,7 +359,7 @@ fn any_hit_occlusion_matches_the_nearest_hit() {
     let mesh =
         surface.to_mesh(&MeshOptions { n_u: 24, n_v: 48, ..MeshOptions::default() }).unwrap();
     let mesh = MeshObject::new(mesh);
-    let bezier = BezierObject::from_surface(&patches, &BezierOptions::default()).unwrap();
+    let bezier = BezierObject::try_from_surface(&patches, &BezierOptions::default()).unwrap();
     let krawczyk =
         HarmonicObject::try_new(surface.clone(), &settings(IntervalMethod::Krawczyk)).unwrap();
     let bisection = HarmonicObject::try_new(surface, &settings(IntervalMethod::Bisection)).unwrap();

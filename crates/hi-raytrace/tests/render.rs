@@ -106,7 +106,7 @@ fn a_lit_sphere_does_not_shadow_itself() {
             hi_curve::bezier::Tolerance::Absolute(1e-4),
         )
         .unwrap();
-    let bez = BezierObject::from_surface(&patches, &BezierOptions::default()).unwrap();
+    let bez = BezierObject::try_from_surface(&patches, &BezierOptions::default()).unwrap();
     no_self_shadow(Geometry::Bezier(bez), light, eye);
 }
 

@@ -302,10 +302,10 @@ fn xyz_and_pts() {
 
 #[test]
 fn formats_come_from_extensions() {
-    assert_eq!(ScanFormat::from_path("a/b.PLY".as_ref()).unwrap(), ScanFormat::Ply);
-    assert_eq!(ScanFormat::from_path("x.GLB".as_ref()).unwrap(), ScanFormat::Glb);
-    assert_eq!(ScanFormat::from_path("x.gltf".as_ref()).unwrap(), ScanFormat::Gltf);
-    let e = ScanFormat::from_path("scan.las".as_ref()).unwrap_err();
+    assert_eq!(ScanFormat::try_from_path("a/b.PLY".as_ref()).unwrap(), ScanFormat::Ply);
+    assert_eq!(ScanFormat::try_from_path("x.GLB".as_ref()).unwrap(), ScanFormat::Glb);
+    assert_eq!(ScanFormat::try_from_path("x.gltf".as_ref()).unwrap(), ScanFormat::Gltf);
+    let e = ScanFormat::try_from_path("scan.las".as_ref()).unwrap_err();
     assert_eq!(
         e.to_string(),
         "scan.las: unknown scan format \"las\"; expected one of .obj, .ply, .off, .stl, .xyz, .pts, .gltf, .glb"

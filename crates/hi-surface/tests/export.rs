@@ -191,7 +191,7 @@ fn unknown_extensions_are_errors() {
         );
         assert!(e.to_string().contains(name) && !e.to_string().contains('\n'), "{e}");
     }
-    assert_eq!(MeshFormat::from_path("X.Obj".as_ref()).unwrap(), MeshFormat::Obj, "any case");
+    assert_eq!(MeshFormat::try_from_path("X.Obj".as_ref()).unwrap(), MeshFormat::Obj, "any case");
 }
 
 #[test]

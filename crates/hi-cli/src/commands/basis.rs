@@ -66,7 +66,7 @@ fn run_roots(args: &RootsArgs) -> Result<Json, Failure> {
         )));
     }
     let found =
-        sigma.derivative_roots(args.derivative, Interval::new(0.0, 1.0), &RootOptions::default());
+        sigma.deriv_roots(args.derivative, Interval::new(0.0, 1.0), &RootOptions::default());
     /// `{"roots": [[lo, hi], ...], "unique": [...], "verdicts": [...], "complete": bool}`.
     #[derive(Serialize)]
     struct Found {

@@ -35,7 +35,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let as_grid = ext.as_deref() == Some("json");
     if !as_grid {
-        MeshFormat::from_path(&args.output)
+        MeshFormat::try_from_path(&args.output)
             .map_err(|e| Failure::input(format!("-o: {e} (or .json for the surface's grid)")))?;
     }
     check_writable(&args.output, "-o")?;

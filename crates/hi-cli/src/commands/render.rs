@@ -291,7 +291,7 @@ fn harmonic_geometry(
                 BezierScheme::Hermite(HermiteDegree::Cubic),
                 hi_curve::bezier::DEFAULT_TOLERANCE,
             )?;
-            Geometry::Bezier(BezierObject::from_surface(&patches, &BezierOptions::default())?)
+            Geometry::Bezier(BezierObject::try_from_surface(&patches, &BezierOptions::default())?)
         }
         RenderMethod::Mesh => {
             let color = coloring.map(|(quantity, map)| CurvatureColoring { quantity, map });

@@ -30,7 +30,7 @@ pub(crate) fn run(args: &SurfaceBsplineArgs, pretty: bool) -> Result<Json, Failu
     // Check the extension before reading and fitting: a typo should fail at once.
     let mesh_format = match &args.output {
         Some(path) if !is_json(path) => Some(
-            MeshFormat::from_path(path)
+            MeshFormat::try_from_path(path)
                 .map_err(|e| Failure::input(format!("-o: {e} (or .json for the surface)")))?,
         ),
         _ => None,

@@ -22,7 +22,7 @@ use hi_surface::{ParamRange, ParamWindow};
 /// mesher rejects, or an output file that cannot be written.
 pub(crate) fn run(args: &SurfaceMeshArgs) -> Result<Json, Failure> {
     // Check the extension before reading and meshing: a typo should fail at once.
-    MeshFormat::from_path(&args.output).map_err(|e| Failure::input(format!("-o: {e}")))?;
+    MeshFormat::try_from_path(&args.output).map_err(|e| Failure::input(format!("-o: {e}")))?;
     check_writable(&args.output, "-o")?;
     let surface = read_surface(&args.input.input)?;
     let [u0, u1, v0, v1] = args.window.0;

@@ -5,7 +5,7 @@
 //! cos(π(t − k/n)) there, and Uₙ₋₁(cos θ) = sin(nθ)/sin(θ):
 //! σⁿₖ = Uₙ₋₁(φₖ)/n for odd n and φₖ·Uₙ₋₁(φₖ)/n (= T₁(φₖ)·Uₙ₋₁(φₖ)/n) for even n.
 
-use crate::trig::{cos_pi, sin_cos_pi};
+use crate::sinpi::{cos_pi, sin_cos_pi};
 
 /// σⁿₖ(t) for 0 ≤ k < n by the Chebyshev form.
 pub(super) fn eval(n: usize, k: usize, t: f64) -> f64 {

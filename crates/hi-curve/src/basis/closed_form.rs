@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! Closed form of σⁿₖ (eq. 3.13 for odd n, eq. 3.26 for even n) with exact argument reduction.
 
-use crate::trig::{NodeFrame, sin_cos_pi};
+use crate::sinpi::{NodeFrame, sin_cos_pi};
 
 /// Below this |d| the kernel equals 1 to double precision for any n < 2³², and the quotient
 /// would underflow.

@@ -9,7 +9,7 @@
 
 use std::f64::consts::PI;
 
-use crate::trig::{NodeFrame, for_each_multiple, pow_order, quarter_turns, sin_cos_pi};
+use crate::sinpi::{NodeFrame, for_each_multiple, pow_order, quarter_turns, sin_cos_pi};
 
 /// dᵖσⁿₖ/dtᵖ(t) for 0 ≤ k < n.
 pub(super) fn eval_deriv(n: usize, k: usize, t: f64, order: usize) -> f64 {

@@ -104,9 +104,11 @@ impl Sigma {
         cosine_sum(self.n, d, order)
     }
 
-    /// Every zero of σⁿ′ = dσⁿ₀/dt in `domain`, by interval bisection and Krawczyk's test (§5.6)
-    /// on the cosine-sum extensions of σ′ and σ″ (eq. 5.4). The zeros of σⁿₖ′ are these shifted
-    /// by k/n. Used by the degree-5 Bézier scheme of §5.7 (Hermite data between consecutive zeros).
+    /// Every zero of the derivative of order `order` of σⁿ = σⁿ₀ in `domain`, by interval
+    /// bisection and Krawczyk's test (§5.6) on the cosine-sum extensions of σ⁽ᵒʳᵈᵉʳ⁾ and
+    /// σ⁽ᵒʳᵈᵉʳ⁺¹⁾ (eq. 5.4). Order 0 gives the zeros of σⁿ itself, the nodes j/n, j ≠ 0 mod n.
+    /// The zeros for σⁿₖ are these shifted by k/n. Order 1 serves the degree-5 Bézier scheme
+    /// of §5.7 (Hermite data between consecutive zeros of σ′).
     ///
     /// # Examples
     ///
@@ -114,34 +116,19 @@ impl Sigma {
     /// use hi_curve::Sigma;
     /// use hi_interval::{Interval, RootOptions, Verdict};
     /// // n = 3: σ = (1 + 2 cos 2πt)/3, so σ′ vanishes at t = 0 and 1/2 (and 1).
-    /// let roots = Sigma::new(3).deriv_roots(Interval::new(-0.1, 1.1), &RootOptions::default());
+    /// let roots = Sigma::new(3).deriv_roots(1, Interval::new(-0.1, 1.1), &RootOptions::default());
     /// assert_eq!(roots.roots.len(), 3);
     /// assert!(roots.roots[1].enclosure.contains(0.5));
     /// assert!(roots.roots.iter().all(|r| r.verdict == Verdict::Unique));
-    /// ```
-    #[must_use]
-    pub fn deriv_roots(&self, domain: Interval, config: &RootOptions) -> Roots1 {
-        self.derivative_roots(1, domain, config)
-    }
-
-    /// Every zero of the derivative of order `order` of σⁿ = σⁿ₀ in `domain` (order 0: the
-    /// zeros of σⁿ itself, the nodes j/n, j ≠ 0 mod n), as [`Sigma::deriv_roots`] does for
-    /// order 1.
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use hi_curve::Sigma;
-    /// use hi_interval::{Interval, RootOptions};
     /// // σ⁴ vanishes at 1/4, 2/4 and 3/4.
-    /// let roots = Sigma::new(4).derivative_roots(0, Interval::new(0.1, 0.9), &RootOptions::default());
+    /// let roots = Sigma::new(4).deriv_roots(0, Interval::new(0.1, 0.9), &RootOptions::default());
     /// assert_eq!(roots.roots.len(), 3);
     /// assert!(roots.roots[0].enclosure.contains(0.25));
     /// ```
     #[must_use]
-    pub fn derivative_roots(&self, order: usize, domain: Interval, config: &RootOptions) -> Roots1 {
+    pub fn deriv_roots(&self, order: usize, domain: Interval, options: &RootOptions) -> Roots1 {
         let n = self.n;
-        find_roots_1d(|t| cosine_sum(n, t, order), |t| cosine_sum(n, t, order + 1), domain, config)
+        find_roots_1d(|t| cosine_sum(n, t, order), |t| cosine_sum(n, t, order + 1), domain, options)
     }
 }
 
@@ -236,7 +223,7 @@ mod tests {
             let sigma = Sigma::new(n);
             // Search slightly past [0, 1] so that the zeros 0 and 1 are interior.
             let pad = 0.25 / n as f64;
-            let res = sigma.deriv_roots(Interval::new(-pad, 1.0 + pad), &RootOptions::default());
+            let res = sigma.deriv_roots(1, Interval::new(-pad, 1.0 + pad), &RootOptions::default());
             assert!(res.complete, "n = {n}");
             let expected = if n % 2 == 1 { n } else { n + 1 };
             assert_eq!(res.roots.len(), expected, "n = {n}: {res:?}");

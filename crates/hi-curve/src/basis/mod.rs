@@ -216,8 +216,8 @@ impl Sigma {
             return (re, 0.0);
         }
         // sin(π(nt − k)) = (−1)ᵏ·sin(π·n·t); n·t is formed exactly.
-        let r = crate::trig::reduce_period(t);
-        let s = crate::trig::sin_cos_pi_mul(self.n as f64, r).0;
+        let r = crate::sinpi::reduce_period(t);
+        let s = crate::sinpi::sin_cos_pi_mul(self.n as f64, r).0;
         let sign = if k.is_multiple_of(2) { 1.0 } else { -1.0 };
         (re, sign * s / self.n as f64)
     }

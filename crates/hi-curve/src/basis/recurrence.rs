@@ -6,7 +6,7 @@
 //! special case at the nodes. |cos(πd)| ≤ 1 keeps the recurrence stable: rounding errors add
 //! up, they are not amplified.
 
-use crate::trig::{cos_pi, for_each_multiple, node_offset};
+use crate::sinpi::{cos_pi, for_each_multiple, node_offset};
 
 /// σⁿₖ(t) for 0 ≤ k < n by the recurrence.
 pub(super) fn eval(n: usize, k: usize, t: f64) -> f64 {

@@ -14,7 +14,7 @@
 //! No linear system is solved: O(n²) set-up, O(n) per evaluation.
 
 use super::max_over_gaps;
-use crate::trig::{reduce_period, sin_cos_pi};
+use crate::sinpi::{reduce_period, sin_cos_pi};
 use crate::{ControlPoint, Fourier};
 
 #[derive(Clone, Debug, PartialEq)]

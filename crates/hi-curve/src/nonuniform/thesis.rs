@@ -9,7 +9,7 @@ use realfft::num_complex::Complex64;
 
 use super::linalg::{Lu, norm1};
 use super::{ComplexPoint, complex_of, max_over_gaps};
-use crate::trig::{pow_order, quarter_turns, sin_cos_pi};
+use crate::sinpi::{pow_order, quarter_turns, sin_cos_pi};
 use crate::{ControlPoint, Error};
 
 #[derive(Clone, Debug, PartialEq)]

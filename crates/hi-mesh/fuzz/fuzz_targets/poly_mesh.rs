@@ -12,7 +12,7 @@ fuzz_target!(|data: &[u8]| {
     let Some((&first, rest)) = data.split_first() else { return };
     let text = String::from_utf8_lossy(rest);
     let read =
-        if first & 1 == 0 { PolyMesh::from_obj_str(&text) } else { PolyMesh::from_off_str(&text) };
+        if first & 1 == 0 { PolyMesh::try_from_obj_str(&text) } else { PolyMesh::try_from_off_str(&text) };
     let Ok(mesh) = read else { return };
     let n = mesh.n_vertices();
     assert!(mesh.positions().iter().all(|p| p.is_finite()));

@@ -87,10 +87,10 @@ impl MeshFormat {
     /// ```
     /// use hi_mesh::export::MeshFormat;
     ///
-    /// assert_eq!(MeshFormat::from_path("surface.GLB".as_ref()).unwrap(), MeshFormat::Glb);
-    /// assert!(MeshFormat::from_path("surface.stl".as_ref()).is_err());
+    /// assert_eq!(MeshFormat::try_from_path("surface.GLB".as_ref()).unwrap(), MeshFormat::Glb);
+    /// assert!(MeshFormat::try_from_path("surface.stl".as_ref()).is_err());
     /// ```
-    pub fn from_path(path: &Path) -> Result<Self, Error> {
+    pub fn try_from_path(path: &Path) -> Result<Self, Error> {
         let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
         match ext.as_deref() {
             Some("obj") => Ok(MeshFormat::Obj),
@@ -234,7 +234,7 @@ fn create(path: &Path) -> Result<BufWriter<File>, Error> {
 /// ```
 pub fn save(mesh: &TriangleMesh, path: impl AsRef<Path>) -> Result<Vec<PathBuf>, Error> {
     let path = path.as_ref();
-    let name = match MeshFormat::from_path(path)? {
+    let name = match MeshFormat::try_from_path(path)? {
         MeshFormat::Obj => obj::SINGLE_NAME,
         MeshFormat::Gltf | MeshFormat::Glb => SINGLE_GLTF_NAME,
     };
@@ -248,7 +248,7 @@ const SINGLE_GLTF_NAME: &str = "harmonic surface";
 /// writer of files behind [`save`] and [`save_scene`].
 fn save_parts(parts: &[NamedMesh<'_>], path: &Path) -> Result<Vec<PathBuf>, Error> {
     let finish = |mut w: BufWriter<File>, p: &Path| w.flush().map_err(|e| io_error(&e, Some(p)));
-    match MeshFormat::from_path(path)? {
+    match MeshFormat::try_from_path(path)? {
         MeshFormat::Obj => {
             obj::check_colors(parts)?; // before the file is created
             let mut w = create(path)?;
@@ -319,7 +319,7 @@ fn percent_encode(name: &str) -> String {
 /// of range).
 pub fn load(path: impl AsRef<Path>) -> Result<TriangleMesh, Error> {
     let path = path.as_ref();
-    let mesh = match MeshFormat::from_path(path)? {
+    let mesh = match MeshFormat::try_from_path(path)? {
         #[cfg(feature = "obj")]
         MeshFormat::Obj => obj::read_obj(path),
         #[cfg(feature = "gltf")]

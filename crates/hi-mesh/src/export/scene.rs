@@ -154,7 +154,7 @@ pub(super) fn check_scene(parts: &[NamedMesh<'_>]) -> Result<(), Error> {
 /// ```
 pub fn save_scene(parts: &[NamedMesh<'_>], path: impl AsRef<Path>) -> Result<Vec<PathBuf>, Error> {
     let path = path.as_ref();
-    MeshFormat::from_path(path)?;
+    MeshFormat::try_from_path(path)?;
     check_scene(parts)?;
     save_parts(parts, path)
 }
@@ -176,7 +176,7 @@ pub fn save_scene(parts: &[NamedMesh<'_>], path: impl AsRef<Path>) -> Result<Vec
 /// Those of [`load`](super::load).
 pub fn load_scene(path: impl AsRef<Path>) -> Result<Vec<(String, TriangleMesh)>, Error> {
     let path = path.as_ref();
-    let parts = match MeshFormat::from_path(path)? {
+    let parts = match MeshFormat::try_from_path(path)? {
         #[cfg(feature = "obj")]
         MeshFormat::Obj => super::obj::read_obj_scene(path),
         #[cfg(feature = "gltf")]

@@ -49,13 +49,13 @@ impl PolyMesh {
     /// ```
     /// use hi_mesh::subdivision::PolyMesh;
     ///
-    /// let m = PolyMesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")?;
+    /// let m = PolyMesh::try_from_obj_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")?;
     /// assert_eq!((m.n_vertices(), m.n_faces()), (3, 1));
-    /// let bad = PolyMesh::from_obj_str("v 0 0 0\nf 1 2 x\n").unwrap_err();
+    /// let bad = PolyMesh::try_from_obj_str("v 0 0 0\nf 1 2 x\n").unwrap_err();
     /// assert!(bad.to_string().starts_with("OBJ line 2"));
     /// # Ok::<(), hi_mesh::Error>(())
     /// ```
-    pub fn from_obj_str(text: &str) -> Result<Self, Error> {
+    pub fn try_from_obj_str(text: &str) -> Result<Self, Error> {
         const F: &str = "OBJ";
         let mut positions = Vec::new();
         let mut faces: Vec<Vec<u32>> = Vec::new();
@@ -114,7 +114,7 @@ impl PolyMesh {
     ///
     /// [`Error::Parse`] with the line number for a missing header, binary OFF, a bad
     /// count or value, or a truncated file; then the errors of [`PolyMesh::try_new`].
-    pub fn from_off_str(text: &str) -> Result<Self, Error> {
+    pub fn try_from_off_str(text: &str) -> Result<Self, Error> {
         const F: &str = "OFF";
         // Tokens with their line numbers, comments removed.
         let mut toks = text.lines().enumerate().flat_map(|(i, line)| {
@@ -246,13 +246,13 @@ impl PolyMesh {
     /// # Errors
     ///
     /// [`Error::File`] if the file cannot be read or its extension is neither; then the
-    /// errors of [`PolyMesh::from_obj_str`] or [`PolyMesh::from_off_str`].
+    /// errors of [`PolyMesh::try_from_obj_str`] or [`PolyMesh::try_from_off_str`].
     pub fn load(path: impl AsRef<Path>) -> Result<Self, Error> {
         let path = path.as_ref();
         let ext = extension(path)?;
         let bytes = std::fs::read(path).map_err(|e| io_err(path, &e))?;
         let text = String::from_utf8_lossy(&bytes);
-        if ext == "obj" { Self::from_obj_str(&text) } else { Self::from_off_str(&text) }
+        if ext == "obj" { Self::try_from_obj_str(&text) } else { Self::try_from_off_str(&text) }
     }
 
     /// Writes an `.obj` or `.off` file (by extension, case-insensitive).

@@ -88,7 +88,7 @@ impl ScanFormat {
     /// # Errors
     ///
     /// [`ScanError`] if the extension is missing or not one of [`ScanFormat::ALL`].
-    pub fn from_path(path: &Path) -> Result<Self, ScanError> {
+    pub fn try_from_path(path: &Path) -> Result<Self, ScanError> {
         let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
         Self::from_extension(ext).ok_or_else(|| ScanError {
             format: None,
@@ -260,7 +260,7 @@ impl std::error::Error for ScanError {}
 /// [`ScanError`] if the extension is unknown, the file cannot be read, or its contents are
 /// malformed (with the line or byte offset).
 pub fn read_scan(path: &Path) -> Result<Scan, ScanError> {
-    let format = ScanFormat::from_path(path)?;
+    let format = ScanFormat::try_from_path(path)?;
     let bytes = std::fs::read(path).map_err(|e| ScanError {
         format: Some(format),
         location: Location::None,
