@@ -25,7 +25,7 @@ const STDIN_NAME: &str = "<stdin>";
 
 /// The points of a curve, in the dimension the input gave them.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) enum Points {
+pub enum Points {
     /// 1-D points.
     One(Vec<f64>),
     /// 2-D points.
@@ -80,7 +80,7 @@ fn read_text(path: &Path) -> Result<(String, String), Failure> {
 /// # Errors
 ///
 /// A message naming the problem (without the file name).
-pub(crate) fn parse_grid(text: &str) -> Result<Vec<Vec<DVec3>>, String> {
+pub fn parse_grid(text: &str) -> Result<Vec<Vec<DVec3>>, String> {
     parse_nested(text, "grid", "row")
 }
 
@@ -158,7 +158,7 @@ fn parse_nested(text: &str, key: &str, row: &str) -> Result<Vec<Vec<DVec3>>, Str
 /// # Errors
 ///
 /// A message naming the problem (without the file name).
-pub(crate) fn parse_points(text: &str) -> Result<Points, String> {
+pub fn parse_points(text: &str) -> Result<Points, String> {
     let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e))?;
     let items = match value {
         Value::Array(items) => items,
