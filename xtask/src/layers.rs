@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! The layer rule of docs/architecture.md: a crate may depend only on crates below it.
 //!
-//! {hi-interval, hi-bezier} → {hi-curve, hi-mesh} → {hi-surface, hi-compare, hi-scan} →
+//! {hi-interval, hi-bezier, hi-par} → {hi-curve, hi-mesh} → {hi-surface, hi-compare, hi-scan} →
 //! {hi-geomimage, hi-raytrace} → hi-cli,
 //! with xtask on top. Every `[dependencies]`, `[dev-dependencies]` and
 //! `[build-dependencies]` table (and the same under `[target.'…']`) of every crate under
@@ -17,8 +17,9 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 /// Each crate and its layer; 0 is the foundation.
-pub(crate) const LAYERS: [(&str, u32); 11] = [
+pub(crate) const LAYERS: [(&str, u32); 12] = [
     ("hi-interval", 0),
+    ("hi-par", 0),
     ("hi-bezier", 0),
     ("hi-mesh", 1),
     ("hi-curve", 1),

@@ -20,9 +20,9 @@
 //! The doubled layouts keep their half-turn symmetry exactly: the rows past the middle are the
 //! mirrors of the first half, and the two rows that are their own mirror are averaged with it.
 
-use crate::par::*;
 use glam::DVec3;
 use hi_curve::Fourier;
+use hi_par::*;
 
 use crate::Error;
 use crate::image::GeometryImage;

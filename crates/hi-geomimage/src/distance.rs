@@ -11,8 +11,8 @@
 
 use std::num::NonZero;
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 use hi_surface::HarmonicSurface;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 

@@ -20,8 +20,8 @@
 use glam::{DVec2, DVec3, IVec2};
 
 use crate::laplace::{BLOCK, CgOptions, Laplacian, Multigrid, NONE, Topology};
-use crate::par::*;
 use crate::{Error, GeometryImage, NonFiniteInput};
+use hi_par::*;
 
 /// How good a flat parameterisation is: the measures of
 /// [`ParamQuality`](crate::sphereparam::ParamQuality), on the plane.

@@ -44,7 +44,7 @@
 use glam::DVec3;
 
 use crate::Error;
-use crate::par::*;
+use hi_par::*;
 
 /// "No half-edge": the twin of a boundary half-edge, or an absent side of a Laplacian entry.
 pub(crate) const NONE: u32 = u32::MAX;

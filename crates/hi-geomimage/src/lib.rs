@@ -60,9 +60,6 @@ pub mod sphereparam;
 pub mod spherical;
 pub mod torusparam;
 
-/// The data-parallel calls, as `hi-scan` runs them (rayon behind the `parallel` feature).
-use hi_scan::par;
-
 pub use domain::Domain;
 pub use error::{Error, NonFiniteInput};
 pub use filter::Smoothing;

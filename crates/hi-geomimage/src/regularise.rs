@@ -25,8 +25,8 @@
 //! The filter depends on k² and l² only, so it keeps the half-turn symmetry of the doubled
 //! layouts.
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 use rustfft::FftPlanner;
 use rustfft::num_complex::Complex64;
 

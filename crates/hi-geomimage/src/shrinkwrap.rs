@@ -48,8 +48,8 @@
 
 use std::num::NonZero;
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 use hi_scan::implicit::{MovingLeastSquares, PointSurface, vertex_normals};
 use hi_scan::repair::ClosedMesh;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};

@@ -45,8 +45,8 @@
 
 use std::f64::consts::PI;
 
-use crate::par::*;
 use glam::{DMat3, DVec3};
+use hi_par::*;
 
 use crate::{Error, GeometryImage, Layout};
 use hi_scan::repair::ClosedMesh;

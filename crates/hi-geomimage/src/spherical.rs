@@ -26,8 +26,8 @@
 use std::f64::consts::TAU;
 use std::num::NonZero;
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 use hi_surface::ParamRange;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 

@@ -9,8 +9,8 @@
 //! and skips every box farther than the best distance found so far, about O(log T) for a
 //! point near the mesh.
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 
 use crate::distance::closest_point_on_triangle;
 use crate::{Error, NonFiniteInput};

@@ -13,8 +13,8 @@
 
 use glam::DVec3;
 
-use crate::par::*;
 use crate::{Error, NonFiniteInput};
+use hi_par::*;
 
 /// A point cloud summarised on a grid ([`summarise`]).
 #[derive(Clone, Debug, PartialEq)]

@@ -4,8 +4,8 @@
 //! the closest point on a triangle (Ericson), nearest points by kd-tree, and exact distances
 //! to a mesh.
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::{Error, NonFiniteInput};

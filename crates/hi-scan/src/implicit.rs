@@ -16,8 +16,8 @@
 
 use std::num::NonZero;
 
-use crate::par::*;
 use glam::{DMat3, DVec3};
+use hi_par::*;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::{Error, NonFiniteInput};

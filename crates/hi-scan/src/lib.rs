@@ -30,7 +30,6 @@ mod error;
 pub mod implicit;
 pub mod noise;
 #[doc(hidden)]
-pub mod par;
 pub mod repair;
 pub mod sampling;
 pub mod scan;

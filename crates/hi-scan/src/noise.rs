@@ -18,8 +18,8 @@
 
 use std::num::NonZero;
 
-use crate::par::*;
 use glam::{DMat3, DVec3};
+use hi_par::*;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 /// Neighbours per local fit, at the larger scale.

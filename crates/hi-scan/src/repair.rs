@@ -46,8 +46,8 @@
 //! system of loops); the whole mesh, as one block, always holds one while the genus is above
 //! 0. The search is repeated until the genus is 0.
 
-use crate::par::*;
 use glam::DVec3;
+use hi_par::*;
 
 use crate::{Error, NonFiniteInput};
 

@@ -13,8 +13,8 @@
 
 use std::f64::consts::TAU;
 
-use crate::par::*;
 use hi_curve::ControlPoint;
+use hi_par::*;
 use realfft::RealFftPlanner;
 use realfft::num_complex::Complex;
 use rustfft::FftPlanner;

@@ -13,8 +13,8 @@
 //!
 //! Rows and columns are processed in parallel with rayon.
 
-use crate::par::*;
 use hi_curve::{ControlPoint, Fourier, Sigma};
+use hi_par::*;
 
 use crate::{Error, HarmonicSurface};
 

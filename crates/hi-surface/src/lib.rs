@@ -52,7 +52,6 @@ mod fft2;
 mod geometry;
 mod grid;
 mod mesh;
-mod par;
 mod parametric;
 mod resample;
 #[cfg(feature = "serde")]

@@ -5,7 +5,7 @@
 //!
 //! Compiled only with the crate's `testing` feature.
 
-use crate::par::*;
+use hi_par::*;
 
 use crate::grid::{check_params, check_sizes};
 use hi_curve::ControlPoint;

@@ -188,7 +188,7 @@ pub(crate) fn measure_parts(
     let exact = measure == ErrorMeasure::Exact;
     // Scan → surface: each point's distance and the part it is nearest.
     let forward = || -> Result<Vec<(f64, u32)>, Error> {
-        use crate::par::*;
+        use hi_par::*;
         Ok(if exact {
             let bvh = TriangleBvh::try_new(&positions, &all_triangles)?;
             let grids = meshes
@@ -244,7 +244,7 @@ pub(crate) fn measure_parts(
         }
     };
     // Both ways at once (each builds its search structure on one thread).
-    let (forward, measured) = crate::par::join(forward, backward);
+    let (forward, measured) = hi_par::join(forward, backward);
     let forward = forward?;
     let mut measured = measured?.into_iter();
     // Each part's samples, those on fills apart.

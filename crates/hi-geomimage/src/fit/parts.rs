@@ -24,11 +24,11 @@ use crate::discparam::{
     DiscParamOptions, parameterise_disc, reflect_periodic, reflect_periodic_mask,
 };
 use crate::domain::Domain;
-use crate::par::*;
 use crate::sphereparam::{SphereParamOptions, parameterise};
 use crate::spherical::Layout;
 use crate::torusparam::{TorusParamOptions, parameterise_torus};
 use crate::{Error, GeometryImage};
+use hi_par::*;
 
 /// A part whose widest boundary loop would need a cap of at least this share of the part's own
 /// area is an open sheet (a terrain, a face mask, a range image: about 1); a closed scan's

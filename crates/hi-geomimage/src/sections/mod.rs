@@ -69,9 +69,9 @@ mod slice;
 
 use std::time::Instant;
 
-use crate::par::*;
 use glam::{DVec2, DVec3};
 use hi_curve::HarmonicCurve;
+use hi_par::*;
 use hi_surface::{HarmonicSurface, ParamRange};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 

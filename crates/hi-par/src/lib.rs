@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
-//! Data parallelism behind the `parallel` feature: rayon's parallel iterators when it is on (the
-//! default), else the same calls on the standard iterators, run in sequence. Both give the same
-//! values in the same order (every parallel loop here writes its own slots or collects in
-//! order; none reduces floating-point sums across threads).
+//! Data parallelism behind the `parallel` feature, written once for the harmonic crates
+//! (`hi-surface`, `hi-scan`, `hi-geomimage`): rayon's parallel iterators when it is on, else the
+//! same calls on the standard iterators, run in sequence. Both give the same values in the same
+//! order as long as each parallel loop writes its own slots or collects in order and reduces no
+//! floating-point sum across threads, which is how the crates use it.
 //!
-//! Public so that `hi-geomimage`, which builds on this crate, runs its loops the same way; not
-//! part of the crate's API.
+//! A crate that uses it brings every name in with `use hi_par::*;` and forwards its own
+//! `parallel` feature to `hi-par/parallel`.
 
 #[cfg(feature = "parallel")]
 pub use rayon::join;
@@ -84,6 +85,24 @@ mod sequential {
             self
         }
 
+        /// `flat_map` over an ordinary iterator.
+        fn flat_map_iter<U: IntoIterator, F: FnMut(Self::Item) -> U>(
+            self,
+            f: F,
+        ) -> std::iter::FlatMap<Self, U, F> {
+            self.flat_map(f)
+        }
+
+        /// `for_each` with one scratch value made by `init`.
+        fn for_each_init<S, I: FnOnce() -> S, F: FnMut(&mut S, Self::Item)>(
+            self,
+            init: I,
+            mut f: F,
+        ) {
+            let mut scratch = init();
+            self.for_each(|item| f(&mut scratch, item));
+        }
+
         /// `map` with one scratch value made by `init`.
         fn map_init<S, R, I: FnOnce() -> S, F: FnMut(&mut S, Self::Item) -> R>(
             self,
@@ -97,3 +116,8 @@ mod sequential {
 
     impl<I: Iterator> ParallelIterator for I {}
 }
+
+/// The example of this crate's README, run as a doctest so that it stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct CrateReadmeDoctests;
