@@ -61,7 +61,7 @@ pub struct BezierObject {
     colors: Vec<[f32; 3]>,
     pieces: Vec<Piece>,
     /// Control boxes of the pieces.
-    boxes: Vec<(DVec3, DVec3)>,
+    boxes: Vec<Aabb<DVec3>>,
     /// Control nets of the pieces of at most [`NET_POINTS`] points (their children's nets, at
     /// ray time, are split from these).
     nets: Vec<Option<Net>>,
@@ -143,7 +143,7 @@ impl BezierObject {
         }
         let bvh = Bvh::build(&boxes);
         let cones = pieces.iter().map(|p| normal_cone(&patches[p.patch], p.u, p.v)).collect();
-        let (lo, hi) = bvh.bounds();
+        let Aabb { min: lo, max: hi } = bvh.bounds();
         let tolerance = options.tolerance * ((hi - lo).length() + magnitude);
         let colors = (0..patches.len()).map(patch_color).collect();
         Ok(BezierObject {
@@ -183,8 +183,7 @@ impl BezierObject {
     /// The box of the patches (padded).
     #[must_use]
     pub fn bounds(&self) -> Aabb<DVec3> {
-        let (min, max) = self.bvh.bounds();
-        Aabb { min, max }
+        self.bvh.bounds()
     }
 
     /// The nearest hit: (patch, local u, local v, t).
@@ -234,20 +233,17 @@ impl BezierObject {
         ray: &Ray,
         piece: Piece,
         net: Option<&Net>,
-        known: Option<((DVec3, DVec3), Option<Cone>)>,
+        known: Option<(Aabb<DVec3>, Option<Cone>)>,
         depth: u32,
     ) -> Option<BezierHit> {
         let patch = &self.patches[piece.patch];
-        let (lo, hi) = match (known, net) {
+        let Aabb { min: lo, max: hi } = match (known, net) {
             (Some(k), _) => k.0,
             (None, Some(net)) => net.bounds(),
-            (None, None) => {
-                let bb = patch.subpatch_bounds(ParamWindow::new(
-                    ParamRange::new(piece.u[0], piece.u[1]),
-                    ParamRange::new(piece.v[0], piece.v[1]),
-                ));
-                (bb.min, bb.max)
-            }
+            (None, None) => patch.subpatch_bounds(ParamWindow::new(
+                ParamRange::new(piece.u[0], piece.u[1]),
+                ParamRange::new(piece.v[0], piece.v[1]),
+            )),
         };
         let pad = self.tolerance * 4.0;
         let (t0, t1) = slab(ray, lo - pad, hi + pad, ray.t_min, ray.t_max)?;
@@ -446,15 +442,14 @@ fn split_flat(
     depth: u32,
     options: &BezierOptions,
     pieces: &mut Vec<Piece>,
-    boxes: &mut Vec<(DVec3, DVec3)>,
+    boxes: &mut Vec<Aabb<DVec3>>,
     nets: &mut Vec<Option<Net>>,
 ) {
     let sub =
         patch.subpatch(ParamWindow::new(ParamRange::new(u[0], u[1]), ParamRange::new(v[0], v[1])));
     if depth >= options.max_depth || is_flat(&sub, options.flatness) {
         pieces.push(Piece { patch: index, u, v });
-        let bb = sub.control_bounding_box();
-        boxes.push((bb.min, bb.max));
+        boxes.push(sub.control_bounding_box());
         nets.push(Net::of(&sub));
         return;
     }
@@ -494,9 +489,12 @@ impl Net {
     }
 
     /// The box of the control points, which holds the piece (convex hull property).
-    fn bounds(&self) -> (DVec3, DVec3) {
+    fn bounds(&self) -> Aabb<DVec3> {
         let p = &self.points[..(self.m + 1) * (self.n + 1)];
-        p.iter().fold((p[0], p[0]), |(lo, hi), &q| (lo.min(q), hi.max(q)))
+        p.iter().fold(Aabb { min: p[0], max: p[0] }, |b, &q| Aabb {
+            min: b.min.min(q),
+            max: b.max.max(q),
+        })
     }
 
     /// The nets of the four quarters of the piece, split at the middle of u and v by de

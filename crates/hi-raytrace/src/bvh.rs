@@ -11,8 +11,9 @@
 use std::time::Duration;
 
 use glam::{DVec3, Vec3A};
+use hi_bezier::Aabb;
 use obvhs::BvhBuildParams;
-use obvhs::aabb::Aabb;
+use obvhs::aabb::Aabb as F32Aabb;
 use obvhs::cwbvh::CwBvh;
 use obvhs::cwbvh::builder::build_cwbvh;
 use obvhs::ray::{Ray as BvhRay, RayHit};
@@ -55,20 +56,20 @@ fn up(x: f64) -> f32 {
 }
 
 impl Bvh {
-    /// The BVH over the boxes (`lo`, `hi`), given in f64; `boxes` must not be empty.
-    pub(crate) fn build(boxes: &[(DVec3, DVec3)]) -> Self {
+    /// The BVH over the boxes, given in f64; `boxes` must not be empty.
+    pub(crate) fn build(boxes: &[Aabb<DVec3>]) -> Self {
         let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-        for (a, b) in boxes {
-            lo = lo.min(*a);
-            hi = hi.max(*b);
+        for b in boxes {
+            lo = lo.min(b.min);
+            hi = hi.max(b.max);
         }
         let size = (hi - lo).length() + lo.abs().max(hi.abs()).max_element();
         let pad = PAD * size;
-        let f32_boxes: Vec<Aabb> = boxes
+        let f32_boxes: Vec<F32Aabb> = boxes
             .iter()
-            .map(|(a, b)| {
-                let (a, b) = (*a - pad, *b + pad);
-                Aabb::new(
+            .map(|bb| {
+                let (a, b) = (bb.min - pad, bb.max + pad);
+                F32Aabb::new(
                     Vec3A::new(down(a.x), down(a.y), down(a.z)),
                     Vec3A::new(up(b.x), up(b.y), up(b.z)),
                 )
@@ -79,8 +80,8 @@ impl Bvh {
     }
 
     /// The f64 box of everything, padded.
-    pub(crate) fn bounds(&self) -> (DVec3, DVec3) {
-        (self.lo, self.hi)
+    pub(crate) fn bounds(&self) -> Aabb<DVec3> {
+        Aabb { min: self.lo, max: self.hi }
     }
 
     /// Calls `test(primitive, t_max)` for the primitives whose boxes the ray may meet, nearest

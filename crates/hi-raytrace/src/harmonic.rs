@@ -238,7 +238,7 @@ impl HarmonicObject {
             coeffs,
             eval_err,
             cells: Vec::new(),
-            bvh: Bvh::build(&[(DVec3::ZERO, DVec3::ZERO)]),
+            bvh: Bvh::build(&[Aabb { min: DVec3::ZERO, max: DVec3::ZERO }]),
             options: *options,
             scale: 1.0,
             color: [0.8, 0.8, 0.8],
@@ -252,11 +252,11 @@ impl HarmonicObject {
                 let v = [j as f64 / nv as f64, (j + 1) as f64 / nv as f64];
                 let (cell, lo, hi) = obj.cell(u, v);
                 obj.cells.push(cell);
-                boxes.push((lo, hi));
+                boxes.push(Aabb { min: lo, max: hi });
             }
         }
         obj.bvh = Bvh::build(&boxes);
-        let (lo, hi) = obj.bvh.bounds();
+        let Aabb { min: lo, max: hi } = obj.bvh.bounds();
         obj.scale = (hi - lo).length() + lo.abs().max(hi.abs()).max_element();
         Ok(obj)
     }
@@ -303,8 +303,7 @@ impl HarmonicObject {
     /// The box of the surface (the union of the cell enclosures, padded).
     #[must_use]
     pub fn bounds(&self) -> Aabb<DVec3> {
-        let (min, max) = self.bvh.bounds();
-        Aabb { min, max }
+        self.bvh.bounds()
     }
 
     /// The legend of the curvature colours, if coloured by curvature.

@@ -50,12 +50,12 @@ impl MeshObject {
     #[must_use]
     pub fn new(mesh: TriangleMesh) -> Self {
         let p = mesh.positions();
-        let boxes: Vec<(DVec3, DVec3)> = mesh
+        let boxes: Vec<Aabb<DVec3>> = mesh
             .triangles()
             .iter()
             .map(|t| {
                 let [a, b, c] = t.map(|i| p[i as usize]);
-                (a.min(b).min(c), a.max(b).max(c))
+                Aabb { min: a.min(b).min(c), max: a.max(b).max(c) }
             })
             .collect();
         let bvh = Bvh::build(&boxes);
@@ -159,8 +159,7 @@ impl MeshObject {
     /// The box of the mesh (padded).
     #[must_use]
     pub fn bounds(&self) -> Aabb<DVec3> {
-        let (min, max) = self.bvh.bounds();
-        Aabb { min, max }
+        self.bvh.bounds()
     }
 
     /// The nearest hit in [`Ray::t_min`], [`Ray::t_max`] and the triangle's index, by the BVH.
