@@ -11,7 +11,7 @@ use hi_bezier::{BezierPatch, RationalBezierCurve, RationalBezierPatch, Triangula
 
 /// A bumpy patch of degree (n, n).
 fn patch(n: usize) -> BezierPatch<DVec3> {
-    BezierPatch::from_fn(n, n, |j, k| {
+    BezierPatch::try_from_fn(n, n, |j, k| {
         DVec3::new(j as f64, k as f64, ((j * 7 + k * 3) % 5) as f64 * 0.2)
     })
     .expect("finite points")
@@ -54,9 +54,10 @@ fn evaluation(c: &mut Criterion) {
 
     let mut group = c.benchmark_group("triangle_eval");
     for n in [1usize, 3, 6] {
-        let t =
-            TriangularPatch::from_fn(n, |i, j, k| DVec3::new(i as f64, j as f64, (k % 3) as f64))
-                .expect("finite points");
+        let t = TriangularPatch::try_from_fn(n, |i, j, k| {
+            DVec3::new(i as f64, j as f64, (k % 3) as f64)
+        })
+        .expect("finite points");
         group.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
             b.iter(|| t.eval(black_box(0.2), black_box(0.3)))
         });

@@ -84,6 +84,7 @@ mod rational_patch;
 mod roots;
 #[cfg(feature = "serde")]
 mod serde_impls;
+mod small_patch;
 mod subdivide;
 mod triangle;
 mod window;
@@ -101,6 +102,7 @@ pub use piecewise::PiecewiseBezier;
 pub use point::ControlPoint;
 pub use rational::RationalBezierCurve;
 pub use rational_patch::RationalBezierPatch;
+pub use small_patch::SmallPatch;
 pub use triangle::TriangularPatch;
 pub use window::{ParamRange, ParamWindow};
 

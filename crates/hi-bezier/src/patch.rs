@@ -74,7 +74,7 @@ impl<P: ControlPoint> BezierPatch<P> {
     /// # Errors
     ///
     /// [`Error::NonFinitePoint`] if `f` returns a non-finite point.
-    pub fn from_fn(
+    pub fn try_from_fn(
         degree_u: usize,
         degree_v: usize,
         mut f: impl FnMut(usize, usize) -> P,
@@ -531,13 +531,14 @@ mod tests {
             Err(Error::NonFinitePoint { index: 3 })
         );
         assert!(
-            BezierPatch::from_fn(1, 1, |j, _| if j == 1 { f64::INFINITY } else { 0.0 }).is_err()
+            BezierPatch::try_from_fn(1, 1, |j, _| if j == 1 { f64::INFINITY } else { 0.0 })
+                .is_err()
         );
     }
 
     #[test]
     fn shape_accessors() {
-        let p = BezierPatch::from_fn(2, 3, |j, k| (10 * j + k) as f64).unwrap();
+        let p = BezierPatch::try_from_fn(2, 3, |j, k| (10 * j + k) as f64).unwrap();
         assert_eq!(p.control_point(2, 3), Some(23.0));
         assert_eq!(p.control_point(3, 0), None);
         let t = p.transpose();

@@ -279,9 +279,10 @@ mod tests {
 
     #[test]
     fn unit_weights_are_polynomial() {
-        let poly =
-            BezierPatch::from_fn(2, 3, |j, k| DVec3::new(j as f64, k as f64, (j * k) as f64 * 0.3))
-                .unwrap();
+        let poly = BezierPatch::try_from_fn(2, 3, |j, k| {
+            DVec3::new(j as f64, k as f64, (j * k) as f64 * 0.3)
+        })
+        .unwrap();
         let rat = RationalBezierPatch::from_polynomial(&poly);
         for (u, v) in [(0.1, 0.2), (0.5, 0.9), (1.0, 0.0)] {
             assert!((rat.eval(u, v) - poly.eval(u, v)).length() < 1e-14);

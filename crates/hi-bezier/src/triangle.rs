@@ -29,7 +29,7 @@ use crate::{BezierCurve, ControlPoint, Error};
 ///
 /// // Degree 1 is the flat triangle with vertices x₁₀₀, x₀₁₀, x₀₀₁.
 /// let (a, b, c) = (DVec3::X, DVec3::Y, DVec3::Z);
-/// let tri = TriangularPatch::from_fn(1, |i, j, _| if i == 1 { a } else if j == 1 { b } else { c })
+/// let tri = TriangularPatch::try_from_fn(1, |i, j, _| if i == 1 { a } else if j == 1 { b } else { c })
 ///     .unwrap();
 /// let p = tri.eval(0.2, 0.3);
 /// assert!((p - (0.2 * a + 0.3 * b + 0.5 * c)).length() < 1e-15);
@@ -88,7 +88,7 @@ impl<P: ControlPoint> TriangularPatch<P> {
     /// # Errors
     ///
     /// [`Error::NonFinitePoint`] if `f` returns a non-finite point.
-    pub fn from_fn(
+    pub fn try_from_fn(
         degree: usize,
         mut f: impl FnMut(usize, usize, usize) -> P,
     ) -> Result<Self, Error> {
@@ -284,16 +284,17 @@ mod tests {
         );
         assert_eq!(TriangularPatch::try_new(vec![0.0; 6]).map(|t| t.degree()), Ok(2));
         assert_eq!(TriangularPatch::try_new(vec![0.0]).map(|t| t.degree()), Ok(0));
-        let t = TriangularPatch::from_fn(2, |i, j, k| (100 * i + 10 * j + k) as f64).unwrap();
+        let t = TriangularPatch::try_from_fn(2, |i, j, k| (100 * i + 10 * j + k) as f64).unwrap();
         assert_eq!(t.control_point(1, 0, 1), Some(101.0));
         assert_eq!(t.control_point(1, 1, 1), None);
     }
 
     #[test]
     fn corners_and_edges() {
-        let t =
-            TriangularPatch::from_fn(3, |i, j, k| DVec3::new(i as f64, j as f64, (k * k) as f64))
-                .unwrap();
+        let t = TriangularPatch::try_from_fn(3, |i, j, k| {
+            DVec3::new(i as f64, j as f64, (k * k) as f64)
+        })
+        .unwrap();
         assert!((t.eval(1.0, 0.0) - DVec3::new(3.0, 0.0, 0.0)).length() < 1e-15);
         assert!((t.eval(0.0, 1.0) - DVec3::new(0.0, 3.0, 0.0)).length() < 1e-15);
         assert!((t.eval(0.0, 0.0) - DVec3::new(0.0, 0.0, 9.0)).length() < 1e-15);

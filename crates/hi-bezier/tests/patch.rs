@@ -11,11 +11,12 @@ use common::bernstein;
 use glam::{DVec2, DVec3};
 use hi_bezier::{
     Aabb, BezierPatch, Error, ParamRange, ParamWindow, RationalBezierCurve, RationalBezierPatch,
+    SmallPatch,
 };
 
 /// A bumpy patch of degree (3, 4).
 fn bumpy() -> BezierPatch<DVec3> {
-    BezierPatch::from_fn(3, 4, |j, k| {
+    BezierPatch::try_from_fn(3, 4, |j, k| {
         DVec3::new(
             j as f64 + 0.1 * k as f64,
             k as f64 - 0.2 * j as f64,
@@ -107,7 +108,7 @@ fn first_partials_are_the_thesis_difference_formulas() {
 #[test]
 fn one_pass_partials_agree() {
     let line =
-        BezierPatch::from_fn(0, 2, |_, k| DVec3::new(k as f64, (k * k) as f64, 1.0)).unwrap();
+        BezierPatch::try_from_fn(0, 2, |_, k| DVec3::new(k as f64, (k * k) as f64, 1.0)).unwrap();
     for p in [bumpy(), bumpy().transpose(), line.clone(), line.transpose()] {
         for (u, v) in params() {
             let (q, pu, pv) = p.eval_with_partials(u, v);
@@ -171,7 +172,7 @@ fn bounding_box_by_subdivision_is_tight_to_the_accuracy() {
 #[test]
 fn normals() {
     // A flat patch in z = 0 with u along x and v along y has normal +z.
-    let flat = BezierPatch::from_fn(2, 3, |j, k| {
+    let flat = BezierPatch::try_from_fn(2, 3, |j, k| {
         DVec3::new(j as f64, k as f64 + 0.1 * (j * j) as f64, 0.0)
     })
     .unwrap();
@@ -261,4 +262,36 @@ fn validation() {
         RationalBezierPatch::try_new(vec![vec![DVec3::ZERO]], vec![vec![-1.0]]),
         Err(Error::InvalidWeight { index: 0, value: -1.0 })
     );
+}
+
+#[test]
+fn small_patches_split_into_the_subpatches_of_their_quarters() {
+    // A 4 × 3 net (rows ≠ columns, to catch a transposed index) and a bicubic one; the
+    // quarters come from halving on the stack, the subpatches from `BezierPatch::subpatch`.
+    let windows = [
+        ((0.0, 0.5), (0.0, 0.5)),
+        ((0.5, 1.0), (0.0, 0.5)),
+        ((0.0, 0.5), (0.5, 1.0)),
+        ((0.5, 1.0), (0.5, 1.0)),
+    ];
+    for cols in [3, 4] {
+        let p = BezierPatch::try_from_fn(3, cols - 1, |j, k| {
+            DVec3::new(j as f64, (k * k) as f64, ((j * 4 + k) as f64).cos())
+        })
+        .unwrap();
+        let small = SmallPatch::try_from_patch(&p).expect("at most 16 points fit");
+        assert_eq!((small.degree_u(), small.degree_v()), (3, cols - 1));
+        assert_eq!(small.control_points(), p.control_points());
+        assert_eq!(small.control_bounding_box(), p.control_bounding_box());
+        for (quarter, ((u0, u1), (v0, v1))) in small.quarters().iter().zip(windows) {
+            let sub =
+                p.subpatch(ParamWindow::new(ParamRange::new(u0, u1), ParamRange::new(v0, v1)));
+            for (a, b) in quarter.control_points().iter().zip(sub.control_points()) {
+                assert!((*a - *b).length() < 1e-14, "{a} {b}");
+            }
+        }
+    }
+    // A biquartic patch (25 points) does not fit.
+    let big = BezierPatch::try_from_fn(4, 4, |j, k| DVec3::new(j as f64, k as f64, 0.0)).unwrap();
+    assert!(SmallPatch::try_from_patch(&big).is_none());
 }

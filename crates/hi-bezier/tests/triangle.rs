@@ -30,7 +30,7 @@ fn trivariate_sum(t: &TriangularPatch<DVec3>, u: f64, v: f64) -> DVec3 {
 
 /// Figure 4.4's net: a degree-3 triangle (the thesis gives no coordinates; a stand-in).
 fn figure_4_4() -> TriangularPatch<DVec3> {
-    TriangularPatch::from_fn(3, |i, j, k| {
+    TriangularPatch::try_from_fn(3, |i, j, k| {
         let (a, b) = (i as f64 / 3.0, j as f64 / 3.0);
         DVec3::new(a + 0.5 * b, b * 0.866, (i * j * k) as f64 * 0.4 + 0.1 * k as f64)
     })
@@ -125,7 +125,7 @@ fn blossomed_quadratics_are_reproduced() {
     // The parameter-triangle vertices: (u, v) = (1, 0) for i, (0, 1) for j, (0, 0) for k.
     let (e1, e2, e3) = ([1.0, 0.0], [0.0, 1.0], [0.0, 0.0]);
     for n in [2usize, 3, 5] {
-        let tri = TriangularPatch::from_fn(n, |i, j, k| {
+        let tri = TriangularPatch::try_from_fn(n, |i, j, k| {
             let mut args = vec![e1; i];
             args.extend(vec![e2; j]);
             args.extend(vec![e3; k]);
@@ -165,8 +165,8 @@ fn blossomed_quadratics_are_reproduced() {
 #[test]
 fn linear_precision_and_partition_of_unity() {
     for n in [1usize, 2, 4, 7] {
-        let constant = TriangularPatch::from_fn(n, |_, _, _| DVec3::splat(2.5)).unwrap();
-        let linear = TriangularPatch::from_fn(n, |i, j, _| {
+        let constant = TriangularPatch::try_from_fn(n, |_, _, _| DVec3::splat(2.5)).unwrap();
+        let linear = TriangularPatch::try_from_fn(n, |i, j, _| {
             DVec3::new(i as f64 / n as f64, j as f64 / n as f64, 0.0)
         })
         .unwrap();
@@ -228,7 +228,11 @@ fn validation() {
         Err(Error::NonFinitePoint { index: 2 })
     );
     assert!(
-        TriangularPatch::from_fn(2, |i, _, _| if i == 2 { DVec3::INFINITY } else { DVec3::ZERO })
-            .is_err()
+        TriangularPatch::try_from_fn(2, |i, _, _| if i == 2 {
+            DVec3::INFINITY
+        } else {
+            DVec3::ZERO
+        })
+        .is_err()
     );
 }

@@ -12,7 +12,7 @@
 //! levels deep, with Newton from each sub-piece the ray meets.
 
 use glam::DVec3;
-use hi_bezier::{Aabb, Bernstein, BezierPatch, ParamRange, ParamWindow};
+use hi_bezier::{Aabb, Bernstein, BezierPatch, ParamRange, ParamWindow, SmallPatch};
 use hi_surface::bezier::{SurfaceBezier, patch_color};
 
 use crate::bvh::{Bvh, slab};
@@ -62,9 +62,9 @@ pub struct BezierObject {
     pieces: Vec<Piece>,
     /// Control boxes of the pieces.
     boxes: Vec<Aabb<DVec3>>,
-    /// Control nets of the pieces of at most [`NET_POINTS`] points (their children's nets, at
+    /// Control nets of the pieces of at most [`SmallPatch::MAX_POINTS`] points (their children's nets, at
     /// ray time, are split from these).
-    nets: Vec<Option<Net>>,
+    nets: Vec<Option<SmallPatch<DVec3>>>,
     /// Normal cones of the pieces (`None` where a normal is undefined or the cone is too wide).
     cones: Vec<Option<Cone>>,
     bvh: Bvh,
@@ -224,7 +224,7 @@ impl BezierObject {
     /// the piece at most once, and Newton from the centre finds that root; otherwise (a grazing
     /// ray, which may cross the piece twice), or if Newton fails, the sub-pieces are searched.
     ///
-    /// `net` is the piece's control net, if it has at most [`NET_POINTS`] points. `known` holds
+    /// `net` is the piece's control net, if it has at most [`SmallPatch::MAX_POINTS`] points. `known` holds
     /// its control box and normal cone when they were computed at build time; a sub-piece's
     /// are computed here, the cone only once the ray meets the box and only where it decides
     /// something (most sub-pieces' boxes are missed, and the cone costs 25 evaluations).
@@ -232,14 +232,14 @@ impl BezierObject {
         &self,
         ray: &Ray,
         piece: Piece,
-        net: Option<&Net>,
+        net: Option<&SmallPatch<DVec3>>,
         known: Option<(Aabb<DVec3>, Option<Cone>)>,
         depth: u32,
     ) -> Option<BezierHit> {
         let patch = &self.patches[piece.patch];
         let Aabb { min: lo, max: hi } = match (known, net) {
             (Some(k), _) => k.0,
-            (None, Some(net)) => net.bounds(),
+            (None, Some(net)) => net.control_bounding_box(),
             (None, None) => patch.subpatch_bounds(ParamWindow::new(
                 ParamRange::new(piece.u[0], piece.u[1]),
                 ParamRange::new(piece.v[0], piece.v[1]),
@@ -265,7 +265,7 @@ impl BezierObject {
             Newton::Outside | Newton::Failed => {}
         }
         let (um, vm) = (0.5 * (piece.u[0] + piece.u[1]), 0.5 * (piece.v[0] + piece.v[1]));
-        let nets = net.map(Net::quarters);
+        let nets = net.map(SmallPatch::quarters);
         for (i, (u, v)) in [
             ([piece.u[0], um], [piece.v[0], vm]),
             ([um, piece.u[1]], [piece.v[0], vm]),
@@ -443,14 +443,14 @@ fn split_flat(
     options: &BezierOptions,
     pieces: &mut Vec<Piece>,
     boxes: &mut Vec<Aabb<DVec3>>,
-    nets: &mut Vec<Option<Net>>,
+    nets: &mut Vec<Option<SmallPatch<DVec3>>>,
 ) {
     let sub =
         patch.subpatch(ParamWindow::new(ParamRange::new(u[0], u[1]), ParamRange::new(v[0], v[1])));
     if depth >= options.max_depth || is_flat(&sub, options.flatness) {
         pieces.push(Piece { patch: index, u, v });
         boxes.push(sub.control_bounding_box());
-        nets.push(Net::of(&sub));
+        nets.push(SmallPatch::try_from_patch(&sub));
         return;
     }
     let (um, vm) = (0.5 * (u[0] + u[1]), 0.5 * (v[0] + v[1]));
@@ -461,88 +461,6 @@ fn split_flat(
         ([um, u[1]], [vm, v[1]]),
     ] {
         split_flat(patch, index, a, b, depth + 1, options, pieces, boxes, nets);
-    }
-}
-
-/// Most control points a [`Net`] holds: a bicubic patch's 4 × 4 (larger patches take their
-/// boxes from `hi-bezier` at ray time).
-const NET_POINTS: usize = 16;
-
-/// The control net of a piece: (m + 1) × (n + 1) ≤ [`NET_POINTS`] points, row j (of u) after
-/// row j − 1, on the stack.
-#[derive(Clone, Copy, Debug)]
-struct Net {
-    points: [DVec3; NET_POINTS],
-    m: usize,
-    n: usize,
-}
-
-impl Net {
-    /// The net of `patch`, if it has at most [`NET_POINTS`] control points.
-    fn of(patch: &BezierPatch<DVec3>) -> Option<Net> {
-        let p = patch.control_points();
-        (p.len() <= NET_POINTS).then(|| {
-            let mut points = [DVec3::ZERO; NET_POINTS];
-            points[..p.len()].copy_from_slice(p);
-            Net { points, m: patch.degree_u(), n: patch.degree_v() }
-        })
-    }
-
-    /// The box of the control points, which holds the piece (convex hull property).
-    fn bounds(&self) -> Aabb<DVec3> {
-        let p = &self.points[..(self.m + 1) * (self.n + 1)];
-        p.iter().fold(Aabb { min: p[0], max: p[0] }, |b, &q| Aabb {
-            min: b.min.min(q),
-            max: b.max.max(q),
-        })
-    }
-
-    /// The nets of the four quarters of the piece, split at the middle of u and v by de
-    /// Casteljau (u low and v low, u high and v low, u low and v high, u high and v high).
-    fn quarters(&self) -> [Net; 4] {
-        let (rows, cols) = (self.m + 1, self.n + 1);
-        let empty = Net { points: [DVec3::ZERO; NET_POINTS], m: self.m, n: self.n };
-        // Each row halved in v, then each column of each half halved in u.
-        let (mut v_low, mut v_high) = (empty, empty);
-        let mut work = [DVec3::ZERO; NET_POINTS];
-        for j in 0..rows {
-            let row = &self.points[j * cols..(j + 1) * cols];
-            halve(row, &mut work, |i, a, b| {
-                v_low.points[j * cols + i] = a;
-                v_high.points[j * cols + cols - 1 - i] = b;
-            });
-        }
-        let mut quarter = |half: &Net| {
-            let (mut low, mut high) = (empty, empty);
-            let mut column = [DVec3::ZERO; NET_POINTS];
-            for k in 0..cols {
-                for (j, c) in column[..rows].iter_mut().enumerate() {
-                    *c = half.points[j * cols + k];
-                }
-                halve(&column[..rows], &mut work, |i, a, b| {
-                    low.points[i * cols + k] = a;
-                    high.points[(rows - 1 - i) * cols + k] = b;
-                });
-            }
-            (low, high)
-        };
-        let (a, b) = quarter(&v_low);
-        let (c, d) = quarter(&v_high);
-        [a, b, c, d]
-    }
-}
-
-/// De Casteljau at ½ on the polygon `c`: calls `out(i, first, last)` with the first and last
-/// point after i steps, which are point i of the first half and point i from the end of the
-/// second. `work` holds at least `c.len()` points.
-fn halve(c: &[DVec3], work: &mut [DVec3], mut out: impl FnMut(usize, DVec3, DVec3)) {
-    let len = c.len();
-    work[..len].copy_from_slice(c);
-    for i in 0..len {
-        out(i, work[0], work[len - 1 - i]);
-        for j in 0..len - 1 - i {
-            work[j] = 0.5 * (work[j] + work[j + 1]);
-        }
     }
 }
 
@@ -645,32 +563,6 @@ mod tests {
                 let (x, y, z) = p.eval_with_partials(u, v);
                 assert!((a - x).length() < 1e-13 && (b - y).length() < 1e-13, "{u} {v}");
                 assert!((c - z).length() < 1e-13, "{u} {v}");
-            }
-        }
-    }
-
-    #[test]
-    fn quarter_nets_are_the_subpatches() {
-        let rows: Vec<Vec<DVec3>> = (0..4)
-            .map(|j| {
-                (0..4)
-                    .map(|k| DVec3::new(j as f64, (k * k) as f64, ((j * 4 + k) as f64).cos()))
-                    .collect()
-            })
-            .collect();
-        let p = BezierPatch::new(rows);
-        let net = Net::of(&p).expect("a bicubic net fits");
-        let windows = [
-            ((0.0, 0.5), (0.0, 0.5)),
-            ((0.5, 1.0), (0.0, 0.5)),
-            ((0.0, 0.5), (0.5, 1.0)),
-            ((0.5, 1.0), (0.5, 1.0)),
-        ];
-        for (quarter, ((u0, u1), (v0, v1))) in net.quarters().iter().zip(windows) {
-            let sub =
-                p.subpatch(ParamWindow::new(ParamRange::new(u0, u1), ParamRange::new(v0, v1)));
-            for (a, b) in quarter.points.iter().zip(sub.control_points()) {
-                assert!((*a - *b).length() < 1e-14, "{a} {b}");
             }
         }
     }

@@ -105,7 +105,7 @@ fn point_set(title: &str) -> Result<Vec<u8>> {
 
 /// A bicubic patch over the unit square shifted by `offset`, with the heights `z`.
 fn height_patch(offset: DVec3, z: [[f64; 4]; 4]) -> Result<BezierPatch<DVec3>> {
-    Ok(BezierPatch::from_fn(3, 3, |j, k| {
+    Ok(BezierPatch::try_from_fn(3, 3, |j, k| {
         offset + DVec3::new(j as f64 / 3.0 * 2.0, k as f64 / 3.0 * 2.0, z[j][k])
     })?)
 }
@@ -199,7 +199,7 @@ fn piecewise_patches() -> Result<Vec<u8>> {
 fn bezier_triangle() -> Result<TriangularPatch<DVec3>> {
     let corners =
         [DVec3::new(2.0, -1.15, 0.0), DVec3::new(0.0, 2.3, 0.0), DVec3::new(-2.0, -1.15, 0.0)];
-    Ok(TriangularPatch::from_fn(3, |i, j, k| {
+    Ok(TriangularPatch::try_from_fn(3, |i, j, k| {
         let flat = (i as f64 * corners[0] + j as f64 * corners[1] + k as f64 * corners[2]) / 3.0;
         let height = match (i, j, k) {
             (1, 1, 1) => 1.6,
