@@ -144,23 +144,21 @@ impl<P: ControlPoint> BezierPatch<P> {
         }
     }
 
-    /// p(u, v) with its first partials (p, ∂p/∂u, ∂p/∂v) in one pass: the rows are reduced
-    /// in v to their values and v-derivatives, then both columns in u. Cheaper than three calls
-    /// of [`BezierPatch::eval_deriv`].
+    /// p(u, v) with its first partials (p, ∂p/∂u, ∂p/∂v) in one pass, allocating nothing for
+    /// degrees up to 15: p = Σⱼ Bᵐⱼ(u)·Σₖ Bⁿₖ(v)·xⱼₖ and its partials with the Bernstein values
+    /// and derivatives of each parameter computed once (§4.3), in (m + 1)(n + 1) steps (the
+    /// bicubic patches of §5.7 by loops the compiler unrolls). Beyond degree 15, de Casteljau:
+    /// the rows reduced in v to their values and v-derivatives, then both columns in u. Cheaper
+    /// than three calls of [`BezierPatch::eval_deriv`].
     #[must_use]
     pub fn eval_with_partials(&self, u: f64, v: f64) -> (P, P, P) {
-        if self.n_rows <= SMALL {
-            // On the stack: the rows' values and v-derivatives, reduced in place.
-            let (mut values, mut v_derivs) = ([P::ZERO; SMALL], [P::ZERO; SMALL]);
-            for ((r, value), v_deriv) in
-                self.points.chunks(self.n_cols).zip(&mut values).zip(&mut v_derivs)
-            {
-                (*value, *v_deriv) = with_scratch(r, |w| de_casteljau_with_deriv(w, v));
+        let (m, n) = (self.degree_u(), self.degree_v());
+        if m == 3 && n == 3 {
+            if let Some(sums) = self.bernstein_sums::<4>(u, v) {
+                return sums;
             }
-            let n = self.n_rows;
-            let (p, pu) = de_casteljau_with_deriv(&mut values[..n], u);
-            let pv = de_casteljau(&mut v_derivs[..n], u);
-            return (p, pu, pv);
+        } else if let Some(sums) = self.bernstein_sums::<SMALL>(u, v) {
+            return sums;
         }
         let mut values = Vec::with_capacity(self.n_rows);
         let mut v_derivs = Vec::with_capacity(self.n_rows);
@@ -172,6 +170,26 @@ impl<P: ControlPoint> BezierPatch<P> {
         let (p, pu) = with_scratch(&values, |w| de_casteljau_with_deriv(w, u));
         let pv = with_scratch(&v_derivs, |w| de_casteljau(w, u));
         (p, pu, pv)
+    }
+
+    /// [`BezierPatch::eval_with_partials`] by the Bernstein sums, with the basis in arrays of
+    /// `N` (so both degrees below `N`; `None` otherwise).
+    fn bernstein_sums<const N: usize>(&self, u: f64, v: f64) -> Option<(P, P, P)> {
+        let (m, n) = (self.degree_u(), self.degree_v());
+        let (bu, dbu) = Bernstein::new(m).values_with_derivatives::<N>(u)?;
+        let (bv, dbv) = Bernstein::new(n).values_with_derivatives::<N>(v)?;
+        let (mut s, mut su, mut sv) = (P::ZERO, P::ZERO, P::ZERO);
+        for (j, row) in self.points.chunks(n + 1).enumerate() {
+            let (mut r, mut rv) = (P::ZERO, P::ZERO);
+            for (k, x) in row.iter().enumerate() {
+                r += *x * bv[k];
+                rv += *x * dbv[k];
+            }
+            s += r * bu[j];
+            su += r * dbu[j];
+            sv += rv * bu[j];
+        }
+        Some((s, su, sv))
     }
 
     /// p at every (uᵢ, vⱼ) of a tensor grid of parameters, row-major (`us.len()` rows of

@@ -295,3 +295,22 @@ fn small_patches_split_into_the_subpatches_of_their_quarters() {
     let big = BezierPatch::try_from_fn(4, 4, |j, k| DVec3::new(j as f64, k as f64, 0.0)).unwrap();
     assert!(SmallPatch::try_from_patch(&big).is_none());
 }
+
+#[test]
+fn partials_agree_with_de_casteljau_at_every_degree() {
+    // The Bernstein sums (degrees up to 15, the bicubic case unrolled) and de Casteljau beyond
+    // against `eval` and `eval_deriv` (de Casteljau on the hodograph patches).
+    for (m, n) in [(3, 3), (3, 2), (1, 4), (15, 2), (16, 3)] {
+        let p = BezierPatch::try_from_fn(m, n, |j, k| {
+            DVec3::new(j as f64, (k * k) as f64, ((j * 7 + k) as f64).sin())
+        })
+        .unwrap();
+        for (u, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 0.5), (0.9, 1.0), (-0.2, 1.1)] {
+            let (s, su, sv) = p.eval_with_partials(u, v);
+            let scale = 1.0 + (m + n) as f64;
+            assert!((s - p.eval(u, v)).length() < 1e-12 * scale, "({m}, {n}) at {u}, {v}");
+            assert!((su - p.eval_deriv(u, v, 1, 0)).length() < 1e-11 * scale, "({m}, {n}) ∂u");
+            assert!((sv - p.eval_deriv(u, v, 0, 1)).length() < 1e-11 * scale, "({m}, {n}) ∂v");
+        }
+    }
+}

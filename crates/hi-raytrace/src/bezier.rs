@@ -12,15 +12,12 @@
 //! levels deep, with Newton from each sub-piece the ray meets.
 
 use glam::DVec3;
-use hi_bezier::{Aabb, Bernstein, BezierPatch, ParamRange, ParamWindow, SmallPatch};
+use hi_bezier::{Aabb, BezierPatch, ParamRange, ParamWindow, SmallPatch};
 use hi_surface::bezier::{SurfaceBezier, patch_color};
 
 use crate::bvh::{Bvh, slab};
 use crate::error::{Error, check_positive};
 use crate::ray::{Ray, gamma};
-
-/// Largest patch degree with the allocation-free evaluation (higher degrees use `hi-bezier`).
-const MAX_FAST_DEGREE: usize = 15;
 
 /// How Bézier patches are prepared and intersected.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -303,7 +300,7 @@ impl BezierObject {
         let mut polish = 0;
         let mut last = f64::INFINITY;
         for _ in 0..32 {
-            let (s, su, sv) = eval(patch, u, v);
+            let (s, su, sv) = patch.eval_with_partials(u, v);
             let f = s - ray.point_at(t);
             let residual = f.length();
             if residual <= self.tolerance {
@@ -367,7 +364,7 @@ impl BezierObject {
         let normal = su.cross(sv).try_normalize().unwrap_or_else(|| {
             // A collapsed edge or corner: the normal a little inside the patch.
             let (u, v) = (0.5 + 0.999 * (h.u - 0.5), 0.5 + 0.999 * (h.v - 0.5));
-            let (_, a, b) = eval(patch, u, v);
+            let (_, a, b) = patch.eval_with_partials(u, v);
             a.cross(b).try_normalize().unwrap_or(DVec3::Z)
         });
         let uv = self.windows[h.patch].lerp(h.u, h.v);
@@ -400,7 +397,7 @@ fn normal_cone(patch: &BezierPatch<DVec3>, u: [f64; 2], v: [f64; 2]) -> Option<C
     for (i, n) in normals.iter_mut().enumerate() {
         let s = u[0] + (u[1] - u[0]) * (i / 5) as f64 / 4.0;
         let t = v[0] + (v[1] - v[0]) * (i % 5) as f64 / 4.0;
-        let (_, su, sv) = eval(patch, s, t);
+        let (_, su, sv) = patch.eval_with_partials(s, t);
         *n = su.cross(sv).try_normalize()?;
     }
     let axis = normals.iter().copied().sum::<DVec3>().try_normalize()?;
@@ -486,84 +483,4 @@ fn is_flat(p: &BezierPatch<DVec3>, flatness: f64) -> bool {
         }
     }
     true
-}
-
-/// S(u, v), Sᵤ, Sᵥ of a patch: the Bernstein values and derivatives of `hi_bezier` in fixed
-/// arrays up to degree [`MAX_FAST_DEGREE`] (no allocation), de Casteljau beyond.
-pub(crate) fn eval(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
-    let (m, n) = (p.degree_u(), p.degree_v());
-    if m == 3 && n == 3 {
-        return eval_square::<4>(p, u, v);
-    }
-    let (Some((bu, dbu)), Some((bv, dbv))) = (
-        Bernstein::new(m).values_with_derivatives::<{ MAX_FAST_DEGREE + 1 }>(u),
-        Bernstein::new(n).values_with_derivatives::<{ MAX_FAST_DEGREE + 1 }>(v),
-    ) else {
-        return p.eval_with_partials(u, v);
-    };
-    let pts = p.control_points();
-    let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
-    for j in 0..=m {
-        let row = &pts[j * (n + 1)..(j + 1) * (n + 1)];
-        let (mut r, mut rv) = (DVec3::ZERO, DVec3::ZERO);
-        for (k, x) in row.iter().enumerate() {
-            r += *x * bv[k];
-            rv += *x * dbv[k];
-        }
-        s += r * bu[j];
-        su += r * dbu[j];
-        sv += rv * bu[j];
-    }
-    (s, su, sv)
-}
-
-/// [`eval`] for a patch of degree `N − 1` in both directions (the bicubic patches of §5.7 take
-/// `N = 4`): the same sums in the same order, with loops the compiler unrolls.
-fn eval_square<const N: usize>(p: &BezierPatch<DVec3>, u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
-    let basis = Bernstein::new(N - 1);
-    let (Some((bu, dbu)), Some((bv, dbv))) =
-        (basis.values_with_derivatives::<N>(u), basis.values_with_derivatives::<N>(v))
-    else {
-        return p.eval_with_partials(u, v);
-    };
-    let pts = p.control_points();
-    let (mut s, mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
-    for j in 0..N {
-        let row = &pts[j * N..(j + 1) * N];
-        let (mut r, mut rv) = (DVec3::ZERO, DVec3::ZERO);
-        for k in 0..N {
-            r += row[k] * bv[k];
-            rv += row[k] * dbv[k];
-        }
-        s += r * bu[j];
-        su += r * dbu[j];
-        sv += rv * bu[j];
-    }
-    (s, su, sv)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fast_evaluation_matches_hi_bezier() {
-        // A 4 × 3 net (the general path) and a bicubic one (the unrolled path).
-        for cols in [3, 4] {
-            let rows: Vec<Vec<DVec3>> = (0..4)
-                .map(|j| {
-                    (0..cols)
-                        .map(|k| DVec3::new(j as f64, k as f64, ((j * cols + k) as f64).sin()))
-                        .collect()
-                })
-                .collect();
-            let p = BezierPatch::new(rows);
-            for (u, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 0.5), (0.9, 1.0)] {
-                let (a, b, c) = eval(&p, u, v);
-                let (x, y, z) = p.eval_with_partials(u, v);
-                assert!((a - x).length() < 1e-13 && (b - y).length() < 1e-13, "{u} {v}");
-                assert!((c - z).length() < 1e-13, "{u} {v}");
-            }
-        }
-    }
 }
