@@ -25,12 +25,12 @@
 //!    [`ClosedMesh::filled`] (for a [`Closing::Disc`], every hole but the one whose loop spans
 //!    the largest area: the disc's rim);
 //! 7. handles are cut (but a [`Closing::Torus`]'s), each along the shortest loop found that
-//!    does not separate the surface (searched within blocks of [`HANDLE_BLOCKS`]
-//!    mean edge lengths and over the whole mesh: the tunnels and bridges a zero set grows where
-//!    two sheets of a scan nearly touch, a tail that touches a body, the tube of a ring), and
-//!    both sides of each cut are closed as holes are, so the genus drops by one per loop. The caps of a cut lie on
-//!    each other, so the shape is kept: a ring stays a ring, closed across its tube at one
-//!    place;
+//!    does not separate the surface (searched within blocks of [`HANDLE_BLOCKS`] mean edge
+//!    lengths and over the whole mesh: the tunnels and bridges a zero set grows where two
+//!    sheets of a scan nearly touch, a tail that touches a body, the tube of a ring), and both
+//!    sides of each cut are closed as holes are, so the genus drops by one per loop. The caps
+//!    of a cut lie on each other, so the shape is kept: a ring stays a ring, closed across its
+//!    tube at one place;
 //! 8. the Euler characteristic V − E + F must then be 2 (sphere), 0 (torus) or 1 (disc), else
 //!    [`Error::Topology`] says which genus the surface has;
 //! 9. a closed result is flipped if its signed volume is negative, so that it winds outward.

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
-//! What the workspace's tests share. Only the tests depend on this crate (a dev-dependency by
-//! path), so nothing here reaches a user of the libraries.
+//! What the workspace's tests share: the one configuration of the property tests
+//! ([`proptest_config`]), and the one rule for checks that need something outside the
+//! repository, a peer program or a data set ([`skip`], [`shared_model`], [`cgal_demo_data`]).
+//! Only the tests depend on this crate (a dev-dependency by path), so nothing here reaches a
+//! user of the libraries.
 
 use proptest::test_runner::{Config, RngSeed};
 
-/// The seed of every property test unless `PROPTEST_RNG_SEED` names another: the date of the
-/// thesis, 2005-11-22.
+/// The seed of every property test unless `PROPTEST_RNG_SEED` names another (a fixed seed, so
+/// that a run is the same on every machine).
 pub const SEED: u64 = 20_051_122;
 
 /// The configuration of a property test: `cases` cases from the fixed [`SEED`], unless the
