@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 //! Data parallelism behind the `parallel` feature, written once for the harmonic crates
-//! (`hi-surface`, `hi-scan`, `hi-geomimage`): rayon's parallel iterators when it is on, else the
+//! (`hi-surface`, `hi-scan`, `hi-geomimage`, `hi-raytrace`): rayon's parallel iterators when it is on, else the
 //! same calls on the standard iterators, run in sequence. Both give the same values in the same
 //! order as long as each parallel loop writes its own slots or collects in order and reduces no
 //! floating-point sum across threads, which is how the crates use it.

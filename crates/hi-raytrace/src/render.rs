@@ -11,8 +11,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use hi_mesh::linear_to_srgb;
-#[cfg(feature = "parallel")]
-use rayon::prelude::*;
+use hi_par::*;
 
 use crate::camera::Camera;
 use crate::error::Error;
@@ -247,11 +246,8 @@ pub fn render(
     let background = scene.background();
     // The tiles on all cores (the `parallel` feature) or in turn; each is computed alone, so
     // the image is the same either way.
-    #[cfg(feature = "parallel")]
-    let tile_indices = (0..n_tiles).into_par_iter();
-    #[cfg(not(feature = "parallel"))]
-    let tile_indices = 0..n_tiles;
-    let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = tile_indices
+    let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = (0..n_tiles)
+        .into_par_iter()
         .map(|tile| {
             let (tx, ty) = (tile as u32 % nx, tile as u32 / nx);
             let (x0, y0) = (tx * ts, ty * ts);
