@@ -42,8 +42,6 @@ use crate::bvh::{Bvh, slab};
 use crate::error::{Error, check_positive};
 use crate::ray::{Ray, gamma};
 
-const TAU: f64 = std::f64::consts::TAU;
-
 /// How far past its cell (as a fraction of the cell's width) a cell's derivative bounds hold.
 const CELL_MARGIN: f64 = 0.05;
 
@@ -131,10 +129,6 @@ struct Cell {
 #[derive(Clone, Debug)]
 pub struct HarmonicObject {
     surface: HarmonicSurface<DVec3>,
-    deg_u: usize,
-    deg_v: usize,
-    /// (A, B, C, D) at index a·(`deg_v` + 1) + β.
-    coeffs: Vec<[DVec3; 4]>,
     /// A-priori bounds of the rounding error of p, pᵤ, pᵥ evaluated in f64.
     eval_err: [f64; 3],
     cells: Vec<Cell>,
@@ -161,23 +155,6 @@ pub struct HarmonicHit {
     /// Whether the root was proven unique in its final box (Krawczyk's test); bisection hits
     /// and undecided boxes report `false`.
     pub proven: bool,
-}
-
-/// The derivative of order `order` of the enclosures (cos 2πaX, sin 2πaX), given ω = 2πa.
-fn deriv_pair_interval(
-    c: Interval,
-    s: Interval,
-    w: Interval,
-    order: usize,
-) -> (Interval, Interval) {
-    let wp = w.powi(order as i32);
-    let (dc, ds) = match order % 4 {
-        0 => (c, s),
-        1 => (-s, c),
-        2 => (-c, -s),
-        _ => (s, -c),
-    };
-    (wp * dc, wp * ds)
 }
 
 impl HarmonicObject {
@@ -209,33 +186,10 @@ impl HarmonicObject {
                 expected: "at least 1",
             });
         }
-        let (m, n) = (surface.m(), surface.n());
-        let (deg_u, deg_v) = (m / 2, n / 2);
-        // The 2-D spectrum of hi-surface: [A, B, C, D] at a·(deg_v + 1) + b.
-        let coeffs: Vec<[DVec3; 4]> = surface.spectrum_coefficients().to_vec();
-        // Rounding error of the f64 evaluation: each term's trig values carry O((a + β + 2)·ε)
-        // (angle addition), the sum O(number of terms·ε); a generous constant covers both.
-        let n_terms = (deg_u + deg_v + 2 + 4 * (deg_u + 1) * (deg_v + 1)) as u32;
-        let mut eval_err = [0.0; 3];
-        for (k, (p, q)) in [(0, 0), (1, 0), (0, 1)].into_iter().enumerate() {
-            let mut w = 0.0;
-            for a in 0..=deg_u {
-                for b in 0..=deg_v {
-                    let c = &coeffs[a * (deg_v + 1) + b];
-                    let size: f64 = c.iter().map(|x| x.abs().max_element()).sum();
-                    w += size
-                        * (TAU * a as f64).powi(p)
-                        * (TAU * b as f64).powi(q)
-                        * (a + b + 2) as f64;
-                }
-            }
-            eval_err[k] = 16.0 * gamma(n_terms) * w;
-        }
+        // A-priori bounds of the rounding error of p, pᵤ, pᵥ evaluated in f64.
+        let eval_err = [(0, 0), (1, 0), (0, 1)].map(|(p, q)| surface.eval_error_bound(p, q));
         let mut obj = HarmonicObject {
             surface,
-            deg_u,
-            deg_v,
-            coeffs,
             eval_err,
             cells: Vec::new(),
             bvh: Bvh::build(&[Aabb { min: DVec3::ZERO, max: DVec3::ZERO }]),
@@ -319,32 +273,12 @@ impl HarmonicObject {
         self.surface.eval_with_partials(u, v)
     }
 
-    /// An enclosure of ∂ᵖ⁺ᑫp/∂uᵖ∂vᑫ over U × V in interval arithmetic, per coordinate.
+    /// An enclosure of ∂ᵖ⁺ᑫp/∂uᵖ∂vᑫ over U × V in interval arithmetic, per coordinate
+    /// ([`HarmonicSurface::enclose_deriv`]).
     fn enclose_deriv(&self, u: [f64; 2], v: [f64; 2], p: usize, q: usize) -> [Interval; 3] {
-        let (du, dv) = (self.deg_u, self.deg_v);
-        let two_pi = Interval::PI * 2.0;
-        let (uu, vv) = (Interval::new(u[0], u[1]), Interval::new(v[0], v[1]));
-        let trig = |x: Interval, deg: usize, order: usize| -> Vec<(Interval, Interval)> {
-            (0..=deg)
-                .map(|a| {
-                    let w = two_pi * a as f64;
-                    let (s, c) = (w * x).sin_cos();
-                    deriv_pair_interval(c, s, w, order)
-                })
-                .collect()
-        };
-        let tu = trig(uu, du, p);
-        let tv = trig(vv, dv, q);
-        let mut out = [Interval::ZERO; 3];
-        for (a, &(cu, su)) in tu.iter().enumerate() {
-            for (b, &(cv, sv)) in tv.iter().enumerate() {
-                let c = &self.coeffs[a * (dv + 1) + b];
-                for (k, o) in out.iter_mut().enumerate() {
-                    *o += cu * (cv * c[0][k] + sv * c[1][k]) + su * (cv * c[2][k] + sv * c[3][k]);
-                }
-            }
-        }
-        out
+        let e =
+            self.surface.enclose_deriv(Interval::new(u[0], u[1]), Interval::new(v[0], v[1]), p, q);
+        [e[0], e[1], e[2]]
     }
 
     /// The bounds of one cell and the box of its enclosure.

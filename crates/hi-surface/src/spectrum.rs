@@ -128,6 +128,68 @@ impl<P: ControlPoint> Spectrum2<P> {
         (self.deg_u, self.deg_v)
     }
 
+    /// An enclosure of ∂^{p+q}p/∂uᵖ∂v^q over the box `u` × `v`, per coordinate, written to
+    /// `out` (`P::DIM` intervals): the sum of the module documentation with each factor's
+    /// derivative, (cos 2πau)⁽ᵖ⁾ = (2πa)ᵖ·cos(2πau + pπ/2) and likewise for sin, evaluated in
+    /// interval arithmetic (§5.6), so every value of the stored spectrum's derivative over the box
+    /// lies in it.
+    pub(crate) fn enclose_deriv(
+        &self,
+        u: Interval,
+        v: Interval,
+        p: usize,
+        q: usize,
+        out: &mut [Interval],
+    ) {
+        let two_pi = Interval::PI * 2.0;
+        let trig = |x: Interval, deg: usize, order: usize| -> Vec<(Interval, Interval)> {
+            (0..=deg)
+                .map(|a| {
+                    let w = two_pi * a as f64;
+                    let (s, c) = (w * x).sin_cos();
+                    deriv_pair_interval(c, s, w, order)
+                })
+                .collect()
+        };
+        let tu = trig(u, self.deg_u, p);
+        let tv = trig(v, self.deg_v, q);
+        out.fill(Interval::ZERO);
+        for (a, &(cu, su)) in tu.iter().enumerate() {
+            for (b, &(cv, sv)) in tv.iter().enumerate() {
+                let c = &self.coeffs[a * (self.deg_v + 1) + b];
+                for (k, o) in out.iter_mut().enumerate() {
+                    let [ca, cb, cc, cd] = c.map(|x| x.coord(k));
+                    *o += cu * (cv * ca + sv * cb) + su * (cv * cc + sv * cd);
+                }
+            }
+        }
+    }
+
+    /// A bound of the rounding error of ∂^{p+q}p/∂uᵖ∂v^q evaluated in `f64` by
+    /// [`Spectrum2::eval_deriv`] or [`Spectrum2::eval_with_partials`], per coordinate: each
+    /// term's trigonometric values carry O((a + β + 2)·ε) (angle addition) and the sum
+    /// O(number of terms·ε), so 16·γₖ·Σₐᵦ (2πa)ᵖ(2πβ)^q·(a + β + 2)·max(|A|, …) with
+    /// k = a + β + 2 + 4·(terms) covers both (γₖ = k·u/(1 − k·u), Higham).
+    pub(crate) fn eval_error_bound(&self, p: i32, q: i32) -> f64 {
+        let (deg_u, deg_v) = (self.deg_u, self.deg_v);
+        let n_terms = (deg_u + deg_v + 2 + 4 * (deg_u + 1) * (deg_v + 1)) as u32;
+        let mut w = 0.0;
+        for a in 0..=deg_u {
+            for b in 0..=deg_v {
+                let c = &self.coeffs[a * (deg_v + 1) + b];
+                let size: f64 = c
+                    .iter()
+                    .map(|x| {
+                        (0..P::DIM).map(|d| x.coord(d).abs()).fold(f64::NEG_INFINITY, f64::max)
+                    })
+                    .sum();
+                w +=
+                    size * (TAU * a as f64).powi(p) * (TAU * b as f64).powi(q) * (a + b + 2) as f64;
+            }
+        }
+        16.0 * gamma(n_terms) * w
+    }
+
     /// An upper bound of sup over (u, v) of ‖∂^{p+q}p/∂uᵖ∂v^q‖: Σₐᵦ (2πa)ᵖ(2πβ)^q·(‖Aₐᵦ‖ +
     /// ‖Bₐᵦ‖ + ‖Cₐᵦ‖ + ‖Dₐᵦ‖) (each term's factors have magnitude at most one), summed in
     /// interval arithmetic and rounded up, so it bounds the spectrum as stored.
@@ -157,4 +219,29 @@ impl<P: ControlPoint> Spectrum2<P> {
         }
         sum.hi()
     }
+}
+
+/// The derivative of order `order` of the enclosures (cos 2πaX, sin 2πaX), given ω = 2πa:
+/// ωᵒʳᵈᵉʳ·(cos, sin) turned by `order` quarter turns.
+fn deriv_pair_interval(
+    c: Interval,
+    s: Interval,
+    w: Interval,
+    order: usize,
+) -> (Interval, Interval) {
+    let wp = w.powi(order as i32);
+    let (dc, ds) = match order % 4 {
+        0 => (c, s),
+        1 => (-s, c),
+        2 => (-c, -s),
+        _ => (s, -c),
+    };
+    (wp * dc, wp * ds)
+}
+
+/// γₙ = n·u/(1 − n·u) with u = 2⁻⁵³: the bound of the relative error of n rounded operations
+/// (Higham, *Accuracy and Stability of Numerical Algorithms*, §3.1).
+fn gamma(n: u32) -> f64 {
+    let nu = f64::from(n) * f64::EPSILON * 0.5;
+    nu / (1.0 - nu)
 }

@@ -2,6 +2,7 @@
 //! The harmonic tensor-product surface p(u, v) = Σⱼ Σₖ σᵐⱼ(u)·σⁿₖ(v)·xⱼₖ (Hardy 2005, §5.1).
 
 use hi_curve::{ControlPoint, Sigma};
+use hi_interval::Interval;
 
 use crate::Error;
 use crate::spectrum::Spectrum2;
@@ -196,6 +197,57 @@ impl<P: ControlPoint> HarmonicSurface<P> {
     #[must_use]
     pub fn deriv_bound(&self, p: usize, q: usize) -> f64 {
         self.spectrum.deriv_bound(p, q)
+    }
+
+    /// An enclosure of the partial derivative ∂^{p+q}p/∂uᵖ∂v^q over the parameter box `u` × `v`,
+    /// one interval per coordinate: the spectral sum of [`HarmonicSurface::spectrum_coefficients`]
+    /// with each factor differentiated, (cos 2πau)⁽ᵖ⁾ = (2πa)ᵖ·cos(2πau + pπ/2), evaluated in
+    /// interval arithmetic with outward rounding (§5.6). Every value of the derivative over the
+    /// box lies in it; the interval ray tracer bounds its cells with it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_interval::Interval;
+    ///
+    /// // The unit sphere: every point, over any box, lies within [-1, 1] per coordinate.
+    /// let s = hi_surface::sphere(1.0);
+    /// let (u, v) = (Interval::new(0.1, 0.2), Interval::new(0.3, 0.35));
+    /// let e = s.enclose_deriv(u, v, 0, 0);
+    /// assert_eq!(e.len(), 3);
+    /// for (uu, vv) in [(0.1, 0.3), (0.15, 0.33), (0.2, 0.35)] {
+    ///     let p = s.eval(uu, vv);
+    ///     assert!(e[0].contains(p.x) && e[1].contains(p.y) && e[2].contains(p.z));
+    /// }
+    /// ```
+    #[must_use]
+    pub fn enclose_deriv(&self, u: Interval, v: Interval, p: usize, q: usize) -> Vec<Interval> {
+        let mut out = vec![Interval::ZERO; P::DIM];
+        self.spectrum.enclose_deriv(u, v, p, q, &mut out);
+        out
+    }
+
+    /// A bound of the rounding error, per coordinate, of ∂^{p+q}p/∂uᵖ∂v^q evaluated in `f64` by
+    /// [`HarmonicSurface::eval_deriv`] or [`HarmonicSurface::eval_with_partials`]: 16·γₖ·Σₐᵦ
+    /// (2πa)ᵖ(2πβ)^q·(a + β + 2)·maxᵢ‖coefficient‖∞, where each term's trigonometric values
+    /// carry O((a + β + 2)·ε) from the angle additions and the sum O(k·ε) for its k operations
+    /// (γₖ = k·u/(1 − k·u), Higham §3.1). A value computed in `f64` plus or minus this bound
+    /// encloses the exact derivative of the stored spectrum, which is what the interval ray
+    /// tracer needs (§5.6).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let s = hi_surface::sphere(1.0);
+    /// let e = s.eval_error_bound(0, 0);
+    /// assert!(e > 0.0 && e < 1e-10);
+    /// // Derivatives carry the factors 2πa, so their bound is larger.
+    /// assert!(s.eval_error_bound(1, 0) > e);
+    /// ```
+    #[must_use]
+    pub fn eval_error_bound(&self, p: usize, q: usize) -> f64 {
+        let order = |k: usize| i32::try_from(k).unwrap_or(i32::MAX);
+        self.spectrum.eval_error_bound(order(p), order(q))
     }
 
     /// The real 2-D spectrum: p(u, v) = Σₐ Σᵦ [Aₐᵦ·cos 2πau·cos 2πβv + Bₐᵦ·cos 2πau·sin 2πβv +

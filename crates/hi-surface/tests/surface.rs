@@ -5,6 +5,7 @@
 use std::f64::consts::PI;
 
 use glam::{DMat3, DVec3};
+use hi_interval::Interval;
 use hi_surface::{Axis, Error, HarmonicSurface, sphere, torus};
 use hi_testkit::proptest_config;
 use proptest::prelude::*;
@@ -24,6 +25,47 @@ fn grid(max: usize) -> impl Strategy<Value = Vec<Vec<DVec3>>> {
 
 proptest! {
     #![proptest_config(proptest_config(96))]
+
+    /// The interval enclosure of every partial derivative up to order 2 over a parameter box
+    /// holds the derivative evaluated in f64 at points of the box, up to the f64 rounding
+    /// bound, and is no wider than the first-order Taylor bound from the spectrum allows.
+    #[test]
+    fn derivative_enclosures_hold_the_surface(
+        g in grid(9),
+        u0 in 0.0..1.0f64,
+        v0 in 0.0..1.0f64,
+        hu in 1e-4..0.05f64,
+        hv in 1e-4..0.05f64,
+    ) {
+        let s = HarmonicSurface::new(g);
+        let (u, v) = (Interval::new(u0, u0 + hu), Interval::new(v0, v0 + hv));
+        for (p, q) in [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)] {
+            let e = s.enclose_deriv(u, v, p, q);
+            let err = s.eval_error_bound(p, q);
+            for i in 0..=4 {
+                for j in 0..=4 {
+                    let (uu, vv) = (u0 + hu * i as f64 / 4.0, v0 + hv * j as f64 / 4.0);
+                    let d = s.eval_deriv(uu.min(u.hi()), vv.min(v.hi()), p, q).to_array();
+                    for k in 0..3 {
+                        prop_assert!(
+                            d[k] >= e[k].lo() - err && d[k] <= e[k].hi() + err,
+                            "order ({p}, {q}) coordinate {k}: {} outside {:?} ± {err}", d[k], e[k]
+                        );
+                    }
+                }
+            }
+            // Taylor: the derivative moves by at most M₁·h over the box, in each direction.
+            let slope = s.deriv_bound(p + 1, q) * hu + s.deriv_bound(p, q + 1) * hv;
+            let scale = s.deriv_bound(p, q);
+            for (k, x) in e.iter().enumerate() {
+                prop_assert!(
+                    x.width() <= 4.0 * slope + 1e-9 * (1.0 + scale),
+                    "order ({p}, {q}) coordinate {k}: width {} against slope bound {slope}",
+                    x.width()
+                );
+            }
+        }
+    }
 
     /// p(j/m, k/n) = xⱼₖ.
     #[test]
