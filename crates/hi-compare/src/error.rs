@@ -185,6 +185,17 @@ pub enum Error {
         /// Index of the second slice.
         second: usize,
     },
+    /// No curve kind has this name ([`crate::CurveKind`]'s `FromStr`).
+    UnknownKind {
+        /// The name given.
+        name: String,
+    },
+    /// The curve of this kind is not piecewise polynomial, so it has no Bézier form
+    /// ([`crate::AnyCurve::to_bezier`]).
+    NotPolynomial {
+        /// The kind.
+        kind: crate::CurveKind,
+    },
     /// An error from the harmonic curves of `hi-curve` (a [`crate::CurveKind::Harmonic`] or
     /// [`crate::CurveKind::Trig`] curve).
     Curve(hi_curve::Error),
@@ -280,6 +291,29 @@ impl fmt::Display for Error {
             }
             Error::CoincidentSlices { first, second } => {
                 write!(f, "slices {first} and {second} coincide (zero chord length between them)")
+            }
+            Error::UnknownKind { name } => {
+                write!(f, "unknown curve kind '{name}': expected one of ")?;
+                for (i, kind) in crate::CurveKind::ALL.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str(", ")?;
+                    }
+                    f.write_str(kind.name())?;
+                }
+                Ok(())
+            }
+            Error::NotPolynomial { kind } => {
+                let polynomial: Vec<&str> = crate::CurveKind::ALL
+                    .iter()
+                    .filter(|k| k.is_polynomial())
+                    .map(|k| k.name())
+                    .collect();
+                write!(
+                    f,
+                    "the {kind} curve is not piecewise polynomial, so it has no Bézier form \
+                     (the kinds that have one: {})",
+                    polynomial.join(", ")
+                )
             }
             Error::Curve(e) => write!(f, "{e}"),
             Error::Mesh(e) => write!(f, "{e}"),

@@ -260,88 +260,14 @@ impl fmt::Display for CurveKind {
 }
 
 impl FromStr for CurveKind {
-    type Err = KindError;
+    type Err = Error;
 
     /// The kind of this name (exactly as [`CurveKind::name`] spells it).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         CurveKind::ALL
             .into_iter()
             .find(|kind| kind.name() == s)
-            .ok_or_else(|| KindError::Unknown { name: s.to_owned() })
-    }
-}
-
-/// Why a curve kind could not be named or converted.
-///
-/// # Examples
-///
-/// ```
-/// use glam::DVec2;
-/// use hi_compare::{CurveKind, KindError};
-///
-/// let curve = CurveKind::Harmonic.build(vec![DVec2::X, DVec2::Y, -DVec2::X]).unwrap();
-/// let err = curve.to_bezier().unwrap_err();
-/// assert_eq!(err, KindError::NotPolynomial { kind: CurveKind::Harmonic });
-/// assert!(err.to_string().contains("not piecewise polynomial"));
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-#[non_exhaustive]
-pub enum KindError {
-    /// No curve kind has this name.
-    Unknown {
-        /// The name given.
-        name: String,
-    },
-    /// The curve of this kind is not piecewise polynomial, so it has no Bézier form.
-    NotPolynomial {
-        /// The kind.
-        kind: CurveKind,
-    },
-    /// The conversion itself failed (a Lagrange polynomial whose Bernstein coefficients
-    /// overflow).
-    Curve(Error),
-}
-
-impl fmt::Display for KindError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            KindError::Unknown { name } => {
-                write!(f, "unknown curve kind '{name}': expected one of ")?;
-                for (i, kind) in CurveKind::ALL.iter().enumerate() {
-                    if i > 0 {
-                        f.write_str(", ")?;
-                    }
-                    f.write_str(kind.name())?;
-                }
-                Ok(())
-            }
-            KindError::NotPolynomial { kind } => {
-                let polynomial: Vec<&str> =
-                    CurveKind::ALL.iter().filter(|k| k.is_polynomial()).map(|k| k.name()).collect();
-                write!(
-                    f,
-                    "the {kind} curve is not piecewise polynomial, so it has no Bézier form \
-                     (the kinds that have one: {})",
-                    polynomial.join(", ")
-                )
-            }
-            KindError::Curve(e) => e.fmt(f),
-        }
-    }
-}
-
-impl std::error::Error for KindError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            KindError::Curve(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<Error> for KindError {
-    fn from(e: Error) -> Self {
-        KindError::Curve(e)
+            .ok_or_else(|| Error::UnknownKind { name: s.to_owned() })
     }
 }
 
@@ -435,14 +361,25 @@ impl<P: ControlPoint> AnyCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`KindError::NotPolynomial`] for `harmonic`, `trig` and `four-point`;
-    /// [`KindError::Curve`] with [`Error::Overflow`] if the Bernstein coefficients of a
-    /// high-degree Lagrange polynomial overflow.
-    pub fn to_bezier(&self) -> Result<PiecewiseBezier<P>, KindError> {
-        let not_polynomial = || KindError::NotPolynomial { kind: self.kind };
+    /// [`Error::NotPolynomial`] for `harmonic`, `trig` and `four-point`; [`Error::Overflow`]
+    /// if the Bernstein coefficients of a high-degree Lagrange polynomial overflow.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use hi_compare::{CurveKind, Error};
+    ///
+    /// let curve = CurveKind::Harmonic.build(vec![DVec2::X, DVec2::Y, -DVec2::X]).unwrap();
+    /// let err = curve.to_bezier().unwrap_err();
+    /// assert_eq!(err, Error::NotPolynomial { kind: CurveKind::Harmonic });
+    /// assert!(err.to_string().contains("not piecewise polynomial"));
+    /// ```
+    pub fn to_bezier(&self) -> Result<PiecewiseBezier<P>, Error> {
+        let not_polynomial = || Error::NotPolynomial { kind: self.kind };
         match &self.inner {
             Inner::Harmonic(_) | Inner::Trig(_) | Inner::FourPoint(_) => Err(not_polynomial()),
-            Inner::Lagrange(curve) => Ok(curve.to_bezier()?),
+            Inner::Lagrange(curve) => curve.to_bezier(),
             Inner::Hermite(curve) => Ok(curve.to_bezier()),
             Inner::Spline(curve) => Ok(curve.to_bezier()),
             Inner::Hobby(curve) => {
@@ -453,7 +390,7 @@ impl<P: ControlPoint> AnyCurve<P> {
                     .map(|segment| segment.try_map(to_point::<P>))
                     .collect::<Result<Vec<_>, _>>()
                     .map_err(|_| Error::Overflow { what: "Bézier form of the Hobby curve" })?;
-                PiecewiseBezier::try_new(segments).map_err(|_| Error::Empty.into())
+                PiecewiseBezier::try_new(segments).map_err(|_| Error::Empty)
             }
             Inner::Chaikin(curve) => chaikin_bezier(curve.points()),
         }
@@ -469,7 +406,7 @@ fn to_point<P: ControlPoint>(v: DVec2) -> P {
 /// The quadratic Bézier segments of the closed uniform quadratic B-spline with control points
 /// `points` (the limit of Chaikin's scheme): segment j has the B-spline control points xⱼ,
 /// xⱼ₊₁, xⱼ₊₂ (mod n) and Bézier control points (xⱼ + xⱼ₊₁)/2, xⱼ₊₁, (xⱼ₊₁ + xⱼ₊₂)/2.
-fn chaikin_bezier<P: ControlPoint>(points: &[P]) -> Result<PiecewiseBezier<P>, KindError> {
+fn chaikin_bezier<P: ControlPoint>(points: &[P]) -> Result<PiecewiseBezier<P>, Error> {
     let n = points.len();
     let overflow = |_| Error::Overflow { what: "Bézier form of the Chaikin curve" };
     let segments = (0..n)
@@ -478,7 +415,7 @@ fn chaikin_bezier<P: ControlPoint>(points: &[P]) -> Result<PiecewiseBezier<P>, K
             BezierCurve::try_new(vec![(a + b) * 0.5, b, (b + c) * 0.5]).map_err(overflow)
         })
         .collect::<Result<Vec<_>, _>>()?;
-    PiecewiseBezier::try_new(segments).map_err(|_| Error::Empty.into())
+    PiecewiseBezier::try_new(segments).map_err(|_| Error::Empty)
 }
 
 impl<P: ControlPoint> ParamCurve<P> for AnyCurve<P> {

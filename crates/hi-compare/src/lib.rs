@@ -80,7 +80,7 @@ mod serde_impls;
 pub use bspline_fit::{BSplineFit, BSplineSurface, BezierPatchGrid};
 pub use error::Error;
 pub use hi_curve::{ControlPoint, ParamCurve, ParamRange, ParamWindow, PlaneCurve, SpaceCurve};
-pub use kind::{AnyCurve, CurveKind, KindError};
+pub use kind::{AnyCurve, CurveKind};
 
 /// The example of this crate's README, run as a doctest so that it stays true.
 #[doc = include_str!("../README.md")]

@@ -3,8 +3,6 @@
 
 use std::fmt;
 
-use hi_scan::scan::ScanError;
-
 /// Everything that can be wrong with the input of a `hi-geomimage` function; `Display` gives
 /// one line naming the problem.
 #[derive(Clone, Debug, PartialEq)]
@@ -129,12 +127,6 @@ impl std::error::Error for Error {
 impl From<hi_scan::Error> for Error {
     fn from(e: hi_scan::Error) -> Self {
         Self::Scan(e)
-    }
-}
-
-impl From<ScanError> for Error {
-    fn from(e: ScanError) -> Self {
-        Self::Scan(hi_scan::Error::Read(e))
     }
 }
 

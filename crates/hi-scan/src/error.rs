@@ -3,15 +3,23 @@
 
 use std::fmt;
 
-use crate::scan::ScanError;
+use crate::scan::{Location, ScanFormat};
 
 /// Everything that can be wrong with the input of a `hi-scan` function; `Display` gives one
 /// line naming the problem.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Error {
-    /// A scan could not be read.
-    Read(ScanError),
+    /// A scan could not be read: the format, where, and what is wrong
+    /// ([`crate::scan::read_scan`], [`crate::scan::parse_scan`]).
+    Read {
+        /// The format being read, if known.
+        format: Option<ScanFormat>,
+        /// Where the problem is.
+        location: Location,
+        /// What is wrong, in a few words.
+        message: String,
+    },
     /// Too few points to build anything.
     TooFewPoints {
         /// Points given (finite ones).
@@ -49,7 +57,18 @@ pub enum Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::Read(e) => write!(f, "{e}"),
+            Self::Read { format, location, message } => {
+                if let Some(format) = format {
+                    write!(f, "{format}")?;
+                    match location {
+                        Location::Line(n) => write!(f, ", line {n}")?,
+                        Location::Byte(b) => write!(f, ", byte {b}")?,
+                        Location::None => {}
+                    }
+                    f.write_str(": ")?;
+                }
+                f.write_str(message)
+            }
             Self::TooFewPoints { found, needed } => {
                 write!(f, "too few points: {found} given, at least {needed} needed")
             }
@@ -63,20 +82,7 @@ impl fmt::Display for Error {
     }
 }
 
-impl std::error::Error for Error {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Self::Read(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<ScanError> for Error {
-    fn from(e: ScanError) -> Self {
-        Self::Read(e)
-    }
-}
+impl std::error::Error for Error {}
 
 /// The input of [`Error::NonFinite`]: which point, vertex or value has a NaN or infinite
 /// coordinate.

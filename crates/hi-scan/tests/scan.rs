@@ -165,7 +165,8 @@ fn ply_ascii_and_both_binary_orders_agree() {
         // One byte short: the error points at the last value's offset.
         let short = &bytes[..bytes.len() - 1];
         let e = parse_scan(short, ScanFormat::Ply).unwrap_err();
-        assert_eq!(e.location, Location::Byte(bytes.len() - 8), "{name}: {e}");
+        let hi_scan::Error::Read { location, .. } = &e else { panic!("{name}: {e:?}") };
+        assert_eq!(*location, Location::Byte(bytes.len() - 8), "{name}: {e}");
     }
 }
 

@@ -7,7 +7,7 @@
 //! positions of its mesh, and normals, when every primitive has them, by the inverse transpose.
 //! A file with no scene at all has its meshes read as they are. Triangles come from
 //! `TRIANGLES`, `TRIANGLE_STRIP` and `TRIANGLE_FAN` primitives (indexed or not); `POINTS` and `LINES`
-//! primitives give points only. Malformed files are a [`ScanError`]: the `gltf` crate parses and
+//! primitives give points only. Malformed files are a [`Error`]: the `gltf` crate parses and
 //! validates the document, the GLB header is checked here first, and an accessor that claims
 //! more elements than the file could hold is refused before anything is allocated for it.
 
@@ -16,7 +16,8 @@ use std::path::Path;
 use glam::{DMat3, DVec3};
 use hi_mesh::export::primitive_triangles;
 
-use super::{Scan, ScanError, ScanFormat};
+use super::{Scan, ScanFormat};
+use crate::Error;
 
 /// An accessor may not claim more elements than this many per byte of the file (a sparse
 /// accessor with no buffer view is all zeros but for its few listed values).
@@ -24,12 +25,8 @@ const ELEMENTS_PER_BYTE: usize = 4;
 
 /// Reads a glTF or GLB scan from its bytes; external buffers are resolved against `base`, and
 /// refused when there is none.
-pub(super) fn parse(
-    bytes: &[u8],
-    base: Option<&Path>,
-    format: ScanFormat,
-) -> Result<Scan, ScanError> {
-    let error = |message: String| ScanError::file(format, message);
+pub(super) fn parse(bytes: &[u8], base: Option<&Path>, format: ScanFormat) -> Result<Scan, Error> {
+    let error = |message: String| Error::file(format, message);
     if bytes.starts_with(b"glTF") {
         check_glb_header(bytes).map_err(|m| error(m.to_owned()))?;
     }

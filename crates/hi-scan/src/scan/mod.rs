@@ -12,7 +12,7 @@
 //! | Hoppe's PTS | `.pts` | `p x y z` lines; every other line is skipped |
 //! | glTF 2.0 | `.gltf`, `.glb` | the positions of every mesh primitive the scene places, node transforms applied; triangles of `TRIANGLES`, `TRIANGLE_STRIP` and `TRIANGLE_FAN` primitives; normals when every primitive has them; `read_scan` resolves external buffers beside the file |
 //!
-//! Every reader returns a [`ScanError`] naming the format, the line (text) or byte offset
+//! Every reader returns a [`Error::Read`] naming the format, the line (text) or byte offset
 //! (binary) and what is wrong for malformed input; none panics or allocates more than the input
 //! can justify, whatever the bytes. Points with a non-finite coordinate are dropped and counted
 //! in [`Scan::dropped_points`]; faces that used them are dropped and counted in
@@ -48,6 +48,8 @@ use std::fmt;
 use std::path::Path;
 
 use glam::DVec3;
+
+use crate::Error;
 
 /// The file formats [`read_scan`] understands.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -87,10 +89,10 @@ impl ScanFormat {
     ///
     /// # Errors
     ///
-    /// [`ScanError`] if the extension is missing or not one of [`ScanFormat::ALL`].
-    pub fn try_from_path(path: &Path) -> Result<Self, ScanError> {
+    /// [`Error::Read`] if the extension is missing or not one of [`ScanFormat::ALL`].
+    pub fn try_from_path(path: &Path) -> Result<Self, Error> {
         let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
-        Self::from_extension(ext).ok_or_else(|| ScanError {
+        Self::from_extension(ext).ok_or_else(|| Error::Read {
             format: None,
             location: Location::None,
             message: format!(
@@ -208,60 +210,37 @@ pub enum Location {
     None,
 }
 
-/// A scan that could not be read: the format, where, and what is wrong.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ScanError {
-    /// The format being read, if known.
-    pub format: Option<ScanFormat>,
-    /// Where the problem is.
-    pub location: Location,
-    /// What is wrong, in a few words.
-    pub message: String,
-}
-
-impl ScanError {
-    /// An error at a line of a text file.
+/// Constructors of [`Error::Read`] for the readers.
+impl Error {
+    /// A scan error at a line of a text file.
     pub(crate) fn line(format: ScanFormat, line: usize, message: impl Into<String>) -> Self {
-        Self { format: Some(format), location: Location::Line(line), message: message.into() }
+        Self::Read { format: Some(format), location: Location::Line(line), message: message.into() }
     }
 
-    /// An error at a byte offset of a binary file.
+    /// A scan error at a byte offset of a binary file.
     pub(crate) fn byte(format: ScanFormat, offset: usize, message: impl Into<String>) -> Self {
-        Self { format: Some(format), location: Location::Byte(offset), message: message.into() }
-    }
-
-    /// An error about the file as a whole.
-    pub(crate) fn file(format: ScanFormat, message: impl Into<String>) -> Self {
-        Self { format: Some(format), location: Location::None, message: message.into() }
-    }
-}
-
-impl fmt::Display for ScanError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(format) = self.format {
-            write!(f, "{format}")?;
-            match self.location {
-                Location::Line(n) => write!(f, ", line {n}")?,
-                Location::Byte(b) => write!(f, ", byte {b}")?,
-                Location::None => {}
-            }
-            f.write_str(": ")?;
+        Self::Read {
+            format: Some(format),
+            location: Location::Byte(offset),
+            message: message.into(),
         }
-        f.write_str(&self.message)
+    }
+
+    /// A scan error about the file as a whole.
+    pub(crate) fn file(format: ScanFormat, message: impl Into<String>) -> Self {
+        Self::Read { format: Some(format), location: Location::None, message: message.into() }
     }
 }
-
-impl std::error::Error for ScanError {}
 
 /// Reads the scan in `path`, choosing the reader by the file's extension.
 ///
 /// # Errors
 ///
-/// [`ScanError`] if the extension is unknown, the file cannot be read, or its contents are
+/// [`Error::Read`] if the extension is unknown, the file cannot be read, or its contents are
 /// malformed (with the line or byte offset).
-pub fn read_scan(path: &Path) -> Result<Scan, ScanError> {
+pub fn read_scan(path: &Path) -> Result<Scan, Error> {
     let format = ScanFormat::try_from_path(path)?;
-    let bytes = std::fs::read(path).map_err(|e| ScanError {
+    let bytes = std::fs::read(path).map_err(|e| Error::Read {
         format: Some(format),
         location: Location::None,
         message: format!("cannot read {}: {e}", path.display()),
@@ -278,10 +257,10 @@ pub fn read_scan(path: &Path) -> Result<Scan, ScanError> {
 ///
 /// # Errors
 ///
-/// [`ScanError`] naming the line (text formats) or byte offset (binary PLY and STL) of the
+/// [`Error::Read`] naming the line (text formats) or byte offset (binary PLY and STL) of the
 /// first malformed record, or the problem with the file as a whole (empty, no points,
 /// truncated, a glTF buffer in another file, which bytes alone cannot reach).
-pub fn parse_scan(bytes: &[u8], format: ScanFormat) -> Result<Scan, ScanError> {
+pub fn parse_scan(bytes: &[u8], format: ScanFormat) -> Result<Scan, Error> {
     let scan = match format {
         ScanFormat::Obj => obj::parse(bytes),
         ScanFormat::Ply => ply::parse(bytes),
@@ -295,12 +274,12 @@ pub fn parse_scan(bytes: &[u8], format: ScanFormat) -> Result<Scan, ScanError> {
 }
 
 /// The scan, unless it has no (finite) point.
-fn checked(scan: Scan, format: ScanFormat) -> Result<Scan, ScanError> {
+fn checked(scan: Scan, format: ScanFormat) -> Result<Scan, Error> {
     if scan.points.is_empty() && scan.dropped_points == 0 {
-        return Err(ScanError::file(format, "the file holds no points"));
+        return Err(Error::file(format, "the file holds no points"));
     }
     if scan.points.is_empty() {
-        return Err(ScanError::file(
+        return Err(Error::file(
             format,
             format!("all {} points have a NaN or infinite coordinate", scan.dropped_points),
         ));

@@ -2,7 +2,8 @@
 //! Wavefront OBJ: `v`, `vn` and `f` lines (other records are skipped).
 
 use super::text::{count, lines, point, show, strip_comment, tokens};
-use super::{Scan, ScanError, ScanFormat};
+use super::{Scan, ScanFormat};
+use crate::Error;
 
 const F: ScanFormat = ScanFormat::Obj;
 
@@ -10,7 +11,7 @@ const F: ScanFormat = ScanFormat::Obj;
 /// one as of the other (point clouds with normals are written so); faces of any size are
 /// fan-triangulated, with 1-based or negative (relative) vertex indices in any of the forms
 /// `v`, `v/vt`, `v//vn`, `v/vt/vn`.
-pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
+pub(super) fn parse(bytes: &[u8]) -> Result<Scan, Error> {
     let mut points = Vec::new();
     let mut normals = Vec::new();
     let mut faces: Vec<(usize, Vec<i64>)> = Vec::new();
@@ -26,7 +27,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
                     face.push(vertex_ref(n, t, points.len())?);
                 }
                 if face.len() < 3 {
-                    return Err(ScanError::line(
+                    return Err(Error::line(
                         F,
                         n,
                         format!("a face needs at least 3 vertices, found {}", face.len()),
@@ -44,7 +45,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
         for k in face {
             // Positive indices were kept 1-based; negative ones were resolved on their line.
             let k = usize::try_from(k - 1).map_err(|_| {
-                ScanError::line(F, n, "a relative face index points before the first vertex")
+                Error::line(F, n, "a relative face index points before the first vertex")
             })?;
             f.push(super::text::index(F, n, k, total)?);
         }
@@ -56,19 +57,19 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
 
 /// The vertex index of one face corner (`v`, `v/vt`, `v//vn` or `v/vt/vn`), 1-based; a
 /// negative index counts back from the `defined` vertices read so far.
-fn vertex_ref(line: usize, token: &[u8], defined: usize) -> Result<i64, ScanError> {
+fn vertex_ref(line: usize, token: &[u8], defined: usize) -> Result<i64, Error> {
     let first = token.split(|&b| b == b'/').next().unwrap_or(token);
     let (negative, digits) = match first.strip_prefix(b"-") {
         Some(rest) => (true, rest),
         None => (false, first),
     };
     let k = count(F, line, digits, "face vertex").map_err(|_| {
-        ScanError::line(F, line, format!("face vertex {:?} is not a vertex index", show(token)))
+        Error::line(F, line, format!("face vertex {:?} is not a vertex index", show(token)))
     })?;
     let k = i64::try_from(k)
-        .map_err(|_| ScanError::line(F, line, format!("face index {k} is too large")))?;
+        .map_err(|_| Error::line(F, line, format!("face index {k} is too large")))?;
     if k == 0 {
-        return Err(ScanError::line(F, line, "face index 0 (OBJ indices start at 1)"));
+        return Err(Error::line(F, line, "face index 0 (OBJ indices start at 1)"));
     }
     if negative {
         // -1 is the last vertex defined so far: 1-based index defined + 1 - k.

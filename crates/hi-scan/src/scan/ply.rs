@@ -5,7 +5,8 @@
 use glam::DVec3;
 
 use super::text::{lines, show, tokens};
-use super::{Scan, ScanError, ScanFormat};
+use super::{Scan, ScanFormat};
+use crate::Error;
 
 const F: ScanFormat = ScanFormat::Ply;
 
@@ -91,7 +92,7 @@ struct Header {
     body_line: usize,
 }
 
-fn header(bytes: &[u8]) -> Result<Header, ScanError> {
+fn header(bytes: &[u8]) -> Result<Header, Error> {
     let mut encoding = None;
     let mut elements: Vec<Element> = Vec::new();
     let mut offset = 0;
@@ -106,7 +107,7 @@ fn header(bytes: &[u8]) -> Result<Header, ScanError> {
         let keyword = it.next().unwrap_or_default();
         if n == 1 {
             if keyword != b"ply" || it.next().is_some() {
-                return Err(ScanError::line(F, 1, "the file does not start with the line `ply`"));
+                return Err(Error::line(F, 1, "the file does not start with the line `ply`"));
             }
             continue;
         }
@@ -118,15 +119,11 @@ fn header(bytes: &[u8]) -> Result<Header, ScanError> {
                     b"binary_little_endian" => Encoding::Little,
                     b"binary_big_endian" => Encoding::Big,
                     _ => {
-                        return Err(ScanError::line(
-                            F,
-                            n,
-                            format!("unknown format {:?}", show(kind)),
-                        ));
+                        return Err(Error::line(F, n, format!("unknown format {:?}", show(kind))));
                     }
                 });
                 if it.next() != Some(b"1.0".as_slice()) {
-                    return Err(ScanError::line(F, n, "expected format version 1.0"));
+                    return Err(Error::line(F, n, "expected format version 1.0"));
                 }
             }
             b"comment" | b"obj_info" | b"" => {}
@@ -135,12 +132,12 @@ fn header(bytes: &[u8]) -> Result<Header, ScanError> {
                 let count = it
                     .next()
                     .and_then(|t| std::str::from_utf8(t).ok()?.parse::<usize>().ok())
-                    .ok_or_else(|| ScanError::line(F, n, "`element` needs a name and a count"))?;
+                    .ok_or_else(|| Error::line(F, n, "`element` needs a name and a count"))?;
                 elements.push(Element { name, count, properties: Vec::new(), line: n });
             }
             b"property" => {
                 let Some(element) = elements.last_mut() else {
-                    return Err(ScanError::line(F, n, "`property` before any `element`"));
+                    return Err(Error::line(F, n, "`property` before any `element`"));
                 };
                 let kind = it.next().unwrap_or_default();
                 let property = if kind == b"list" {
@@ -152,7 +149,7 @@ fn header(bytes: &[u8]) -> Result<Header, ScanError> {
                             Property::List(c, i, name.to_vec())
                         }
                         _ => {
-                            return Err(ScanError::line(
+                            return Err(Error::line(
                                 F,
                                 n,
                                 "expected `property list <integer type> <type> <name>`",
@@ -163,7 +160,7 @@ fn header(bytes: &[u8]) -> Result<Header, ScanError> {
                     match (Scalar::parse(kind), it.next()) {
                         (Some(s), Some(name)) => Property::Scalar(s, name.to_vec()),
                         _ => {
-                            return Err(ScanError::line(
+                            return Err(Error::line(
                                 F,
                                 n,
                                 format!("unknown property type {:?}", show(kind)),
@@ -174,21 +171,16 @@ fn header(bytes: &[u8]) -> Result<Header, ScanError> {
                 element.properties.push(property);
             }
             b"end_header" => {
-                let encoding = encoding.ok_or_else(|| {
-                    ScanError::line(F, n, "`end_header` before any `format` line")
-                })?;
+                let encoding = encoding
+                    .ok_or_else(|| Error::line(F, n, "`end_header` before any `format` line"))?;
                 return Ok(Header { encoding, elements, body: offset, body_line: n + 1 });
             }
             other => {
-                return Err(ScanError::line(
-                    F,
-                    n,
-                    format!("unknown header keyword {:?}", show(other)),
-                ));
+                return Err(Error::line(F, n, format!("unknown header keyword {:?}", show(other))));
             }
         }
     }
-    Err(ScanError::file(F, "the header has no `end_header` line"))
+    Err(Error::file(F, "the header has no `end_header` line"))
 }
 
 /// Reads the scalars of the body, in ASCII (tokens, with their line numbers) or binary.
@@ -198,18 +190,18 @@ enum Body<'a> {
 }
 
 impl Body<'_> {
-    fn error(&self, message: impl Into<String>) -> ScanError {
+    fn error(&self, message: impl Into<String>) -> Error {
         match self {
-            Self::Ascii { line, .. } => ScanError::line(F, *line, message),
-            Self::Binary { at, .. } => ScanError::byte(F, *at, message),
+            Self::Ascii { line, .. } => Error::line(F, *line, message),
+            Self::Binary { at, .. } => Error::byte(F, *at, message),
         }
     }
 
-    fn read(&mut self, t: Scalar) -> Result<f64, ScanError> {
+    fn read(&mut self, t: Scalar) -> Result<f64, Error> {
         match self {
             Self::Ascii { tokens, line } => {
                 let Some((n, token)) = tokens.next() else {
-                    return Err(ScanError::file(
+                    return Err(Error::file(
                         F,
                         "the file ends before the data the header announces",
                     ));
@@ -222,13 +214,13 @@ impl Body<'_> {
                     text.and_then(|s| s.parse::<f64>().ok())
                 };
                 value.ok_or_else(|| {
-                    ScanError::line(F, n, format!("{:?} is not a {t:?} value", show(token)))
+                    Error::line(F, n, format!("{:?} is not a {t:?} value", show(token)))
                 })
             }
             Self::Binary { bytes, at, big } => {
                 let size = t.size();
                 let Some(raw) = bytes.get(*at..*at + size) else {
-                    return Err(ScanError::byte(
+                    return Err(Error::byte(
                         F,
                         *at,
                         "the file ends before the data the header announces",
@@ -255,7 +247,7 @@ impl Body<'_> {
     }
 
     /// Reads a list's length (an integer type, so the value is whole).
-    fn length(&mut self, t: Scalar) -> Result<usize, ScanError> {
+    fn length(&mut self, t: Scalar) -> Result<usize, Error> {
         let v = self.read(t)?;
         if v < 0.0 {
             return Err(self.error(format!("negative list length {v}")));
@@ -270,15 +262,15 @@ impl Body<'_> {
 }
 
 /// Reads a PLY file.
-pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
+pub(super) fn parse(bytes: &[u8]) -> Result<Scan, Error> {
     let h = header(bytes)?;
     let vertex = h.elements.iter().find(|e| e.name == b"vertex");
     let Some(vertex) = vertex else {
-        return Err(ScanError::file(F, "the header declares no `vertex` element"));
+        return Err(Error::file(F, "the header declares no `vertex` element"));
     };
     let position = |name: &[u8]| vertex.properties.iter().position(|p| p.name() == name);
     let (Some(x), Some(y), Some(z)) = (position(b"x"), position(b"y"), position(b"z")) else {
-        return Err(ScanError::line(F, vertex.line, "the `vertex` element lacks x, y or z"));
+        return Err(Error::line(F, vertex.line, "the `vertex` element lacks x, y or z"));
     };
     let normal = match (position(b"nx"), position(b"ny"), position(b"nz")) {
         (Some(a), Some(b), Some(c)) => Some([a, b, c]),
@@ -362,10 +354,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
         }
     }
     if list_missing(&h.elements) {
-        return Err(ScanError::file(
-            F,
-            "a `face` or `tristrips` element has no `vertex_indices` list",
-        ));
+        return Err(Error::file(F, "a `face` or `tristrips` element has no `vertex_indices` list"));
     }
     let normals = normal.map(|_| normals);
     Ok(Scan::assemble(points, normals, &polygons))
@@ -384,7 +373,7 @@ fn list_missing(elements: &[Element]) -> bool {
 }
 
 /// Face indices as `u32`, each checked against the vertex count.
-fn checked(body: &Body<'_>, indices: &[f64], vertices: usize) -> Result<Vec<u32>, ScanError> {
+fn checked(body: &Body<'_>, indices: &[f64], vertices: usize) -> Result<Vec<u32>, Error> {
     indices
         .iter()
         .map(|&k| {

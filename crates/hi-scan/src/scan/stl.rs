@@ -7,13 +7,14 @@ use std::collections::HashMap;
 use glam::DVec3;
 
 use super::text::{lines, point, show, tokens};
-use super::{Scan, ScanError, ScanFormat};
+use super::{Scan, ScanFormat};
+use crate::Error;
 
 const F: ScanFormat = ScanFormat::Stl;
 
 /// Reads an STL file: binary when its size is exactly 84 + 50·(the triangle count in bytes
 /// 80–83), otherwise ASCII if it starts with `solid`.
-pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
+pub(super) fn parse(bytes: &[u8]) -> Result<Scan, Error> {
     if bytes.len() >= 84 {
         let count = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
         if count.checked_mul(50).and_then(|b| b.checked_add(84)) == Some(bytes.len()) {
@@ -24,7 +25,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
         return ascii(bytes);
     }
     if bytes.len() < 84 {
-        return Err(ScanError::file(
+        return Err(Error::file(
             F,
             format!(
                 "{} bytes is too short for binary STL (84-byte header) and it is not ASCII STL",
@@ -33,7 +34,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Scan, ScanError> {
         ));
     }
     let count = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]);
-    Err(ScanError::byte(
+    Err(Error::byte(
         F,
         80,
         format!(
@@ -85,7 +86,7 @@ fn binary(bytes: &[u8], count: usize) -> Scan {
     Scan::assemble(w.points, None, &faces)
 }
 
-fn ascii(bytes: &[u8]) -> Result<Scan, ScanError> {
+fn ascii(bytes: &[u8]) -> Result<Scan, Error> {
     let mut w = Welder::default();
     let mut faces = Vec::new();
     let mut corners: Vec<u32> = Vec::with_capacity(3);
@@ -99,24 +100,20 @@ fn ascii(bytes: &[u8]) -> Result<Scan, ScanError> {
             b"solid" | b"endsolid" | b"outer" | b"endloop" => {}
             b"facet" => {
                 if in_facet.is_some() {
-                    return Err(ScanError::line(
-                        F,
-                        n,
-                        "`facet` inside a facet (missing `endfacet`)",
-                    ));
+                    return Err(Error::line(F, n, "`facet` inside a facet (missing `endfacet`)"));
                 }
                 in_facet = Some(n);
                 corners.clear();
             }
             b"vertex" => {
                 if in_facet.is_none() {
-                    return Err(ScanError::line(F, n, "`vertex` outside a facet"));
+                    return Err(Error::line(F, n, "`vertex` outside a facet"));
                 }
                 corners.push(w.add(point(F, n, &mut it, "after `vertex`")?));
             }
             b"endfacet" => {
                 if corners.len() != 3 {
-                    return Err(ScanError::line(
+                    return Err(Error::line(
                         F,
                         n,
                         format!("a facet has {} vertices; STL facets are triangles", corners.len()),
@@ -126,16 +123,12 @@ fn ascii(bytes: &[u8]) -> Result<Scan, ScanError> {
                 in_facet = None;
             }
             other => {
-                return Err(ScanError::line(F, n, format!("unknown keyword {:?}", show(other))));
+                return Err(Error::line(F, n, format!("unknown keyword {:?}", show(other))));
             }
         }
     }
     if let Some(start) = in_facet {
-        return Err(ScanError::line(
-            F,
-            last,
-            format!("the facet begun on line {start} never ends"),
-        ));
+        return Err(Error::line(F, last, format!("the facet begun on line {start} never ends")));
     }
     Ok(Scan::assemble(w.points, None, &faces))
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 //! Shared pieces of the text readers: numbered lines, tokens and numbers.
 
-use super::{ScanError, ScanFormat};
+use super::ScanFormat;
+use crate::Error;
 
 /// The lines of `bytes` with their numbers (from 1), without the line ending (`\n`, `\r\n`).
 pub(super) fn lines(bytes: &[u8]) -> impl Iterator<Item = (usize, &[u8])> {
@@ -43,9 +44,9 @@ pub(super) fn number(
     line: usize,
     token: &[u8],
     what: &str,
-) -> Result<f64, ScanError> {
+) -> Result<f64, Error> {
     std::str::from_utf8(token).ok().and_then(|s| s.parse::<f64>().ok()).ok_or_else(|| {
-        ScanError::line(format, line, format!("{what}: {:?} is not a number", show(token)))
+        Error::line(format, line, format!("{what}: {:?} is not a number", show(token)))
     })
 }
 
@@ -55,22 +56,22 @@ pub(super) fn count(
     line: usize,
     token: &[u8],
     what: &str,
-) -> Result<usize, ScanError> {
+) -> Result<usize, Error> {
     std::str::from_utf8(token).ok().and_then(|s| s.parse::<usize>().ok()).ok_or_else(|| {
-        ScanError::line(format, line, format!("{what}: {:?} is not a whole number", show(token)))
+        Error::line(format, line, format!("{what}: {:?} is not a whole number", show(token)))
     })
 }
 
 /// Checks that face index `k` is below `n`, as `u32`.
-pub(super) fn index(format: ScanFormat, line: usize, k: usize, n: usize) -> Result<u32, ScanError> {
+pub(super) fn index(format: ScanFormat, line: usize, k: usize, n: usize) -> Result<u32, Error> {
     if k >= n {
-        return Err(ScanError::line(
+        return Err(Error::line(
             format,
             line,
             format!("face index {k} is out of range (the file has {n} points)"),
         ));
     }
-    u32::try_from(k).map_err(|_| ScanError::line(format, line, "face index does not fit 32 bits"))
+    u32::try_from(k).map_err(|_| Error::line(format, line, "face index does not fit 32 bits"))
 }
 
 /// Three coordinates from the next three tokens, or an error naming how many were found.
@@ -79,11 +80,11 @@ pub(super) fn point<'a>(
     line: usize,
     tokens: &mut impl Iterator<Item = &'a [u8]>,
     what: &str,
-) -> Result<glam::DVec3, ScanError> {
+) -> Result<glam::DVec3, Error> {
     let mut xyz = [0.0; 3];
     for (i, c) in xyz.iter_mut().enumerate() {
         let Some(t) = tokens.next() else {
-            return Err(ScanError::line(
+            return Err(Error::line(
                 format,
                 line,
                 format!("expected 3 coordinates {what}, found {i}"),

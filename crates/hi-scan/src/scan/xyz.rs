@@ -4,11 +4,12 @@
 use glam::DVec3;
 
 use super::text::{lines, number, point, strip_comment, tokens};
-use super::{Scan, ScanError, ScanFormat};
+use super::{Scan, ScanFormat};
+use crate::Error;
 
 /// Reads an XYZ file: every non-blank line (after removing a `#` comment) holds 3 numbers, or
 /// 6 (a point and its normal); all lines must have the same count.
-pub(super) fn parse_xyz(bytes: &[u8]) -> Result<Scan, ScanError> {
+pub(super) fn parse_xyz(bytes: &[u8]) -> Result<Scan, Error> {
     const F: ScanFormat = ScanFormat::Xyz;
     let mut points = Vec::new();
     let mut normals = Vec::new();
@@ -20,7 +21,7 @@ pub(super) fn parse_xyz(bytes: &[u8]) -> Result<Scan, ScanError> {
         }
         let values: Vec<&[u8]> = tokens(line, true).collect();
         if values.len() != 3 && values.len() != 6 {
-            return Err(ScanError::line(
+            return Err(Error::line(
                 F,
                 n,
                 format!("expected 3 numbers (x y z) or 6 (x y z nx ny nz), found {}", values.len()),
@@ -29,7 +30,7 @@ pub(super) fn parse_xyz(bytes: &[u8]) -> Result<Scan, ScanError> {
         match width {
             None => width = Some((values.len(), n)),
             Some((w, first)) if w != values.len() => {
-                return Err(ScanError::line(
+                return Err(Error::line(
                     F,
                     n,
                     format!("{} numbers, but line {first} has {w}", values.len()),
@@ -48,7 +49,7 @@ pub(super) fn parse_xyz(bytes: &[u8]) -> Result<Scan, ScanError> {
 }
 
 /// Reads a PTS file: `p x y z` lines are points; every other line is skipped.
-pub(super) fn parse_pts(bytes: &[u8]) -> Result<Scan, ScanError> {
+pub(super) fn parse_pts(bytes: &[u8]) -> Result<Scan, Error> {
     const F: ScanFormat = ScanFormat::Pts;
     let mut points = Vec::new();
     for (n, raw) in lines(bytes) {
@@ -58,7 +59,7 @@ pub(super) fn parse_pts(bytes: &[u8]) -> Result<Scan, ScanError> {
         }
         let rest: Vec<&[u8]> = it.collect();
         if rest.len() != 3 {
-            return Err(ScanError::line(
+            return Err(Error::line(
                 F,
                 n,
                 format!("expected 3 coordinates after `p`, found {}", rest.len()),
