@@ -89,3 +89,41 @@ fn a_format_left_out_names_its_feature() {
     );
     assert!(error.to_string().contains(&format!("`{feature}` feature")), "{error}");
 }
+
+/// An OBJ of bare positions and faces (as most programs write it) reads with area-weighted
+/// vertex normals and zero texture coordinates: a unit square in the plane z = 0 split into two
+/// counter-clockwise triangles has the normal +z at every corner, and a right angle bent along
+/// its diagonal has normals halfway between its two faces' at the shared corners.
+#[test]
+#[cfg(feature = "obj")]
+fn an_obj_without_normals_reads_with_normals_from_its_faces() {
+    let dir = std::env::temp_dir().join(format!("hi-mesh-bare-obj-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let square = dir.join("square.obj");
+    std::fs::write(&square, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n").unwrap();
+    let mesh = hi_mesh::export::load(&square).expect("a bare OBJ reads");
+    assert_eq!(mesh.triangles().len(), 2);
+    for (n, uv) in mesh.normals().iter().zip(mesh.uvs()) {
+        assert_eq!(*n, DVec3::Z);
+        assert_eq!(*uv, DVec2::ZERO);
+    }
+    // Two faces at a right angle: z = 0 (normal +z) and x = 0 (normal +x, by its winding).
+    let bent = dir.join("bent.obj");
+    std::fs::write(&bent, "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n").unwrap();
+    let mesh = hi_mesh::export::load(&bent).expect("a bare OBJ reads");
+    let half = std::f64::consts::FRAC_1_SQRT_2;
+    let by_position = |p: DVec3| {
+        let k = mesh.positions().iter().position(|q| *q == p).expect("the corner is there");
+        mesh.normals()[k]
+    };
+    assert!((by_position(DVec3::ZERO) - DVec3::new(half, 0.0, half)).length() < 1e-15);
+    assert!((by_position(DVec3::X) - DVec3::Z).length() < 1e-15);
+    assert!((by_position(DVec3::Z) - DVec3::X).length() < 1e-15);
+    // Normals for only some vertices are refused, with the object named.
+    let partial = dir.join("partial.obj");
+    std::fs::write(&partial, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2 3\n").unwrap();
+    let result = hi_mesh::export::load(&partial);
+    std::fs::remove_dir_all(&dir).ok();
+    let error = result.expect_err("normals for one corner of three");
+    assert!(error.to_string().contains("only some vertices"), "{error}");
+}

@@ -5,7 +5,7 @@
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 use hi_bezier::BezierPatch;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_mesh::{TriangleMesh, srgb_to_linear_rgb};
@@ -301,50 +301,15 @@ fn harmonic_geometry(
     })
 }
 
-/// A triangle mesh from an OBJ or glTF file: as `hi surface mesh` writes them, or (OBJ without
-/// normals or UVs) positions and faces with normals from the faces.
+/// A triangle mesh from an OBJ or glTF file (`hi_mesh::export::load`: as `hi surface mesh`
+/// writes them, or an OBJ of bare positions and faces with normals from its faces).
 fn read_mesh(path: &Path) -> Result<TriangleMesh, String> {
-    match hi_mesh::export::load(path) {
-        Ok(mesh) => Ok(mesh),
-        Err(first) => {
-            let is_obj = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("obj"));
-            if !is_obj || !path.exists() {
-                // The caller names the file: the message without the path it may start with.
-                let message = first.to_string();
-                let named = format!("{}: ", path.display());
-                return Err(message.strip_prefix(&named).map_or(message.clone(), str::to_owned));
-            }
-            let options =
-                tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-            let (models, _) = tobj::load_obj(path, &options).map_err(|e| e.to_string())?;
-            let mut positions = Vec::new();
-            let mut triangles = Vec::new();
-            for m in &models {
-                let base = positions.len() as u32;
-                positions.extend(
-                    m.mesh
-                        .positions
-                        .chunks(3)
-                        .map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))),
-                );
-                triangles.extend(
-                    m.mesh.indices.chunks(3).map(|t| [base + t[0], base + t[1], base + t[2]]),
-                );
-            }
-            let mut normals = vec![DVec3::ZERO; positions.len()];
-            for t in &triangles {
-                let [a, b, c] = t.map(|k| positions[k as usize]);
-                let n = (b - a).cross(c - a);
-                for k in t {
-                    normals[*k as usize] += n;
-                }
-            }
-            let normals =
-                normals.into_iter().map(|n| n.try_normalize().unwrap_or(DVec3::Z)).collect();
-            let uvs = vec![DVec2::ZERO; positions.len()];
-            TriangleMesh::try_new(positions, normals, uvs, triangles).map_err(|e| e.to_string())
-        }
-    }
+    hi_mesh::export::load(path).map_err(|e| {
+        // The caller names the file: the message without the path it may start with.
+        let message = e.to_string();
+        let named = format!("{}: ", path.display());
+        message.strip_prefix(&named).map_or(message.clone(), str::to_owned)
+    })
 }
 
 /// Reads a scene file.

@@ -309,7 +309,9 @@ fn percent_encode(name: &str) -> String {
 /// Reads the triangle mesh in an OBJ, `.gltf` or `.glb` file (all objects; or the triangle
 /// primitives of every mesh the glTF scene places, node transforms applied, flat normals where a
 /// primitive has none, as the glTF specification asks), undoing what the writers do: OBJ's t is
-/// flipped back and its sRGB colours made linear again.
+/// flipped back and its sRGB colours made linear again. An OBJ object without normals (any
+/// OBJ not written here) gets area-weighted vertex normals from its triangles, and one without
+/// texture coordinates gets (0, 0) at every vertex.
 ///
 /// # Errors
 ///

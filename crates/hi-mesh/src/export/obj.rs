@@ -210,26 +210,46 @@ mod read {
         Ok(models)
     }
 
-    /// Appends an object to `out`: t flipped back, colours made linear.
+    /// Appends an object to `out`: t flipped back, colours made linear. An object without
+    /// normals gets area-weighted vertex normals from its triangles (+z where they cancel), one
+    /// without texture coordinates gets (0, 0) at every vertex.
     fn append(model: &tobj::Model, out: &mut MeshBuilder) -> Result<(), Error> {
         let m = &model.mesh;
         let n = m.positions.len() / 3;
-        if m.normals.len() != 3 * n || m.texcoords.len() != 2 * n {
+        let with_normals = m.normals.len() == 3 * n;
+        let with_uvs = m.texcoords.len() == 2 * n;
+        if (!m.normals.is_empty() && !with_normals) || (!m.texcoords.is_empty() && !with_uvs) {
             return Err(format_error(
-                format!("OBJ object {:?} lacks normals or texture coordinates", model.name),
+                format!(
+                    "OBJ object {:?} has normals or texture coordinates for only some vertices",
+                    model.name
+                ),
                 None,
             ));
         }
         let base = out.next_vertex()?;
-        out.positions.extend(
-            m.positions.chunks_exact(3).map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())),
-        );
-        out.normals.extend(
-            m.normals.chunks_exact(3).map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())),
-        );
-        out.uvs.extend(
-            m.texcoords.chunks_exact(2).map(|t| DVec2::new(t[0].into(), f64::from(1.0 - t[1]))),
-        );
+        let positions: Vec<DVec3> = m
+            .positions
+            .chunks_exact(3)
+            .map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into()))
+            .collect();
+        if with_normals {
+            out.normals.extend(
+                m.normals
+                    .chunks_exact(3)
+                    .map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())),
+            );
+        } else {
+            out.normals.extend(face_normals(&positions, &m.indices));
+        }
+        out.positions.extend(positions);
+        if with_uvs {
+            out.uvs.extend(
+                m.texcoords.chunks_exact(2).map(|t| DVec2::new(t[0].into(), f64::from(1.0 - t[1]))),
+            );
+        } else {
+            out.uvs.extend(std::iter::repeat_n(DVec2::ZERO, n));
+        }
         if m.vertex_color.len() == 3 * n {
             out.colors.extend(
                 m.vertex_color.chunks_exact(3).map(|c| srgb_to_linear_rgb([c[0], c[1], c[2]])),
@@ -241,5 +261,23 @@ mod read {
             m.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]].map(|k| k.saturating_add(base))),
         );
         Ok(())
+    }
+
+    /// Area-weighted vertex normals of the triangles `indices` (three per triangle) over
+    /// `positions`: each vertex's normal is the normalised sum of the cross products of its
+    /// triangles' edges, +z where that sum vanishes (an isolated or degenerate vertex).
+    fn face_normals(positions: &[DVec3], indices: &[u32]) -> Vec<DVec3> {
+        let mut normals = vec![DVec3::ZERO; positions.len()];
+        for t in indices.chunks_exact(3) {
+            let corner = |k: u32| positions.get(k as usize).copied();
+            let (Some(a), Some(b), Some(c)) = (corner(t[0]), corner(t[1]), corner(t[2])) else {
+                continue;
+            };
+            let n = (b - a).cross(c - a);
+            for &k in t {
+                normals[k as usize] += n;
+            }
+        }
+        normals.into_iter().map(|n| n.try_normalize().unwrap_or(DVec3::Z)).collect()
     }
 }
