@@ -93,8 +93,9 @@ pub enum Error {
     Parse {
         /// The file format (`"OBJ"`, `"OFF"`).
         format: &'static str,
-        /// The 1-based line number.
-        line: usize,
+        /// The 1-based line number, or `None` for the file as a whole (empty, or ending before
+        /// what its header announces).
+        line: Option<usize>,
         /// What is wrong, in words.
         message: String,
     },
@@ -179,9 +180,10 @@ impl fmt::Display for Error {
             Error::UnsupportedVertex { vertex, reason } => {
                 write!(f, "vertex {vertex}: {reason}")
             }
-            Error::Parse { format, line, message } => {
-                write!(f, "{format} line {line}: {message}")
+            Error::Parse { format, line: Some(line), message } => {
+                write!(f, "{format}, line {line}: {message}")
             }
+            Error::Parse { format, line: None, message } => write!(f, "{format}: {message}"),
             Error::InvalidCount { what, value, expected } => {
                 write!(f, "{what} = {value} is invalid: expected {expected}")
             }

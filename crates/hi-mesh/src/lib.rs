@@ -46,9 +46,11 @@
 mod colormap;
 mod error;
 pub mod export;
+mod polygon_soup;
 #[cfg(feature = "serde")]
 mod serde_impls;
 pub mod subdivision;
+pub mod text;
 mod triangle_mesh;
 
 pub use colormap::{
@@ -56,6 +58,7 @@ pub use colormap::{
     NEUTRAL_SRGB, Palette, linear_to_srgb, linear_to_srgb_rgb, srgb_to_linear, srgb_to_linear_rgb,
 };
 pub use error::Error;
+pub use polygon_soup::PolygonSoup;
 pub use subdivision::PolyMesh;
 pub use triangle_mesh::TriangleMesh;
 

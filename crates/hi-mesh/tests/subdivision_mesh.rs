@@ -120,12 +120,11 @@ fn obj_reader_accepts_common_records() {
 #[test]
 fn malformed_files_report_the_line() {
     let cases_obj = [
-        ("v 0 0\n", 1, "three coordinates"),
+        ("v 0 0\n", 1, "expected 3 coordinates after `v`, found 2"),
         ("v 0 0 0\nv 1 0 zero\n", 2, "not a number"),
-        ("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n", 5, "out of range"),
-        ("v 0 0 0\nv 1 0 0\nf 1 2\n", 3, "at least three"),
-        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", 4, "out of range"),
-        ("v 0 0 inf\n", 1, "not finite"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n", 5, "face index 3 is out of range"),
+        ("v 0 0 0\nv 1 0 0\nf 1 2\n", 3, "at least 3 vertices, found 2"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", 4, "face index 0"),
         ("v 0 0 0\nf a b c\n", 2, "not a vertex index"),
     ];
     for (text, line, what) in cases_obj {
@@ -133,19 +132,22 @@ fn malformed_files_report_the_line() {
         let MeshError::Parse { format: "OBJ", line: l, ref message } = err else {
             panic!("{text:?}: {err}");
         };
-        assert_eq!(l, line, "{text:?}: {err}");
+        assert_eq!(l, Some(line), "{text:?}: {err}");
         assert!(message.contains(what), "{text:?}: {err}");
     }
+    // A non-finite coordinate parses, and the mesh refuses it by vertex.
+    let err = PolyMesh::try_from_obj_str("v 0 0 0\nv 0 0 inf\n").expect_err("infinite");
+    assert!(matches!(err, MeshError::NonFinitePosition { vertex: 1 }), "{err}");
     let cases_off = [
-        ("PLY\n", 1, "header"),
-        ("OFF\n3 1\n", 2, "ends before"),
-        ("OFF\n3 1 0\n0 0 0\n1 0 0\n", 4, "ends before"),
-        ("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 6, "out of range"),
-        ("OFF\n3 1 0\n0 0 0\n1 0 x\n0 1 0\n3 0 1 2\n", 4, "not a number"),
-        ("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n3 0 1 2\n", 6, "fewer than 4"),
-        ("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", 6, "at least 3"),
-        ("OFF BINARY\n", 1, "binary"),
-        ("OFF\n-3 1 0\n", 2, "not a count"),
+        ("PLY\n", Some(1), "expected the keyword OFF"),
+        ("OFF\n3 1\n", None, "ends after 0 of 3 vertices"),
+        ("OFF\n3 1 0\n0 0 0\n1 0 0\n", None, "ends after 2 of 3 vertices"),
+        ("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", Some(6), "out of range"),
+        ("OFF\n3 1 0\n0 0 0\n1 0 x\n0 1 0\n3 0 1 2\n", Some(4), "not a number"),
+        ("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n3 0 1 2\n", Some(6), "3 of its 4"),
+        ("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", Some(6), "at least 3"),
+        ("OFF BINARY\n", Some(1), "binary"),
+        ("OFF\n-3 1 0\n", Some(2), "not a whole number"),
     ];
     for (text, line, what) in cases_off {
         let err = PolyMesh::try_from_off_str(text).expect_err(text);

@@ -18,9 +18,10 @@
 //! in [`Scan::dropped_points`]; faces that used them are dropped and counted in
 //! [`Scan::dropped_faces`].
 //!
-//! OBJ files are read by a parser of our own rather than `tobj`: `tobj` reads coordinates as
-//! f32 by default, reports no line numbers, and returns no positions for point-only files (the
-//! usual way scanners write OBJ). The tests check this reader against `tobj` on meshes.
+//! OBJ and OFF files are read by `hi-mesh`'s [`hi_mesh::PolygonSoup`] rather than `tobj`:
+//! `tobj` reads coordinates as f32 by default, reports no line numbers, and returns no positions
+//! for point-only files (the usual way scanners write OBJ). The tests check this reader against
+//! `tobj` on meshes.
 //!
 //! # Examples
 //!
@@ -223,6 +224,19 @@ impl Error {
             format: Some(format),
             location: Location::Byte(offset),
             message: message.into(),
+        }
+    }
+
+    /// A scan error from `hi-mesh`'s parser of OBJ and OFF ([`hi_mesh::PolygonSoup`]): its
+    /// line and message, in this crate's form.
+    pub(crate) fn from_parse(format: ScanFormat, e: hi_mesh::Error) -> Self {
+        match e {
+            hi_mesh::Error::Parse { line, message, .. } => Self::Read {
+                format: Some(format),
+                location: line.map_or(Location::None, Location::Line),
+                message,
+            },
+            other => Self::file(format, other.to_string()),
         }
     }
 
