@@ -150,63 +150,33 @@ pub fn nearest_point_distances(queries: &[DVec3], points: &[DVec3]) -> Result<Ve
 }
 
 /// The distance from each of `points` to the triangle mesh (`vertices`, `triangles`), exact
-/// (closest point on every triangle that could be nearest); relative numbers are against the
-/// mesh's bounding box.
+/// (the closest point of the closest triangle, found by the bounding-volume hierarchy of
+/// [`crate::closest::TriangleBvh`]); relative numbers are against the mesh's bounding box.
 ///
 /// # Errors
 ///
 /// [`Error::NonFinite`] for a non-finite point or vertex; [`Error::TooFewPoints`] for a mesh
 /// with no triangle; [`Error::InvalidOption`] for a triangle index out of range.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::distance::distances_to_mesh;
+///
+/// // A unit right triangle in z = 0: a point above its interior, one beyond its corner.
+/// let v = [DVec3::ZERO, DVec3::X, DVec3::Y];
+/// let points = [DVec3::new(0.2, 0.2, 0.5), DVec3::new(2.0, 0.0, 0.0)];
+/// let d = distances_to_mesh(&points, &v, &[[0, 1, 2]])?;
+/// assert_eq!(d.per_point, [0.5, 1.0]);
+/// # Ok::<(), hi_scan::Error>(())
+/// ```
 pub fn distances_to_mesh(
     points: &[DVec3],
     vertices: &[DVec3],
     triangles: &[[u32; 3]],
 ) -> Result<Distances, Error> {
     check_points(points, NonFiniteInput::Point)?;
-    check_points(vertices, NonFiniteInput::Vertex)?;
-    if triangles.is_empty() {
-        return Err(Error::TooFewPoints { found: 0, needed: 1 });
-    }
-    if let Some(t) = triangles.iter().flatten().find(|&&k| k as usize >= vertices.len()) {
-        return Err(Error::InvalidOption {
-            name: "triangle index",
-            value: f64::from(*t),
-            expected: "below the vertex count",
-        });
-    }
-    let corners = |t: &[u32; 3]| t.map(|k| vertices[k as usize]);
-    let centroids: Vec<[f64; 3]> =
-        triangles.iter().map(|t| (corners(t).iter().sum::<DVec3>() / 3.0).to_array()).collect();
-    // Every point of a triangle lies within `reach` of its centroid.
-    let reach = triangles
-        .iter()
-        .zip(&centroids)
-        .map(|(t, c)| {
-            corners(t).iter().map(|p| p.distance(DVec3::from_array(*c))).fold(0.0, f64::max)
-        })
-        .fold(0.0, f64::max);
-    let tree: ImmutableKdTree<f64, 3> = ImmutableKdTree::new_from_slice(&centroids)
-        .map_err(|_| Error::Degenerate { what: "the triangle centroids do not form a kd-tree" })?;
-    let per_point = points
-        .par_iter()
-        .map(|p| {
-            let q = p.to_array();
-            let nearest = tree.query(&q).nearest_one::<SquaredEuclidean<f64>>().execute();
-            let [a, b, c] = corners(&triangles[nearest.item as usize]);
-            let first = closest_point_on_triangle(*p, a, b, c).distance(*p);
-            // A nearer triangle has its centroid within first + reach of p.
-            let r = first + reach;
-            tree.query(&q)
-                .within::<SquaredEuclidean<f64>>(r * r)
-                .unsorted()
-                .execute()
-                .iter()
-                .map(|n| {
-                    let [a, b, c] = corners(&triangles[n.item as usize]);
-                    closest_point_on_triangle(*p, a, b, c).distance(*p)
-                })
-                .fold(first, f64::min)
-        })
-        .collect();
-    Ok(Distances::from_values(per_point, bounding_diagonal(vertices)))
+    let bvh = crate::closest::TriangleBvh::try_new(vertices, triangles)?;
+    Ok(Distances::from_values(bvh.distances(points), bounding_diagonal(vertices)))
 }
