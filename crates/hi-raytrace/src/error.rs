@@ -42,8 +42,22 @@ pub enum Error {
     Surface(hi_surface::Error),
     /// An error from the mesh layer (`hi-mesh`): a mesh, a colour map, a mesh file.
     Mesh(hi_mesh::Error),
-    /// The image could not be encoded or written.
-    Image(String),
+    /// The pixels of a [`crate::Rendering`] do not fill its width × height, so it has no
+    /// image to encode.
+    PixelCount {
+        /// Width in pixels.
+        width: u32,
+        /// Height in pixels.
+        height: u32,
+        /// The number of pixels it holds.
+        pixels: usize,
+    },
+    /// The PNG image could not be encoded or written: the kind of the I/O error (out of memory
+    /// for the encoder's limits, invalid data for any other encoder failure).
+    WriteImage {
+        /// What went wrong.
+        kind: std::io::ErrorKind,
+    },
 }
 
 impl fmt::Display for Error {
@@ -60,7 +74,10 @@ impl fmt::Display for Error {
             }
             Error::Surface(e) => write!(f, "{e}"),
             Error::Mesh(e) => write!(f, "{e}"),
-            Error::Image(e) => write!(f, "cannot write the image: {e}"),
+            Error::PixelCount { width, height, pixels } => {
+                write!(f, "the image has {pixels} pixels, not the {width}x{height} its size needs")
+            }
+            Error::WriteImage { kind } => write!(f, "cannot write the image: {kind}"),
         }
     }
 }

@@ -105,16 +105,25 @@ impl Rendering {
     ///
     /// # Errors
     ///
-    /// [`Error::Image`] if encoding fails.
+    /// [`Error::PixelCount`] if the pixels do not fill the image; [`Error::WriteImage`] if
+    /// encoding fails.
     #[cfg(feature = "png")]
     pub fn png_bytes(&self) -> Result<Vec<u8>, Error> {
         let raw: Vec<u8> = self.pixels.iter().flatten().copied().collect();
-        let image = image::RgbImage::from_raw(self.width, self.height, raw)
-            .ok_or_else(|| Error::Image("the pixels do not fill the image".to_owned()))?;
+        let image =
+            image::RgbImage::from_raw(self.width, self.height, raw).ok_or(Error::PixelCount {
+                width: self.width,
+                height: self.height,
+                pixels: self.pixels.len(),
+            })?;
         let mut out = std::io::Cursor::new(Vec::new());
-        image
-            .write_to(&mut out, image::ImageFormat::Png)
-            .map_err(|e| Error::Image(e.to_string()))?;
+        image.write_to(&mut out, image::ImageFormat::Png).map_err(|e| Error::WriteImage {
+            kind: match e {
+                image::ImageError::IoError(e) => e.kind(),
+                image::ImageError::Limits(_) => std::io::ErrorKind::OutOfMemory,
+                _ => std::io::ErrorKind::InvalidData,
+            },
+        })?;
         Ok(out.into_inner())
     }
 
@@ -122,11 +131,12 @@ impl Rendering {
     ///
     /// # Errors
     ///
-    /// [`Error::Image`] if encoding or writing fails.
+    /// [`Error::PixelCount`] and [`Error::WriteImage`] as [`Rendering::png_bytes`], and
+    /// [`Error::WriteImage`] if writing fails.
     #[cfg(feature = "png")]
     pub fn write_png<W: std::io::Write>(&self, mut w: W) -> Result<(), Error> {
         let bytes = self.png_bytes()?;
-        w.write_all(&bytes).map_err(|e| Error::Image(e.to_string()))
+        w.write_all(&bytes).map_err(|e| Error::WriteImage { kind: e.kind() })
     }
 }
 

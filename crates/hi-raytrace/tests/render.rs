@@ -346,3 +346,34 @@ fn a_first_pass_renders_edges_in_full_and_the_rest_from_its_samples() {
     // Corner pixels see only the background: the same from 4 samples as from 16.
     assert_eq!(full.pixel(0, 0), adaptive.pixel(0, 0));
 }
+
+/// A writer that refuses every byte.
+struct Refusing;
+
+impl std::io::Write for Refusing {
+    fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+        Err(std::io::ErrorKind::PermissionDenied.into())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+#[test]
+fn images_that_cannot_be_written_say_why() {
+    let image = hi_raytrace::Rendering {
+        width: 2,
+        height: 2,
+        pixels: vec![[255, 0, 0]; 3],
+        counts: hi_raytrace::RayCounts::default(),
+        elapsed: std::time::Duration::ZERO,
+    };
+    let error = image.png_bytes().expect_err("3 pixels for a 2×2 image");
+    assert_eq!(error, Error::PixelCount { width: 2, height: 2, pixels: 3 });
+    assert_eq!(error.to_string(), "the image has 3 pixels, not the 2x2 its size needs");
+    let whole = hi_raytrace::Rendering { pixels: vec![[255, 0, 0]; 4], ..image };
+    let error = whole.write_png(Refusing).expect_err("the writer refuses");
+    assert_eq!(error, Error::WriteImage { kind: std::io::ErrorKind::PermissionDenied });
+    assert_eq!(error.to_string(), "cannot write the image: permission denied");
+}
