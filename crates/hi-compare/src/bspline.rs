@@ -27,6 +27,7 @@
 //! segment reparametrised linearly: see [`BSplineCurve::breakpoints`].
 
 use hi_bezier::{BezierCurve, PiecewiseBezier};
+use hi_curve::Error as CurveError;
 
 use crate::check::check_points;
 use crate::{ControlPoint, Error};
@@ -57,7 +58,7 @@ fn div0(a: f64, b: f64) -> f64 {
 /// Checks a knot vector: finite, non-decreasing, no value repeated more than `max_mult` times.
 fn check_knots(knots: &[f64], max_mult: usize) -> Result<(), Error> {
     if let Some(&value) = knots.iter().find(|u| !u.is_finite()) {
-        return Err(Error::NonFiniteParameter { name: "knot", value });
+        return Err(Error::Curve(CurveError::NonFiniteParameter { name: "knot", value }));
     }
     if knots.windows(2).any(|w| w[1] < w[0]) {
         return Err(Error::InvalidKnots { reason: "knots must be non-decreasing" });
@@ -113,7 +114,7 @@ impl BSplineBasis {
     ///
     /// # Errors
     ///
-    /// [`Error::NonFiniteParameter`] for a NaN or infinite knot, [`Error::InvalidKnots`] when
+    /// [`hi_curve::Error::NonFiniteParameter`] for a NaN or infinite knot, [`Error::InvalidKnots`] when
     /// the knots decrease somewhere, a value is repeated more than p + 1 times, or there are
     /// fewer than p + 2 knots or all of them are equal.
     pub fn try_new(degree: usize, knots: Vec<f64>) -> Result<Self, Error> {
@@ -289,8 +290,8 @@ impl<P: ControlPoint> BSplineCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`] / [`Error::NonFinitePoint`] for bad control points,
-    /// [`Error::TooFewPoints`] for fewer than p + 1 of them, [`Error::NonFiniteParameter`] for a
+    /// [`hi_curve::Error::Empty`] / [`hi_curve::Error::NonFinitePoint`] for bad control points,
+    /// [`Error::TooFewPoints`] for fewer than p + 1 of them, [`hi_curve::Error::NonFiniteParameter`] for a
     /// non-finite knot, [`Error::InvalidKnots`] unless there are exactly (control points) + p + 1
     /// non-decreasing knots, none repeated more than p + 1 times, with uₚ < uₘ.
     pub fn try_new(degree: usize, knots: Vec<f64>, control: Vec<P>) -> Result<Self, Error> {
@@ -358,8 +359,8 @@ impl<P: ControlPoint> BSplineCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`] / [`Error::NonFinitePoint`] for bad control points,
-    /// [`Error::NonFiniteParameter`] for a non-finite breakpoint, [`Error::InvalidKnots`]
+    /// [`hi_curve::Error::Empty`] / [`hi_curve::Error::NonFinitePoint`] for bad control points,
+    /// [`hi_curve::Error::NonFiniteParameter`] for a non-finite breakpoint, [`Error::InvalidKnots`]
     /// unless there are n + 1 non-decreasing breakpoints with τ₀ < τₙ, none repeated
     /// (periodically) more than p + 1 times.
     pub fn try_new_periodic(
@@ -404,7 +405,7 @@ impl<P: ControlPoint> BSplineCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`] / [`Error::NonFinitePoint`] for bad control points.
+    /// [`hi_curve::Error::Empty`] / [`hi_curve::Error::NonFinitePoint`] for bad control points.
     pub fn try_uniform_closed(degree: usize, control: Vec<P>) -> Result<Self, Error> {
         let n = control.len();
         let breakpoints = (0..=n).map(|i| i as f64 / n.max(1) as f64).collect();

@@ -40,6 +40,7 @@
 //! tᵢ ∈ [0, 1) and period 1.
 
 use hi_bezier::PiecewiseBezier;
+use hi_curve::Error as CurveError;
 
 use super::bspline::BSplineCurve;
 use super::cardinal::{Closure, chord_length_parameters};
@@ -112,10 +113,10 @@ impl<P: ControlPoint> InterpolatingSpline<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 2
-    /// points (4 with [`EndCondition::NotAKnot`]), [`Error::CoincidentPoints`] for repeated
-    /// consecutive points with chord-length parameters, and [`Error::ParameterCountMismatch`],
-    /// [`Error::NonFiniteParameter`], [`Error::ParametersNotDistinct`] or
+    /// [`hi_curve::Error::Empty`], [`hi_curve::Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 2
+    /// points (4 with [`EndCondition::NotAKnot`]), [`hi_curve::Error::CoincidentPoints`] for repeated
+    /// consecutive points with chord-length parameters, and [`hi_curve::Error::ParameterCountMismatch`],
+    /// [`hi_curve::Error::NonFiniteParameter`], [`hi_curve::Error::ParametersNotDistinct`] or
     /// [`Error::ParametersNotIncreasing`] for bad given parameters; [`Error::Overflow`] if
     /// the coordinates are too large for the solve.
     pub fn try_open(points: Vec<P>, params: Parameters, end: EndCondition) -> Result<Self, Error> {
@@ -166,11 +167,11 @@ impl<P: ControlPoint> InterpolatingSpline<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 3
-    /// points, [`Error::CoincidentPoints`] for repeated consecutive points with chord-length
-    /// parameters, and [`Error::ParameterCountMismatch`], [`Error::NonFiniteParameter`],
-    /// [`Error::ParametersNotDistinct`], [`Error::ParametersNotIncreasing`] or
-    /// [`Error::NodeOutOfRange`] for bad given parameters; [`Error::Overflow`] if the
+    /// [`hi_curve::Error::Empty`], [`hi_curve::Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 3
+    /// points, [`hi_curve::Error::CoincidentPoints`] for repeated consecutive points with chord-length
+    /// parameters, and [`hi_curve::Error::ParameterCountMismatch`], [`hi_curve::Error::NonFiniteParameter`],
+    /// [`hi_curve::Error::ParametersNotDistinct`], [`Error::ParametersNotIncreasing`] or
+    /// [`hi_curve::Error::NodeOutOfRange`] for bad given parameters; [`Error::Overflow`] if the
     /// coordinates are too large for the solve.
     pub fn try_periodic(points: Vec<P>, params: Parameters) -> Result<Self, Error> {
         check_points(&points)?;
@@ -188,7 +189,10 @@ impl<P: ControlPoint> InterpolatingSpline<P> {
             Parameters::Given(given) => {
                 check_increasing(n, &given)?;
                 if let Some(index) = given.iter().position(|u| !(0.0..1.0).contains(u)) {
-                    return Err(Error::NodeOutOfRange { index, value: given[index] });
+                    return Err(Error::Curve(CurveError::NodeOutOfRange {
+                        index,
+                        value: given[index],
+                    }));
                 }
                 given
             }
@@ -399,7 +403,7 @@ fn periodic_slopes<P: ControlPoint>(points: &[P], params: &[f64]) -> Result<Vec<
     let z = solve_tridiagonal(&sub, &diag, &sup, u)?;
     let denom = 1.0 + z[0] + top_right * z[n - 1] / gamma;
     if denom == 0.0 || !denom.is_finite() {
-        return Err(Error::Singular { what: "periodic spline system" });
+        return Err(Error::Curve(CurveError::Singular { what: "periodic spline system" }));
     }
     let factor = (x[0] + x[n - 1] * (top_right / gamma)) * (1.0 / denom);
     check_slopes(x.iter().zip(&z).map(|(xi, zi)| *xi - factor * *zi).collect())
@@ -419,7 +423,7 @@ fn solve_tridiagonal<P: ControlPoint>(
     for i in 0..n {
         let pivot = diag[i] - if i > 0 { sub[i] * prev_c } else { 0.0 };
         if pivot == 0.0 || !pivot.is_finite() {
-            return Err(Error::Singular { what: "spline interpolation system" });
+            return Err(Error::Curve(CurveError::Singular { what: "spline interpolation system" }));
         }
         c[i] = sup[i] / pivot;
         let r = if i > 0 { rhs[i] - rhs[i - 1] * sub[i] } else { rhs[i] };
@@ -491,12 +495,12 @@ mod tests {
         let given = Parameters::Given(vec![0.0, 0.5, 1.0]);
         assert!(matches!(
             InterpolatingSpline::try_periodic(three.clone(), given),
-            Err(Error::NodeOutOfRange { index: 2, .. })
+            Err(Error::Curve(CurveError::NodeOutOfRange { index: 2, .. }))
         ));
         let dup = vec![0.0, 1.0, 1.0, 2.0];
         assert!(matches!(
             InterpolatingSpline::try_open(dup, Parameters::ChordLength, EndCondition::Natural),
-            Err(Error::CoincidentPoints { first: 1, second: 2 })
+            Err(Error::Curve(CurveError::CoincidentPoints { first: 1, second: 2 }))
         ));
     }
 }

@@ -34,6 +34,7 @@
 //! the two end pieces.)
 
 use hi_bezier::{BezierCurve, PiecewiseBezier};
+use hi_curve::Error as CurveError;
 
 use super::bspline::point_spread;
 use crate::check::check_points;
@@ -58,8 +59,8 @@ pub enum Closure {
 ///
 /// # Errors
 ///
-/// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 2 points,
-/// [`Error::CoincidentPoints`] when two consecutive points coincide (cyclically if closed).
+/// [`hi_curve::Error::Empty`], [`hi_curve::Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 2 points,
+/// [`hi_curve::Error::CoincidentPoints`] when two consecutive points coincide (cyclically if closed).
 ///
 /// # Examples
 ///
@@ -90,7 +91,7 @@ pub fn chord_length_parameters<P: ControlPoint>(
         let second = (first + 1) % n;
         let chord = (points[second] - points[first]).norm();
         if chord == 0.0 {
-            return Err(Error::CoincidentPoints { first, second });
+            return Err(Error::Curve(CurveError::CoincidentPoints { first, second }));
         }
         len += chord;
         if second != 0 {
@@ -137,7 +138,7 @@ impl Tcb {
             [("tension", self.tension), ("continuity", self.continuity), ("bias", self.bias)]
         {
             if !value.is_finite() {
-                return Err(Error::NonFiniteParameter { name, value });
+                return Err(Error::Curve(CurveError::NonFiniteParameter { name, value }));
             }
         }
         Ok(())
@@ -190,7 +191,7 @@ impl<P: ControlPoint> HermiteSpline<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 2
+    /// [`hi_curve::Error::Empty`], [`hi_curve::Error::NonFinitePoint`], [`Error::TooFewPoints`] for fewer than 2
     /// points (open) or 3 (closed), and [`Error::Overflow`] if coordinates are so large that a
     /// Bézier control point overflows.
     pub fn catmull_rom(points: Vec<P>, closure: Closure) -> Result<Self, Error> {
@@ -201,7 +202,7 @@ impl<P: ControlPoint> HermiteSpline<P> {
     ///
     /// # Errors
     ///
-    /// As [`HermiteSpline::catmull_rom`], and [`Error::CoincidentPoints`] when two consecutive
+    /// As [`HermiteSpline::catmull_rom`], and [`hi_curve::Error::CoincidentPoints`] when two consecutive
     /// points coincide.
     pub fn bessel_overhauser(points: Vec<P>, closure: Closure) -> Result<Self, Error> {
         check_points(&points)?;
@@ -215,9 +216,9 @@ impl<P: ControlPoint> HermiteSpline<P> {
     ///
     /// # Errors
     ///
-    /// As [`HermiteSpline::catmull_rom`], and [`Error::ParameterCountMismatch`],
-    /// [`Error::NonFiniteParameter`], [`Error::ParametersNotDistinct`],
-    /// [`Error::ParametersNotIncreasing`] or (closed) [`Error::NodeOutOfRange`] for bad
+    /// As [`HermiteSpline::catmull_rom`], and [`hi_curve::Error::ParameterCountMismatch`],
+    /// [`hi_curve::Error::NonFiniteParameter`], [`hi_curve::Error::ParametersNotDistinct`],
+    /// [`Error::ParametersNotIncreasing`] or (closed) [`hi_curve::Error::NodeOutOfRange`] for bad
     /// parameters.
     pub fn bessel_overhauser_with_params(
         points: Vec<P>,
@@ -236,7 +237,7 @@ impl<P: ControlPoint> HermiteSpline<P> {
     ///
     /// # Errors
     ///
-    /// As [`HermiteSpline::catmull_rom`], and [`Error::NonFiniteParameter`] for a non-finite
+    /// As [`HermiteSpline::catmull_rom`], and [`hi_curve::Error::NonFiniteParameter`] for a non-finite
     /// T, C or B.
     pub fn kochanek_bartels(points: Vec<P>, closure: Closure, tcb: Tcb) -> Result<Self, Error> {
         let n = points.len();
@@ -248,7 +249,7 @@ impl<P: ControlPoint> HermiteSpline<P> {
     ///
     /// # Errors
     ///
-    /// As [`HermiteSpline::kochanek_bartels`], and [`Error::ParameterCountMismatch`] unless
+    /// As [`HermiteSpline::kochanek_bartels`], and [`hi_curve::Error::ParameterCountMismatch`] unless
     /// there is one key per point.
     pub fn kochanek_bartels_per_point(
         points: Vec<P>,
@@ -258,7 +259,10 @@ impl<P: ControlPoint> HermiteSpline<P> {
         check_points(&points)?;
         let n = points.len();
         if tcb.len() != n {
-            return Err(Error::ParameterCountMismatch { points: n, params: tcb.len() });
+            return Err(Error::Curve(CurveError::ParameterCountMismatch {
+                points: n,
+                params: tcb.len(),
+            }));
         }
         tcb.iter().try_for_each(Tcb::check)?;
         let n_segments = if closure == Closure::Closed { n } else { n.saturating_sub(1) };
@@ -437,12 +441,18 @@ fn checked_knots<P: ControlPoint>(
         }
         Closure::Closed => {
             if let Some(index) = params.iter().position(|u| !(0.0..1.0).contains(u)) {
-                return Err(Error::NodeOutOfRange { index, value: params[index] });
+                return Err(Error::Curve(CurveError::NodeOutOfRange {
+                    index,
+                    value: params[index],
+                }));
             }
             let mut knots = params.to_vec();
             knots.push(params[0] + 1.0);
             if knots[n] <= knots[n - 1] {
-                return Err(Error::ParametersNotDistinct { first: n - 1, second: 0 });
+                return Err(Error::Curve(CurveError::ParametersNotDistinct {
+                    first: n - 1,
+                    second: 0,
+                }));
             }
             Ok(knots)
         }
@@ -504,7 +514,7 @@ mod tests {
         let dup = vec![DVec2::ZERO, DVec2::X, DVec2::X];
         assert!(matches!(
             HermiteSpline::bessel_overhauser(dup, Closure::Open),
-            Err(Error::CoincidentPoints { first: 1, second: 2 })
+            Err(Error::Curve(CurveError::CoincidentPoints { first: 1, second: 2 }))
         ));
         let tcb = Tcb::new(f64::NAN, 0.0, 0.0);
         assert!(HermiteSpline::kochanek_bartels(pts.clone(), Closure::Open, tcb).is_err());
@@ -519,7 +529,7 @@ mod tests {
         let tri = vec![DVec2::ZERO, DVec2::X, DVec2::Y];
         assert!(matches!(
             HermiteSpline::bessel_overhauser_with_params(tri, vec![0.0, 0.5, 1.0], Closure::Closed),
-            Err(Error::NodeOutOfRange { index: 2, .. })
+            Err(Error::Curve(CurveError::NodeOutOfRange { index: 2, .. }))
         ));
     }
 }

@@ -22,6 +22,7 @@
 use crate::check::{MAX_SAMPLES, spread};
 use crate::check::{check_param, check_points};
 use crate::{ControlPoint, Error};
+use hi_curve::Error as CurveError;
 use hi_curve::ParamCurve;
 
 /// The default tension w = 1/16 of the 4-point scheme: the midpoint of the cubic through four
@@ -77,7 +78,7 @@ impl<P: ControlPoint> ChaikinCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`] for no points, [`Error::NonFinitePoint`] for a NaN or infinite
+    /// [`hi_curve::Error::Empty`] for no points, [`hi_curve::Error::NonFinitePoint`] for a NaN or infinite
     /// coordinate, [`Error::TooFewPoints`] for a single point.
     pub fn try_new(points: Vec<P>, closed: bool) -> Result<Self, Error> {
         check_polygon(&points, "Chaikin's scheme")?;
@@ -111,7 +112,7 @@ impl<P: ControlPoint> ChaikinCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidCount`] if P^steps would have more than 2²⁸ points.
+    /// [`hi_curve::Error::InvalidCount`] if P^steps would have more than 2²⁸ points.
     pub fn refine(&self, steps: usize) -> Result<Vec<Vec<P>>, Error> {
         check_steps(steps, self.points.len(), |m| 2 * m)?;
         let mut res = Vec::with_capacity(steps + 1);
@@ -251,7 +252,7 @@ impl<P: ControlPoint> FourPointCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`] for no points, [`Error::NonFinitePoint`] for a NaN or infinite
+    /// [`hi_curve::Error::Empty`] for no points, [`hi_curve::Error::NonFinitePoint`] for a NaN or infinite
     /// coordinate, [`Error::TooFewPoints`] for a single point.
     pub fn try_new(points: Vec<P>, closed: bool) -> Result<Self, Error> {
         Self::try_with_weight(points, closed, DEFAULT_FOUR_POINT_WEIGHT)
@@ -271,17 +272,17 @@ impl<P: ControlPoint> FourPointCurve<P> {
     ///
     /// # Errors
     ///
-    /// As [`FourPointCurve::try_new`], and [`Error::NonFiniteParameter`] or
-    /// [`Error::ParameterOutOfBounds`] unless 0 ≤ w ≤ 1/8.
+    /// As [`FourPointCurve::try_new`], and [`hi_curve::Error::NonFiniteParameter`] or
+    /// [`hi_curve::Error::ParameterOutOfBounds`] unless 0 ≤ w ≤ 1/8.
     pub fn try_with_weight(points: Vec<P>, closed: bool, weight: f64) -> Result<Self, Error> {
         check_polygon(&points, "the 4-point scheme")?;
         check_param("w", weight)?;
         if !(0.0..=0.125).contains(&weight) {
-            return Err(Error::ParameterOutOfBounds {
+            return Err(Error::Curve(CurveError::ParameterOutOfBounds {
                 name: "w",
                 value: weight,
                 expected: "0 <= w <= 1/8 (Hardy 2005, section 4.5)",
-            });
+            }));
         }
         Ok(Self { points, closed, weight })
     }
@@ -308,7 +309,7 @@ impl<P: ControlPoint> FourPointCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidCount`] if P^steps would have more than 2²⁸ points.
+    /// [`hi_curve::Error::InvalidCount`] if P^steps would have more than 2²⁸ points.
     pub fn refine(&self, steps: usize) -> Result<Vec<Vec<P>>, Error> {
         let closed = self.closed;
         check_steps(steps, self.points.len(), |m| if closed { 2 * m } else { 2 * m - 1 })?;
@@ -408,11 +409,11 @@ fn check_steps(steps: usize, n: usize, grow: impl Fn(usize) -> usize) -> Result<
     for _ in 0..steps {
         m = grow(m);
         if m > MAX_SAMPLES {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: "number of subdivision steps",
                 value: steps,
                 expected: "few enough that the refined polygon has at most 2^28 points",
-            });
+            }));
         }
     }
     Ok(())
@@ -434,27 +435,30 @@ mod tests {
 
     #[test]
     fn rejects_bad_input() {
-        assert_eq!(ChaikinCurve::<f64>::try_new(vec![], true), Err(Error::Empty));
+        assert_eq!(
+            ChaikinCurve::<f64>::try_new(vec![], true),
+            Err(Error::Curve(CurveError::Empty))
+        );
         assert!(matches!(
             ChaikinCurve::try_new(vec![1.0], false),
             Err(Error::TooFewPoints { needed: 2, got: 1, .. })
         ));
         assert_eq!(
             FourPointCurve::try_new(vec![DVec2::ZERO, DVec2::INFINITY], true),
-            Err(Error::NonFinitePoint { index: 1 })
+            Err(Error::Curve(CurveError::NonFinitePoint { index: 1 }))
         );
         for w in [-0.01, 0.2] {
             assert!(matches!(
                 FourPointCurve::try_with_weight(vec![0.0, 1.0], true, w),
-                Err(Error::ParameterOutOfBounds { name: "w", .. })
+                Err(Error::Curve(CurveError::ParameterOutOfBounds { name: "w", .. }))
             ));
         }
         assert!(matches!(
             FourPointCurve::try_with_weight(vec![0.0, 1.0], true, f64::NAN),
-            Err(Error::NonFiniteParameter { .. })
+            Err(Error::Curve(CurveError::NonFiniteParameter { .. }))
         ));
         let c = ChaikinCurve::new(vec![0.0, 1.0, 2.0], true);
-        assert!(matches!(c.refine(40), Err(Error::InvalidCount { .. })));
+        assert!(matches!(c.refine(40), Err(Error::Curve(CurveError::InvalidCount { .. }))));
         assert_eq!(c.refine(0).unwrap(), vec![vec![0.0, 1.0, 2.0]]);
     }
 

@@ -8,62 +8,6 @@ use std::fmt;
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Error {
-    /// No points were given.
-    Empty,
-    /// Point `index` has a NaN or infinite coordinate.
-    NonFinitePoint {
-        /// Index of the first offending point.
-        index: usize,
-    },
-    /// A scalar argument is NaN or infinite.
-    NonFiniteParameter {
-        /// Name of the argument.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-    },
-    /// A count (of samples, points or levels) is out of the range an operation accepts.
-    InvalidCount {
-        /// Which count.
-        what: &'static str,
-        /// Its value.
-        value: usize,
-        /// The range it must lie in, in words.
-        expected: &'static str,
-    },
-    /// The number of parameters differs from the number of points.
-    ParameterCountMismatch {
-        /// Number of points.
-        points: usize,
-        /// Number of parameters.
-        params: usize,
-    },
-    /// A node parameter lies outside [0, 1).
-    NodeOutOfRange {
-        /// Index of the parameter.
-        index: usize,
-        /// Its value.
-        value: f64,
-    },
-    /// Two node parameters coincide (modulo 1), so no curve can pass through both points.
-    ParametersNotDistinct {
-        /// Index of the first parameter.
-        first: usize,
-        /// Index of the second parameter.
-        second: usize,
-    },
-    /// Two consecutive points coincide, so their chord-length parameters coincide too.
-    CoincidentPoints {
-        /// Index of the first point.
-        first: usize,
-        /// Index of the next point (cyclically).
-        second: usize,
-    },
-    /// A linear system of the construction is singular to working precision.
-    Singular {
-        /// Which system.
-        what: &'static str,
-    },
     /// A construction needs more points than were given.
     TooFewPoints {
         /// What needs them.
@@ -72,15 +16,6 @@ pub enum Error {
         needed: usize,
         /// How many there are.
         got: usize,
-    },
-    /// A scalar argument is outside the range a construction accepts.
-    ParameterOutOfBounds {
-        /// Name of the argument.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// The accepted range, in words.
-        expected: &'static str,
     },
     /// A knot vector is not a valid one (not non-decreasing, wrong length, or too many
     /// repeated knots).
@@ -196,8 +131,11 @@ pub enum Error {
         /// The kind.
         kind: crate::CurveKind,
     },
-    /// An error from the harmonic curves of `hi-curve` (a [`crate::CurveKind::Harmonic`] or
-    /// [`crate::CurveKind::Trig`] curve).
+    /// An input `hi-curve` checks for every curve (no points, a non-finite point or
+    /// parameter, a count out of range, parameters that do not match the points, coincident
+    /// points or nodes, a singular system, an argument out of bounds), or an error of the
+    /// harmonic curves of `hi-curve` (a [`crate::CurveKind::Harmonic`] or
+    /// [`crate::CurveKind::Trig`] curve): the one description of those errors, shared.
     Curve(hi_curve::Error),
     /// An error from `hi-mesh` (a triangle mesh of a B-spline surface).
     Mesh(hi_mesh::Error),
@@ -206,39 +144,8 @@ pub enum Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::Empty => write!(f, "no points given: at least one point is needed"),
-            Error::NonFinitePoint { index } => {
-                write!(f, "point {index} has a non-finite coordinate (NaN or infinity)")
-            }
-            Error::NonFiniteParameter { name, value } => {
-                write!(f, "{name} = {value} is not a finite number")
-            }
-            Error::InvalidCount { what, value, expected } => {
-                write!(f, "{what} = {value} is invalid: expected {expected}")
-            }
-            Error::ParameterCountMismatch { points, params } => write!(
-                f,
-                "{} given for {}: one parameter per point is needed",
-                plural(*params, "parameter"),
-                plural(*points, "point")
-            ),
-            Error::NodeOutOfRange { index, value } => {
-                write!(f, "node parameter {index} = {value} is outside [0, 1)")
-            }
-            Error::ParametersNotDistinct { first, second } => write!(
-                f,
-                "parameters {first} and {second} coincide (modulo 1): the nodes must be distinct"
-            ),
-            Error::CoincidentPoints { first, second } => write!(
-                f,
-                "points {first} and {second} coincide, so their chord-length parameters do too"
-            ),
-            Error::Singular { what } => write!(f, "the {what} is singular to working precision"),
             Error::TooFewPoints { what, needed, got } => {
                 write!(f, "{what} needs at least {}, got {got}", plural(*needed, "point"))
-            }
-            Error::ParameterOutOfBounds { name, value, expected } => {
-                write!(f, "{name} = {value} is out of range: expected {expected}")
             }
             Error::InvalidKnots { reason } => write!(f, "invalid knot vector: {reason}"),
             Error::InvalidWeight { index, value } => {

@@ -11,6 +11,7 @@
 
 use glam::DVec2;
 use hi_bezier::{convex_hull_2d, polygon_area};
+use hi_curve::Error as CurveError;
 
 use crate::Error;
 use crate::check::MAX_SAMPLES;
@@ -89,7 +90,7 @@ pub struct Fairness {
 ///
 /// # Errors
 ///
-/// [`Error::InvalidCount`] unless 2 ≤ `samples` ≤ 2²⁸.
+/// [`hi_curve::Error::InvalidCount`] unless 2 ≤ `samples` ≤ 2²⁸.
 ///
 /// # Examples
 ///
@@ -119,7 +120,7 @@ pub fn curvature_plot<C: PlaneCurve + ?Sized>(
 ///
 /// # Errors
 ///
-/// [`Error::InvalidCount`] unless 2 ≤ `samples` ≤ 2²⁸.
+/// [`hi_curve::Error::InvalidCount`] unless 2 ≤ `samples` ≤ 2²⁸.
 ///
 /// # Examples
 ///
@@ -177,8 +178,8 @@ pub fn space_curvature_plot<C: SpaceCurve + ?Sized>(
 ///
 /// # Errors
 ///
-/// [`Error::InvalidCount`] unless 3 ≤ `samples` ≤ 2²⁸; [`Error::Empty`] or
-/// [`Error::NonFinitePoint`] for bad `points`.
+/// [`hi_curve::Error::InvalidCount`] unless 3 ≤ `samples` ≤ 2²⁸; [`hi_curve::Error::Empty`] or
+/// [`hi_curve::Error::NonFinitePoint`] for bad `points`.
 ///
 /// # Examples
 ///
@@ -203,11 +204,11 @@ pub fn fairness<C: PlaneCurve + ?Sized>(
 ) -> Result<Fairness, Error> {
     check_points(points)?;
     if samples < 3 {
-        return Err(Error::InvalidCount {
+        return Err(Error::Curve(CurveError::InvalidCount {
             what: "number of samples",
             value: samples,
             expected: "between 3 and 2^28",
-        });
+        }));
     }
     let plot = curvature_plot(curve, samples)?;
     let periodic = curve.is_periodic();
@@ -239,7 +240,7 @@ pub fn fairness<C: PlaneCurve + ?Sized>(
 ///
 /// # Errors
 ///
-/// [`Error::InvalidCount`] unless 2 ≤ `samples` ≤ 2²⁸.
+/// [`hi_curve::Error::InvalidCount`] unless 2 ≤ `samples` ≤ 2²⁸.
 ///
 /// # Examples
 ///
@@ -343,11 +344,11 @@ fn track(v: f64, falling: &mut bool, extreme: &mut f64, turns: &mut usize, toler
 /// The sample parameters: j/N for a periodic curve, j/(N − 1) for an open one.
 fn sample_parameters(periodic: bool, samples: usize) -> Result<Vec<f64>, Error> {
     if !(2..=MAX_SAMPLES).contains(&samples) {
-        return Err(Error::InvalidCount {
+        return Err(Error::Curve(CurveError::InvalidCount {
             what: "number of samples",
             value: samples,
             expected: "between 2 and 2^28",
-        });
+        }));
     }
     let denominator = if periodic { samples } else { samples - 1 } as f64;
     Ok((0..samples).map(|j| j as f64 / denominator).collect())

@@ -41,6 +41,7 @@
 
 use glam::DVec2;
 use hi_bezier::{BezierCurve, PiecewiseBezier};
+use hi_curve::Error as CurveError;
 
 use crate::Error;
 use crate::check::check_points;
@@ -285,11 +286,11 @@ impl HobbyCurve {
     ///
     /// # Errors
     ///
-    /// - [`Error::Empty`] for no points, [`Error::NonFinitePoint`] for a NaN or infinite
+    /// - [`hi_curve::Error::Empty`] for no points, [`hi_curve::Error::NonFinitePoint`] for a NaN or infinite
     ///   coordinate, [`Error::TooFewPoints`] for a single point;
-    /// - [`Error::ParameterOutOfBounds`] for a tension below 3/4 or not finite, or a curl that
+    /// - [`hi_curve::Error::ParameterOutOfBounds`] for a tension below 3/4 or not finite, or a curl that
     ///   is negative or not finite;
-    /// - [`Error::InvalidCount`] if `options.joins` is neither empty nor one per segment.
+    /// - [`hi_curve::Error::InvalidCount`] if `options.joins` is neither empty nor one per segment.
     pub fn try_new(points: Vec<DVec2>, options: &HobbyOptions) -> Result<Self, Error> {
         check_points(&points)?;
         let n = points.len();
@@ -302,11 +303,11 @@ impl HobbyCurve {
         } else if options.joins.len() == n_segments {
             options.joins.clone()
         } else {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: "number of joins",
                 value: options.joins.len(),
                 expected: "one per segment: n - 1 for an open path of n points, n for a closed one",
-            });
+            }));
         };
         for join in &joins {
             check_tension(join.start)?;
@@ -488,11 +489,11 @@ fn check_tension(tension: Tension) -> Result<(), Error> {
     if tension.value.is_finite() && tension.value >= MIN_TENSION {
         Ok(())
     } else {
-        Err(Error::ParameterOutOfBounds {
+        Err(Error::Curve(CurveError::ParameterOutOfBounds {
             name: "tension",
             value: tension.value,
             expected: "a finite number of at least 3/4 (METAPOST's smallest tension)",
-        })
+        }))
     }
 }
 
@@ -500,11 +501,11 @@ fn check_curl(curl: f64) -> Result<(), Error> {
     if curl.is_finite() && curl >= 0.0 {
         Ok(())
     } else {
-        Err(Error::ParameterOutOfBounds {
+        Err(Error::Curve(CurveError::ParameterOutOfBounds {
             name: "curl",
             value: curl,
             expected: "a finite non-negative number",
-        })
+        }))
     }
 }
 
@@ -923,19 +924,19 @@ mod tests {
         let bad_tension = HobbyOptions::closed().with_tension(Tension::new(0.5));
         assert!(matches!(
             HobbyCurve::try_new(pts.clone(), &bad_tension),
-            Err(Error::ParameterOutOfBounds { name: "tension", .. })
+            Err(Error::Curve(CurveError::ParameterOutOfBounds { name: "tension", .. }))
         ));
         let nan_tension = HobbyOptions::closed().with_tension(Tension::at_least(f64::NAN));
         assert!(HobbyCurve::try_new(pts.clone(), &nan_tension).is_err());
         let bad_curl = HobbyOptions::open().with_curls(-1.0, 1.0);
         assert!(matches!(
             HobbyCurve::try_new(pts.clone(), &bad_curl),
-            Err(Error::ParameterOutOfBounds { name: "curl", .. })
+            Err(Error::Curve(CurveError::ParameterOutOfBounds { name: "curl", .. }))
         ));
         let joins = HobbyOptions::open().with_joins(vec![Join::default(); 3]);
         assert!(matches!(
             HobbyCurve::try_new(pts.clone(), &joins),
-            Err(Error::InvalidCount { .. })
+            Err(Error::Curve(CurveError::InvalidCount { .. }))
         ));
         assert!(
             HobbyCurve::try_new(
@@ -944,10 +945,13 @@ mod tests {
             )
             .is_ok()
         );
-        assert_eq!(HobbyCurve::try_new(vec![], &HobbyOptions::open()), Err(Error::Empty));
+        assert_eq!(
+            HobbyCurve::try_new(vec![], &HobbyOptions::open()),
+            Err(Error::Curve(CurveError::Empty))
+        );
         assert_eq!(
             HobbyCurve::try_new(vec![DVec2::ZERO, DVec2::NAN], &HobbyOptions::open()),
-            Err(Error::NonFinitePoint { index: 1 })
+            Err(Error::Curve(CurveError::NonFinitePoint { index: 1 }))
         );
         // A closed curve's curls are ignored, whatever they are.
         assert!(

@@ -50,6 +50,7 @@
 //! its chord-length pieces each reparametrised linearly
 //! ([`HermiteSpline::breakpoints`]). `harmonic`, `trig` and `four-point` are not polynomial.
 
+use hi_curve::Error as CurveError;
 use std::fmt;
 use std::str::FromStr;
 
@@ -191,13 +192,13 @@ impl CurveKind {
     ///
     /// # Errors
     ///
-    /// - [`Error::Empty`] for no points, [`Error::NonFinitePoint`] for a NaN or infinite
+    /// - [`hi_curve::Error::Empty`] for no points, [`hi_curve::Error::NonFinitePoint`] for a NaN or infinite
     ///   coordinate;
     /// - [`Error::TooFewPoints`] below the size the kind needs: 1 for `harmonic` and `trig`,
     ///   3 for the closed Hermite kinds and `bspline-periodic`, 2 for the others;
-    /// - [`Error::CoincidentPoints`] for `bessel-overhauser` when two consecutive points
+    /// - [`hi_curve::Error::CoincidentPoints`] for `bessel-overhauser` when two consecutive points
     ///   (cyclically) coincide;
-    /// - [`Error::InvalidCount`] for a Hobby kind with points that are not 2-D;
+    /// - [`hi_curve::Error::InvalidCount`] for a Hobby kind with points that are not 2-D;
     /// - [`Error::Overflow`] when coordinates are too large for the construction.
     pub fn build<P: ControlPoint>(self, points: Vec<P>) -> Result<AnyCurve<P>, Error> {
         check_points(&points)?;
@@ -227,11 +228,11 @@ impl CurveKind {
             )?),
             CurveKind::HobbyClosed | CurveKind::HobbyOpen => {
                 if P::DIM != 2 {
-                    return Err(Error::InvalidCount {
+                    return Err(Error::Curve(CurveError::InvalidCount {
                         what: "dimension of the points",
                         value: P::DIM,
                         expected: "2: Hobby's algorithm (METAPOST) is planar",
-                    });
+                    }));
                 }
                 let plane = points.iter().map(|p| DVec2::new(p.coord(0), p.coord(1))).collect();
                 let config = if self == CurveKind::HobbyClosed {
@@ -342,7 +343,7 @@ impl<P: ControlPoint> AnyCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidCount`] unless 1 ≤ N ≤ 2²⁸.
+    /// [`hi_curve::Error::InvalidCount`] unless 1 ≤ N ≤ 2²⁸.
     pub fn sample(&self, n_samples: usize) -> Result<Vec<P>, Error> {
         check_count("number of samples", n_samples)?;
         if let Inner::Harmonic(curve) = &self.inner {
@@ -390,7 +391,7 @@ impl<P: ControlPoint> AnyCurve<P> {
                     .map(|segment| segment.try_map(to_point::<P>))
                     .collect::<Result<Vec<_>, _>>()
                     .map_err(|_| Error::Overflow { what: "Bézier form of the Hobby curve" })?;
-                PiecewiseBezier::try_new(segments).map_err(|_| Error::Empty)
+                PiecewiseBezier::try_new(segments).map_err(|_| Error::Curve(CurveError::Empty))
             }
             Inner::Chaikin(curve) => chaikin_bezier(curve.points()),
         }
@@ -415,7 +416,7 @@ fn chaikin_bezier<P: ControlPoint>(points: &[P]) -> Result<PiecewiseBezier<P>, E
             BezierCurve::try_new(vec![(a + b) * 0.5, b, (b + c) * 0.5]).map_err(overflow)
         })
         .collect::<Result<Vec<_>, _>>()?;
-    PiecewiseBezier::try_new(segments).map_err(|_| Error::Empty)
+    PiecewiseBezier::try_new(segments).map_err(|_| Error::Curve(CurveError::Empty))
 }
 
 impl<P: ControlPoint> ParamCurve<P> for AnyCurve<P> {

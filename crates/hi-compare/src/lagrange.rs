@@ -7,6 +7,7 @@
 //! it is open, from x₀ at t = 0 to xₙ₋₁ at t = 1. The default nodes are uniform, tⱼ = j/(n − 1).
 
 use hi_bezier::{BezierCurve, PiecewiseBezier};
+use hi_curve::Error as CurveError;
 
 use super::bspline::point_spread;
 use crate::check::check_points;
@@ -16,14 +17,20 @@ use hi_curve::ParamCurve;
 /// Checks node parameters: as many as points, finite, strictly increasing.
 pub(super) fn check_increasing(n_points: usize, params: &[f64]) -> Result<(), Error> {
     if params.len() != n_points {
-        return Err(Error::ParameterCountMismatch { points: n_points, params: params.len() });
+        return Err(Error::Curve(CurveError::ParameterCountMismatch {
+            points: n_points,
+            params: params.len(),
+        }));
     }
     if let Some(&value) = params.iter().find(|u| !u.is_finite()) {
-        return Err(Error::NonFiniteParameter { name: "parameter", value });
+        return Err(Error::Curve(CurveError::NonFiniteParameter { name: "parameter", value }));
     }
     for index in 1..params.len() {
         if params[index] == params[index - 1] {
-            return Err(Error::ParametersNotDistinct { first: index - 1, second: index });
+            return Err(Error::Curve(CurveError::ParametersNotDistinct {
+                first: index - 1,
+                second: index,
+            }));
         }
         if params[index] < params[index - 1] {
             return Err(Error::ParametersNotIncreasing { index });
@@ -62,12 +69,12 @@ impl LagrangeBasis {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`] for no nodes, [`Error::NonFiniteParameter`] for a NaN or infinite
-    /// node, [`Error::ParametersNotDistinct`] or [`Error::ParametersNotIncreasing`] unless they
+    /// [`hi_curve::Error::Empty`] for no nodes, [`hi_curve::Error::NonFiniteParameter`] for a NaN or infinite
+    /// node, [`hi_curve::Error::ParametersNotDistinct`] or [`Error::ParametersNotIncreasing`] unless they
     /// strictly increase.
     pub fn try_new(nodes: Vec<f64>) -> Result<Self, Error> {
         if nodes.is_empty() {
-            return Err(Error::Empty);
+            return Err(Error::Curve(CurveError::Empty));
         }
         check_increasing(nodes.len(), &nodes)?;
         Ok(Self { nodes })
@@ -135,7 +142,7 @@ impl<P: ControlPoint> LagrangeCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`], [`Error::NonFinitePoint`], and [`Error::TooFewPoints`] for a single
+    /// [`hi_curve::Error::Empty`], [`hi_curve::Error::NonFinitePoint`], and [`Error::TooFewPoints`] for a single
     /// point.
     pub fn try_new(points: Vec<P>) -> Result<Self, Error> {
         let n = points.len();
@@ -148,9 +155,9 @@ impl<P: ControlPoint> LagrangeCurve<P> {
     ///
     /// # Errors
     ///
-    /// [`Error::Empty`], [`Error::NonFinitePoint`], [`Error::TooFewPoints`] for a single point,
-    /// [`Error::ParameterCountMismatch`], [`Error::NonFiniteParameter`],
-    /// [`Error::ParametersNotDistinct`] and [`Error::ParametersNotIncreasing`] for bad nodes.
+    /// [`hi_curve::Error::Empty`], [`hi_curve::Error::NonFinitePoint`], [`Error::TooFewPoints`] for a single point,
+    /// [`hi_curve::Error::ParameterCountMismatch`], [`hi_curve::Error::NonFiniteParameter`],
+    /// [`hi_curve::Error::ParametersNotDistinct`] and [`Error::ParametersNotIncreasing`] for bad nodes.
     pub fn try_with_params(points: Vec<P>, params: Vec<f64>) -> Result<Self, Error> {
         check_points(&points)?;
         if points.len() < 2 {
@@ -335,7 +342,7 @@ mod tests {
         let pts = vec![1.0, 2.0, 3.0];
         assert!(matches!(
             LagrangeCurve::try_with_params(pts.clone(), vec![0.0, 1.0, 1.0]),
-            Err(Error::ParametersNotDistinct { first: 1, second: 2 })
+            Err(Error::Curve(CurveError::ParametersNotDistinct { first: 1, second: 2 }))
         ));
         assert!(matches!(
             LagrangeCurve::try_with_params(pts.clone(), vec![0.0, 2.0, 1.0]),

@@ -16,6 +16,7 @@
 
 use glam::DVec2;
 use hi_bezier::{PiecewiseBezier, RationalBezierCurve};
+use hi_curve::Error as CurveError;
 
 use super::bspline::{BSplineCurve, point_spread};
 use crate::check::check_points;
@@ -51,11 +52,11 @@ pub struct NurbsCurve<P> {
 
 fn check_weights(n_points: usize, weights: &[f64]) -> Result<(), Error> {
     if weights.len() != n_points {
-        return Err(Error::InvalidCount {
+        return Err(Error::Curve(CurveError::InvalidCount {
             what: "number of weights",
             value: weights.len(),
             expected: "one weight per control point",
-        });
+        }));
     }
     match weights.iter().position(|w| !(w.is_finite() && *w > 0.0)) {
         Some(index) => Err(Error::InvalidWeight { index, value: weights[index] }),
@@ -68,7 +69,7 @@ impl<P: ControlPoint> NurbsCurve<P> {
     ///
     /// # Errors
     ///
-    /// The errors of [`BSplineCurve::try_new`], [`Error::InvalidCount`] unless there is one
+    /// The errors of [`BSplineCurve::try_new`], [`hi_curve::Error::InvalidCount`] unless there is one
     /// weight per control point, and [`Error::InvalidWeight`] for a weight that is not finite
     /// and positive.
     pub fn try_new(
@@ -90,7 +91,7 @@ impl<P: ControlPoint> NurbsCurve<P> {
     ///
     /// # Errors
     ///
-    /// The errors of [`BSplineCurve::try_new_periodic`], [`Error::InvalidCount`] unless there
+    /// The errors of [`BSplineCurve::try_new_periodic`], [`hi_curve::Error::InvalidCount`] unless there
     /// is one weight per control point, and [`Error::InvalidWeight`] for a weight that is not
     /// finite and positive.
     pub fn try_new_periodic(

@@ -13,6 +13,7 @@ use hi_compare::bspline::BSplineCurve;
 use hi_compare::bspline_fit::{
     BSplineFit, BSplineFitOptions, BSplineSurface, EndCondition, Parameters, insert_knots,
 };
+use hi_curve::Error as CurveError;
 use hi_testkit::proptest_config;
 use proptest::prelude::*;
 
@@ -359,13 +360,22 @@ fn knot_insertion_leaves_curves_unchanged() {
     }
     // Errors, not panics.
     assert!(matches!(insert_knots(&curve, &[1.5]), Err(Error::InvalidValue { .. })));
-    assert!(matches!(insert_knots(&curve, &[f64::NAN]), Err(Error::NonFiniteParameter { .. })));
-    assert!(matches!(insert_knots(&curve, &[0.5, 0.5, 0.5]), Err(Error::InvalidCount { .. })));
+    assert!(matches!(
+        insert_knots(&curve, &[f64::NAN]),
+        Err(Error::Curve(CurveError::NonFiniteParameter { .. }))
+    ));
+    assert!(matches!(
+        insert_knots(&curve, &[0.5, 0.5, 0.5]),
+        Err(Error::Curve(CurveError::InvalidCount { .. }))
+    ));
     assert!(matches!(insert_knots(&closed, &[1.0]), Err(Error::InvalidValue { .. })));
     let quadratic =
         BSplineCurve::try_new(2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0], control[..3].to_vec())
             .unwrap();
-    assert!(matches!(insert_knots(&quadratic, &[0.5]), Err(Error::InvalidCount { .. })));
+    assert!(matches!(
+        insert_knots(&quadratic, &[0.5]),
+        Err(Error::Curve(CurveError::InvalidCount { .. }))
+    ));
 }
 
 #[test]
@@ -424,7 +434,8 @@ fn bad_input_is_an_error_naming_the_problem() {
     assert!(
         matches!(
             fit(ok.clone(), &bad_v),
-            Err(Error::ParametersNotDistinct { .. } | Error::ParametersNotIncreasing { .. })
+            Err(Error::Curve(CurveError::ParametersNotDistinct { .. })
+                | Error::ParametersNotIncreasing { .. })
         ),
         "repeated v parameter"
     );
@@ -455,7 +466,7 @@ fn bad_input_is_an_error_naming_the_problem() {
     );
     assert!(matches!(
         BSplineSurface::try_new(knots[1..].to_vec(), false, knots, false, net),
-        Err(Error::InvalidCount { .. })
+        Err(Error::Curve(CurveError::InvalidCount { .. }))
     ));
 }
 
@@ -468,8 +479,14 @@ fn meshes_sample_the_surface() {
     let tube = BSplineFit::try_new(tube_slices(5, 6), &options(true, true)).unwrap();
     let mesh = tube.surface().to_mesh(12, 8).unwrap();
     assert_eq!((mesh.n_vertices(), mesh.n_triangles()), (12 * 8, 2 * 12 * 8), "welded seams");
-    assert!(matches!(tube.surface().to_mesh(2, 8), Err(Error::InvalidCount { .. })));
-    assert!(matches!(fit.surface().to_mesh(0, 8), Err(Error::InvalidCount { .. })));
+    assert!(matches!(
+        tube.surface().to_mesh(2, 8),
+        Err(Error::Curve(CurveError::InvalidCount { .. }))
+    ));
+    assert!(matches!(
+        fit.surface().to_mesh(0, 8),
+        Err(Error::Curve(CurveError::InvalidCount { .. }))
+    ));
 }
 
 proptest! {

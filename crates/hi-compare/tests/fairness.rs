@@ -3,6 +3,7 @@
 //! ellipses, the harmonic curve of a square, and piecewise cubic Hobby curves checked against
 //! an independent quadrature over their segments.
 
+use hi_curve::Error as CurveError;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::{DVec2, DVec3};
@@ -228,9 +229,15 @@ fn straight_curve_has_no_bending_and_no_confinement() {
 #[test]
 fn rejects_bad_input() {
     let circle = Ellipse { a: 1.0, b: 1.0, phase: 0.0 };
-    assert!(matches!(fairness(&circle, &[DVec2::X], 2), Err(Error::InvalidCount { value: 2, .. })));
-    assert_eq!(fairness(&circle, &[], 100), Err(Error::Empty));
-    assert_eq!(fairness(&circle, &[DVec2::NAN], 100), Err(Error::NonFinitePoint { index: 0 }));
+    assert!(matches!(
+        fairness(&circle, &[DVec2::X], 2),
+        Err(Error::Curve(CurveError::InvalidCount { value: 2, .. }))
+    ));
+    assert_eq!(fairness(&circle, &[], 100), Err(Error::Curve(CurveError::Empty)));
+    assert_eq!(
+        fairness(&circle, &[DVec2::NAN], 100),
+        Err(Error::Curve(CurveError::NonFinitePoint { index: 0 }))
+    );
     assert!(curvature_plot(&circle, 1).is_err());
     // A single point: no hull, no confinement.
     assert_eq!(fairness(&circle, &[DVec2::X], 100).unwrap().confinement, None);

@@ -10,6 +10,7 @@
 
 use crate::bspline::{blossom, de_boor};
 use glam::DVec3;
+use hi_curve::Error as CurveError;
 
 use crate::{Error, ParamRange};
 
@@ -38,7 +39,7 @@ impl Axis {
     ///
     /// # Errors
     ///
-    /// [`Error::NonFiniteParameter`] for a non-finite knot, [`Error::InvalidCount`] for a
+    /// [`hi_curve::Error::NonFiniteParameter`] for a non-finite knot, [`hi_curve::Error::InvalidCount`] for a
     /// knot count that does not fit, fewer than 4 control points (open) or 3 (closed),
     /// decreasing knots, a knot of multiplicity above 3 inside the domain (4 at the ends of an
     /// open direction), or an empty domain.
@@ -49,19 +50,19 @@ impl Axis {
         name: &'static str,
     ) -> Result<Self, Error> {
         if let Some(&value) = knots.iter().find(|k| !k.is_finite()) {
-            return Err(Error::NonFiniteParameter { name, value });
+            return Err(Error::Curve(CurveError::NonFiniteParameter { name, value }));
         }
         let (needed, expected_knots) =
             if closed { (3, n_control + 1) } else { (DEGREE + 1, n_control + DEGREE + 1) };
         if n_control < needed {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: "number of control points along a direction",
                 value: n_control,
                 expected: if closed { "at least 3 (closed)" } else { "at least 4 (open)" },
-            });
+            }));
         }
         if knots.len() != expected_knots {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: name,
                 value: knots.len(),
                 expected: if closed {
@@ -69,14 +70,14 @@ impl Axis {
                 } else {
                     "4 more knots than control points (open)"
                 },
-            });
+            }));
         }
         if let Some(i) = knots.windows(2).position(|w| w[1] < w[0]) {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: "index of a decreasing knot",
                 value: i + 1,
                 expected: "knots in non-decreasing order",
-            });
+            }));
         }
         let ext = if closed {
             let n = n_control;
@@ -92,11 +93,11 @@ impl Axis {
         let n_ext = ext.len() - DEGREE - 1;
         let nonempty = |j: &usize| ext[*j] < ext[*j + 1];
         let Some(first_span) = (DEGREE..n_ext).find(nonempty) else {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: "number of non-empty knot intervals",
                 value: 0,
                 expected: "at least 1",
-            });
+            }));
         };
         let last_span = (DEGREE..n_ext).rev().find(nonempty).unwrap_or(first_span);
         // Multiplicity: at most 3 inside the domain (the curve stays continuous), 4 at the
@@ -106,11 +107,11 @@ impl Axis {
             run = if w[1] == w[0] { run + 1 } else { 1 };
             let at_end = !closed && (k < DEGREE || k + 1 >= n_ext);
             if run > DEGREE + usize::from(at_end) {
-                return Err(Error::InvalidCount {
+                return Err(Error::Curve(CurveError::InvalidCount {
                     what: "multiplicity of a knot",
                     value: run,
                     expected: "at most 3 (4 at the ends of an open direction)",
-                });
+                }));
             }
         }
         Ok(Self { closed, knots, n_control, ext, first_span, last_span })

@@ -7,6 +7,7 @@
 use crate::bspline::BSplineCurve;
 use glam::{DVec2, DVec3};
 use hi_bezier::BezierPatch;
+use hi_curve::Error as CurveError;
 
 use super::axis::{Axis, DEGREE};
 use super::patches::BezierPatchGrid;
@@ -61,8 +62,8 @@ impl BSplineSurface {
     /// # Errors
     ///
     /// [`Error::EmptyGrid`] for no control points, [`Error::RaggedGrid`] for rows of unequal
-    /// length, [`Error::NonFinitePoint`] for a non-finite control point,
-    /// [`Error::NonFiniteParameter`] for a non-finite knot and [`Error::InvalidCount`] when the
+    /// length, [`hi_curve::Error::NonFinitePoint`] for a non-finite control point,
+    /// [`hi_curve::Error::NonFiniteParameter`] for a non-finite knot and [`hi_curve::Error::InvalidCount`] when the
     /// knots do not fit the net (see [`BSplineSurface`]), decrease, repeat a value more than
     /// 3 times inside the domain, or leave the domain empty; also fewer than 4 control points
     /// along an open direction or 3 along a closed one.
@@ -288,7 +289,7 @@ impl BSplineSurface {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidCount`] if `n_u` or `n_v` is 0 (below 3 for a closed direction) or the
+    /// [`hi_curve::Error::InvalidCount`] if `n_u` or `n_v` is 0 (below 3 for a closed direction) or the
     /// grid has 2³² vertices or more.
     pub fn to_mesh(&self, n_u: usize, n_v: usize) -> Result<TriangleMesh, Error> {
         for (count, closed, what) in
@@ -296,21 +297,21 @@ impl BSplineSurface {
         {
             let least = if closed { 3 } else { 1 };
             if count < least {
-                return Err(Error::InvalidCount {
+                return Err(Error::Curve(CurveError::InvalidCount {
                     what,
                     value: count,
                     expected: if closed { "at least 3 (closed direction)" } else { "at least 1" },
-                });
+                }));
             }
         }
         let rows = if self.u.closed { n_u } else { n_u + 1 };
         let cols = if self.v.closed { n_v } else { n_v + 1 };
         if rows.checked_mul(cols).is_none_or(|n| n >= u32::MAX as usize / 2) {
-            return Err(Error::InvalidCount {
+            return Err(Error::Curve(CurveError::InvalidCount {
                 what: "mesh vertices",
                 value: rows.saturating_mul(cols),
                 expected: "fewer than 2^31",
-            });
+            }));
         }
         let ParamWindow {
             u: ParamRange { start: u0, end: u1 },
@@ -384,8 +385,8 @@ fn curve_on(axis: &Axis, control: Vec<DVec3>) -> BSplineCurve<DVec3> {
 ///
 /// # Errors
 ///
-/// [`Error::InvalidCount`] unless the curve is cubic, or if a knot would then be repeated more
-/// than 3 times; [`Error::NonFiniteParameter`] for a non-finite knot and
+/// [`hi_curve::Error::InvalidCount`] unless the curve is cubic, or if a knot would then be repeated more
+/// than 3 times; [`hi_curve::Error::NonFiniteParameter`] for a non-finite knot and
 /// [`Error::InvalidValue`] for one outside the domain.
 ///
 /// # Examples
@@ -406,11 +407,11 @@ pub fn insert_knots(
     new_knots: &[f64],
 ) -> Result<BSplineCurve<DVec3>, Error> {
     if curve.degree() != DEGREE {
-        return Err(Error::InvalidCount {
+        return Err(Error::Curve(CurveError::InvalidCount {
             what: "degree of the curve",
             value: curve.degree(),
             expected: "3 (cubic)",
-        });
+        }));
     }
     let closed = curve.is_closed();
     let control = curve.control_points();
@@ -419,7 +420,10 @@ pub fn insert_knots(
     let mut knots = curve.knots().to_vec();
     for &k in new_knots {
         if !k.is_finite() {
-            return Err(Error::NonFiniteParameter { name: "inserted knot", value: k });
+            return Err(Error::Curve(CurveError::NonFiniteParameter {
+                name: "inserted knot",
+                value: k,
+            }));
         }
         let inside = if closed { a <= k && k < b } else { a <= k && k <= b };
         if !inside {
