@@ -3,6 +3,8 @@
 //! and mesh files.
 
 use std::fmt;
+use std::io;
+use std::path::PathBuf;
 
 /// Everything that can be wrong with a mesh, a colour map, a mesh file, or the input of a
 /// subdivision scheme; `Display` gives one line naming the offending face, edge, vertex, value
@@ -132,8 +134,38 @@ pub enum Error {
         /// What is wrong, in words.
         problem: String,
     },
-    /// Writing or reading a mesh file failed (see [`crate::export`] and [`crate::PolyMesh::load`]).
-    File(crate::export::FileError),
+    /// The extension of a mesh file's path is not one the reader or writer knows
+    /// ([`crate::export`], [`crate::PolyMesh::load`]).
+    UnknownExtension {
+        /// The path.
+        path: PathBuf,
+        /// The extensions it knows, in words (`".obj, .gltf or .glb"`).
+        expected: &'static str,
+    },
+    /// Creating, writing or reading a mesh file failed.
+    Io {
+        /// The file, when known (writers given a bare `Write` do not know it).
+        path: Option<PathBuf>,
+        /// The kind of the underlying `std::io::Error`.
+        kind: io::ErrorKind,
+        /// Its message.
+        message: String,
+    },
+    /// The format is known, but this build leaves it out: `hi-mesh` was built without the
+    /// feature that reads or writes it.
+    FeatureDisabled {
+        /// The path.
+        path: PathBuf,
+        /// The Cargo feature of `hi-mesh` that adds the format (`"gltf"`, `"obj"`).
+        feature: &'static str,
+    },
+    /// A glTF or OBJ file could not be parsed (by `gltf` or `tobj`), or holds no triangle mesh.
+    Format {
+        /// The file, when known.
+        path: Option<PathBuf>,
+        /// What is wrong.
+        message: String,
+    },
 }
 
 impl fmt::Display for Error {
@@ -196,22 +228,26 @@ impl fmt::Display for Error {
             Error::InvalidPart { part, name, problem } => {
                 write!(f, "scene part {part} ({name:?}): {problem}")
             }
-            Error::File(e) => write!(f, "{e}"),
+            Error::UnknownExtension { path, expected } => {
+                write!(f, "{}: unknown mesh file extension: expected {expected}", path.display())
+            }
+            Error::FeatureDisabled { path, feature } => write!(
+                f,
+                "{}: this build of hi-mesh has no `{feature}` feature, which this format needs",
+                path.display()
+            ),
+            Error::Io { path: Some(path), message, .. } => {
+                write!(f, "{}: {message}", path.display())
+            }
+            Error::Io { path: None, message, .. } => write!(f, "mesh file I/O failed: {message}"),
+            Error::Format { path: Some(path), message } => {
+                write!(f, "{}: not a readable mesh file: {message}", path.display())
+            }
+            Error::Format { path: None, message } => {
+                write!(f, "not a readable mesh file: {message}")
+            }
         }
     }
 }
 
-impl std::error::Error for Error {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Error::File(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<crate::export::FileError> for Error {
-    fn from(e: crate::export::FileError) -> Self {
-        Error::File(e)
-    }
-}
+impl std::error::Error for Error {}

@@ -41,7 +41,7 @@
 //!
 //! Without them [`export::save`], [`export::load`], [`export::save_scene`] and
 //! [`export::load_scene`] still know every extension and answer a
-//! format left out with [`export::FileError::FeatureDisabled`], naming the feature.
+//! format left out with [`Error::FeatureDisabled`], naming the feature.
 
 mod colormap;
 mod error;

@@ -1,23 +1,23 @@
 // SPDX-License-Identifier: MIT
-//! The geometry of OBJ and OFF text files as a polygon soup: positions, per-vertex normals when
-//! the file gives one per vertex, and polygons of any size. It is the one parser of these two
-//! formats' geometry: [`PolyMesh`](crate::PolyMesh) builds its half-edge mesh from it, and
-//! `hi-scan` its scans. (Meshes with texture coordinates and several objects, as the exporters
-//! write them, are read by [`crate::export::load`] through `tobj`; `tobj` reads no bare `v`
-//! lines, the usual point-cloud OBJ, and splits a vertex shared by two groups in two, so it
-//! cannot give a mesh's topology.)
-//!
-//! Malformed input gives [`Error::Parse`] with the line and what is wrong; no input panics or
-//! makes the parser reserve more memory than its size justifies. Coordinates are read as
-//! written, NaN and infinities included: a [`PolyMesh`](crate::PolyMesh) refuses them, a scan
-//! drops their points.
+//! The geometry of OBJ and OFF text files as a polygon soup ([`PolygonSoup`]).
 
 use glam::DVec3;
 
 use crate::Error;
 use crate::text::{count, lines, number, show, strip_comment, tokens};
 
-/// The vertices and faces of an OBJ or OFF file (see the [module documentation](self)).
+/// The vertices and faces of an OBJ or OFF file: positions, per-vertex normals when the file
+/// gives one per vertex, and polygons of any size. It is the one parser of these two formats'
+/// geometry: [`PolyMesh`](crate::PolyMesh) builds its half-edge mesh from it, and `hi-scan` its
+/// scans. (Meshes with texture coordinates and several objects, as the exporters write them,
+/// are read by [`crate::export::load`] through `tobj`; `tobj` reads no bare `v` lines, the usual
+/// point-cloud OBJ, and splits a vertex shared by two groups in two, so it cannot give a mesh's
+/// topology.)
+///
+/// Malformed input gives [`Error::Parse`] with the line and what is wrong; no input panics or
+/// makes the parser reserve more memory than its size justifies. Coordinates are read as
+/// written, NaN and infinities included: a [`PolyMesh`](crate::PolyMesh) refuses them, a scan
+/// drops their points.
 ///
 /// # Examples
 ///

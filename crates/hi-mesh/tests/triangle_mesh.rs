@@ -84,7 +84,7 @@ fn a_format_left_out_names_its_feature() {
         hi_mesh::export::load(&path).expect_err("no OBJ reader")
     };
     assert!(
-        matches!(&error, Error::File(hi_mesh::export::FileError::FeatureDisabled { feature: f, .. }) if *f == feature),
+        matches!(&error, Error::FeatureDisabled { feature: f, .. } if *f == feature),
         "{error}"
     );
     assert!(error.to_string().contains(&format!("`{feature}` feature")), "{error}");

@@ -7,7 +7,7 @@ use std::io::{self, Write};
 use std::path::PathBuf;
 
 use hi_mesh::Error;
-use hi_mesh::export::{self, Connectivity, FileError, MeshFormat};
+use hi_mesh::export::{self, Connectivity, MeshFormat};
 use hi_mesh::{ColorMap, ColorScale, TriangleMesh};
 use hi_surface::{CurvatureColoring, CurvatureQuantity, MeshOptions, Seam, sphere, torus};
 use hi_surface::{ParamRange, ParamWindow};
@@ -183,12 +183,9 @@ fn unknown_extensions_are_errors() {
     for name in ["mesh.stl", "mesh", "mesh.gltf.txt", "mesh.bin"] {
         let path = tmp(name);
         let e = export::save(&mesh, &path).unwrap_err();
-        assert!(matches!(e, Error::File(FileError::UnknownExtension { .. })), "{name}: {e:?}");
+        assert!(matches!(e, Error::UnknownExtension { .. }), "{name}: {e:?}");
         assert!(!path.exists() || name == "mesh.bin", "{name}: nothing written");
-        assert!(
-            matches!(export::load(&path), Err(Error::File(FileError::UnknownExtension { .. }))),
-            "{name}"
-        );
+        assert!(matches!(export::load(&path), Err(Error::UnknownExtension { .. })), "{name}");
         assert!(e.to_string().contains(name) && !e.to_string().contains('\n'), "{e}");
     }
     assert_eq!(MeshFormat::try_from_path("X.Obj".as_ref()).unwrap(), MeshFormat::Obj, "any case");
@@ -203,7 +200,7 @@ fn unwritable_paths_are_errors() {
         let path = missing_dir.join(format!("mesh.{ext}"));
         let e = export::save(&mesh, &path).unwrap_err();
         match &e {
-            Error::File(FileError::Io { path: Some(p), kind, .. }) => {
+            Error::Io { path: Some(p), kind, .. } => {
                 assert_eq!(p, &path, "{ext}: names the file");
                 assert_eq!(*kind, io::ErrorKind::NotFound, "{ext}");
             }
@@ -215,7 +212,7 @@ fn unwritable_paths_are_errors() {
     let dir_path = tmp("a-directory.glb");
     std::fs::create_dir_all(&dir_path).unwrap();
     let e = export::save(&mesh, &dir_path).unwrap_err();
-    assert!(matches!(e, Error::File(FileError::Io { .. })), "{e:?}");
+    assert!(matches!(e, Error::Io { .. }), "{e:?}");
 }
 
 /// A writer that fails after `left` bytes.
@@ -248,14 +245,7 @@ fn failing_writers_are_errors() {
         let bin = export::write_gltf(&mesh, Vec::new(), Failing { left }, "x.bin");
         for r in [glb, obj, gltf, bin] {
             assert!(
-                matches!(
-                    r,
-                    Err(Error::File(FileError::Io {
-                        path: None,
-                        kind: io::ErrorKind::StorageFull,
-                        ..
-                    }))
-                ),
+                matches!(r, Err(Error::Io { path: None, kind: io::ErrorKind::StorageFull, .. })),
                 "{left}: {r:?}"
             );
         }
@@ -267,18 +257,12 @@ fn unreadable_files_are_errors() {
     let missing = tmp("missing.glb");
     let _ = std::fs::remove_file(&missing);
     assert!(
-        matches!(
-            export::load(&missing),
-            Err(Error::File(FileError::Io { kind: io::ErrorKind::NotFound, .. }))
-        ),
+        matches!(export::load(&missing), Err(Error::Io { kind: io::ErrorKind::NotFound, .. })),
         "missing glb"
     );
     let missing_obj = tmp("missing.obj");
     let _ = std::fs::remove_file(&missing_obj);
-    assert!(
-        matches!(export::load(&missing_obj), Err(Error::File(FileError::Io { .. }))),
-        "missing obj"
-    );
+    assert!(matches!(export::load(&missing_obj), Err(Error::Io { .. })), "missing obj");
     for (name, content) in [
         ("garbage.glb", "not a glb"),
         ("garbage.gltf", "{ nope"),
@@ -287,7 +271,7 @@ fn unreadable_files_are_errors() {
         let path = tmp(name);
         std::fs::write(&path, content).unwrap();
         let e = export::load(&path).unwrap_err();
-        assert!(matches!(e, Error::File(FileError::Format { path: Some(_), .. })), "{name}: {e:?}");
+        assert!(matches!(e, Error::Format { path: Some(_), .. }), "{name}: {e:?}");
         assert!(!e.to_string().contains('\n'), "{name}: one line: {e}");
     }
     // A .gltf whose buffer is missing.

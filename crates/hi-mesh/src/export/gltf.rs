@@ -285,7 +285,7 @@ fn encode(parts: &[Part<'_>], uri: Option<String>) -> Encoded {
 ///
 /// # Errors
 ///
-/// [`super::FileError::Io`] when writing fails.
+/// [`Error::Io`](crate::Error::Io) when writing fails.
 ///
 /// # Examples
 ///
@@ -321,7 +321,7 @@ pub fn write_gltf<W: Write, B: Write>(
 /// # Errors
 ///
 /// Those of [`check_part_names`](super::check_part_names) (no parts, a name empty, repeated
-/// or not printable on one line); [`super::FileError::Io`] when writing fails.
+/// or not printable on one line); [`Error::Io`](crate::Error::Io) when writing fails.
 ///
 /// # Examples
 ///
@@ -373,7 +373,7 @@ pub(super) fn write_gltf_parts<W: Write, B: Write>(
 /// # Errors
 ///
 /// [`Error::InvalidCount`] if the file would exceed the 4 GiB limit of the format;
-/// [`super::FileError::Io`] when writing fails.
+/// [`Error::Io`](crate::Error::Io) when writing fails.
 ///
 /// # Examples
 ///
@@ -499,7 +499,7 @@ pub(super) fn write_glb_parts<W: Write>(parts: &[Part<'_>], mut writer: W) -> Re
 ///
 /// # Errors
 ///
-/// [`FileError::Format`](super::FileError::Format) for a file the `gltf` crate rejects, whose
+/// [`Error::Format`](crate::Error::Format) for a file the `gltf` crate rejects, whose
 /// primitive names a `POSITION` accessor the file does not have, or whose buffer has a relative
 /// URI that is not UTF-8 once percent-decoded (the `gltf` crate's import panics on it).
 ///

@@ -80,7 +80,7 @@ impl MeshFormat {
     ///
     /// # Errors
     ///
-    /// [`FileError::UnknownExtension`] for any other extension or none.
+    /// [`Error::UnknownExtension`] for any other extension or none.
     ///
     /// # Examples
     ///
@@ -96,11 +96,9 @@ impl MeshFormat {
             Some("obj") => Ok(MeshFormat::Obj),
             Some("gltf") => Ok(MeshFormat::Gltf),
             Some("glb") => Ok(MeshFormat::Glb),
-            _ => Err(FileError::UnknownExtension {
-                path: path.to_path_buf(),
-                expected: MESH_EXTENSIONS,
+            _ => {
+                Err(Error::UnknownExtension { path: path.to_path_buf(), expected: MESH_EXTENSIONS })
             }
-            .into()),
         }
     }
 
@@ -115,91 +113,24 @@ impl MeshFormat {
     }
 }
 
-/// What went wrong with a mesh file ([`Error::File`]).
-#[derive(Clone, Debug, PartialEq)]
-#[non_exhaustive]
-pub enum FileError {
-    /// The extension of the path is not one the reader or writer knows.
-    UnknownExtension {
-        /// The path.
-        path: PathBuf,
-        /// The extensions it knows, in words (`".obj, .gltf or .glb"`).
-        expected: &'static str,
-    },
-    /// Creating, writing or reading a file failed.
-    Io {
-        /// The file, when known (writers given a bare [`Write`] do not know it).
-        path: Option<PathBuf>,
-        /// The kind of the underlying [`io::Error`].
-        kind: io::ErrorKind,
-        /// Its message.
-        message: String,
-    },
-    /// The format is known, but this build leaves it out: `hi-mesh` was built without the
-    /// feature that reads or writes it.
-    FeatureDisabled {
-        /// The path.
-        path: PathBuf,
-        /// The Cargo feature of `hi-mesh` that adds the format (`"gltf"`, `"obj"`).
-        feature: &'static str,
-    },
-    /// A file could not be parsed, or holds no triangle mesh with normals and UVs.
-    Format {
-        /// The file, when known.
-        path: Option<PathBuf>,
-        /// What is wrong.
-        message: String,
-    },
-}
-
-impl fmt::Display for FileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            FileError::UnknownExtension { path, expected } => {
-                write!(f, "{}: unknown mesh file extension: expected {expected}", path.display())
-            }
-            FileError::FeatureDisabled { path, feature } => write!(
-                f,
-                "{}: this build of hi-mesh has no `{feature}` feature, which this format needs",
-                path.display()
-            ),
-            FileError::Io { path: Some(path), message, .. } => {
-                write!(f, "{}: {message}", path.display())
-            }
-            FileError::Io { path: None, message, .. } => {
-                write!(f, "mesh file I/O failed: {message}")
-            }
-            FileError::Format { path: Some(path), message } => {
-                write!(f, "{}: not a readable mesh file: {message}", path.display())
-            }
-            FileError::Format { path: None, message } => {
-                write!(f, "not a readable mesh file: {message}")
-            }
-        }
-    }
-}
-
-impl std::error::Error for FileError {}
-
 /// An [`io::Error`] as an [`Error`], with the file when known.
 pub(crate) fn io_error(e: &io::Error, path: Option<&Path>) -> Error {
-    FileError::Io { path: path.map(Path::to_path_buf), kind: e.kind(), message: e.to_string() }
-        .into()
+    Error::Io { path: path.map(Path::to_path_buf), kind: e.kind(), message: e.to_string() }
 }
 
 #[cfg(any(feature = "gltf", feature = "obj"))]
 fn format_error(message: impl Into<String>, path: Option<&Path>) -> Error {
-    FileError::Format { path: path.map(Path::to_path_buf), message: message.into() }.into()
+    Error::Format { path: path.map(Path::to_path_buf), message: message.into() }
 }
 
 /// Fills in the path of a file error that lacks one.
 pub(crate) fn at_path(e: Error, at: &Path) -> Error {
     match e {
-        Error::File(FileError::Io { path: None, kind, message }) => {
-            FileError::Io { path: Some(at.to_path_buf()), kind, message }.into()
+        Error::Io { path: None, kind, message } => {
+            Error::Io { path: Some(at.to_path_buf()), kind, message }
         }
-        Error::File(FileError::Format { path: None, message }) => {
-            FileError::Format { path: Some(at.to_path_buf()), message }.into()
+        Error::Format { path: None, message } => {
+            Error::Format { path: Some(at.to_path_buf()), message }
         }
         other => other,
     }
@@ -216,7 +147,7 @@ fn create(path: &Path) -> Result<BufWriter<File>, Error> {
 ///
 /// # Errors
 ///
-/// [`FileError::UnknownExtension`]; [`FileError::Io`] naming the file when it cannot be
+/// [`Error::UnknownExtension`]; [`Error::Io`] naming the file when it cannot be
 /// created or written (no such directory, no permission); the errors of the writers.
 ///
 /// # Examples
@@ -286,10 +217,10 @@ fn save_parts(parts: &[NamedMesh<'_>], path: &Path) -> Result<Vec<PathBuf>, Erro
     }
 }
 
-/// [`FileError::FeatureDisabled`] for `path`.
+/// [`Error::FeatureDisabled`] for `path`.
 #[cfg(not(all(feature = "gltf", feature = "obj")))]
 fn feature_disabled(path: &Path, feature: &'static str) -> Error {
-    FileError::FeatureDisabled { path: path.to_path_buf(), feature }.into()
+    Error::FeatureDisabled { path: path.to_path_buf(), feature }
 }
 
 /// A file name as a relative URI: every byte but ASCII letters, digits and `-._~` as `%XX`.
@@ -315,7 +246,7 @@ fn percent_encode(name: &str) -> String {
 ///
 /// # Errors
 ///
-/// [`FileError::UnknownExtension`], [`FileError::Io`] (a missing file), [`FileError::Format`]
+/// [`Error::UnknownExtension`], [`Error::Io`] (a missing file), [`Error::Format`]
 /// (not parseable, no triangles), and the errors of
 /// [`TriangleMesh::try_new`] for what the file holds (normals not of unit length, indices out
 /// of range).

@@ -14,7 +14,7 @@ use crate::{Error, TriangleMesh};
 ///
 /// # Errors
 ///
-/// [`super::FileError::Io`] when writing fails.
+/// [`Error::Io`](crate::Error::Io) when writing fails.
 ///
 /// # Examples
 ///
@@ -46,7 +46,7 @@ pub fn write_obj<W: Write>(mesh: &TriangleMesh, writer: W) -> Result<(), Error> 
 /// Those of [`check_part_names`](super::check_part_names) (no parts, a name empty, repeated
 /// or not printable on one line); [`Error::InvalidPart`] when some parts have vertex colours
 /// and others do not (OBJ gives colours to every vertex or to none; glTF keeps them per part);
-/// [`super::FileError::Io`] when writing fails.
+/// [`Error::Io`](crate::Error::Io) when writing fails.
 ///
 /// # Examples
 ///

@@ -125,7 +125,7 @@ pub(super) fn check_scene(parts: &[NamedMesh<'_>]) -> Result<(), Error> {
 ///
 /// # Errors
 ///
-/// [`FileError::UnknownExtension`](super::FileError::UnknownExtension); those of
+/// [`Error::UnknownExtension`](crate::Error::UnknownExtension); those of
 /// [`check_part_names`]; for OBJ, [`Error::InvalidPart`] when some parts have vertex colours
 /// and others not (OBJ gives colours to every vertex or to none); as [`save`](super::save) for
 /// files that cannot be written.

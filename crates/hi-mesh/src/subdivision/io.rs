@@ -12,7 +12,7 @@ use std::io::Write;
 use std::path::Path;
 
 use super::PolyMesh;
-use crate::export::{FileError, io_error};
+use crate::export::io_error;
 use crate::{Error, PolygonSoup};
 
 fn io_err(path: &Path, e: &std::io::Error) -> Error {
@@ -64,7 +64,7 @@ impl PolyMesh {
     ///
     /// # Errors
     ///
-    /// [`Error::File`] if writing fails.
+    /// [`Error::Io`] if writing fails.
     pub fn write_obj<W: Write>(&self, mut writer: W) -> Result<(), Error> {
         let e = |e: std::io::Error| io_error(&e, None);
         writeln!(writer, "# {} vertices, {} faces", self.n_vertices(), self.n_faces())
@@ -86,7 +86,7 @@ impl PolyMesh {
     ///
     /// # Errors
     ///
-    /// [`Error::File`] if writing fails.
+    /// [`Error::Io`] if writing fails.
     pub fn write_off<W: Write>(&self, mut writer: W) -> Result<(), Error> {
         let e = |e: std::io::Error| io_error(&e, None);
         writeln!(writer, "OFF\n{} {} {}", self.n_vertices(), self.n_faces(), self.n_edges())
@@ -108,7 +108,7 @@ impl PolyMesh {
     ///
     /// # Errors
     ///
-    /// [`Error::File`] if the file cannot be read or its extension is neither; then the
+    /// [`Error::Io`] if the file cannot be read, [`Error::UnknownExtension`] if its extension is neither; then the
     /// errors of [`PolyMesh::try_from_obj_str`] or [`PolyMesh::try_from_off_str`].
     pub fn load(path: impl AsRef<Path>) -> Result<Self, Error> {
         let path = path.as_ref();
@@ -126,7 +126,7 @@ impl PolyMesh {
     ///
     /// # Errors
     ///
-    /// [`Error::File`] if the extension is neither or writing fails.
+    /// [`Error::UnknownExtension`] if the extension is neither, [`Error::Io`] if writing fails.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), Error> {
         let path = path.as_ref();
         let ext = extension(path)?;
@@ -142,7 +142,6 @@ fn extension(path: &Path) -> Result<String, Error> {
     if ext == "obj" || ext == "off" {
         Ok(ext)
     } else {
-        Err(FileError::UnknownExtension { path: path.to_path_buf(), expected: ".obj or .off" }
-            .into())
+        Err(Error::UnknownExtension { path: path.to_path_buf(), expected: ".obj or .off" }.into())
     }
 }

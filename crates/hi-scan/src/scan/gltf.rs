@@ -59,7 +59,7 @@ fn check_glb_header(bytes: &[u8]) -> Result<(), &'static str> {
 fn read(bytes: &[u8], base: Option<&Path>) -> Result<Scan, String> {
     let gltf = hi_mesh::export::parse_gltf(bytes).map_err(|e| match e {
         // The scan error names the format already.
-        hi_mesh::Error::File(hi_mesh::export::FileError::Format { message, .. }) => {
+        hi_mesh::Error::Format { message, .. } => {
             message.strip_prefix("glTF: ").map_or(message.clone(), str::to_owned)
         }
         other => other.to_string(),
