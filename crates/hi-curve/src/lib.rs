@@ -82,7 +82,7 @@ pub use error::Error;
 pub use fourier::Fourier;
 pub use hi_bezier::{ControlPoint, ParamRange, ParamWindow};
 pub use nonuniform::{NonUniformCurve, NonUniformVariant, chord_length_params};
-pub use resample::ReductionError;
+pub use resample::ReductionDeviation;
 pub use trigonometric::TrigonometricCurve;
 
 /// The Rust examples of the project README, run as doctests so they stay true.

@@ -19,7 +19,7 @@ use crate::{ControlPoint, Error, HarmonicCurve};
 /// by Theorem 5.3, and both are then 0.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct ReductionError {
+pub struct ReductionDeviation {
     /// max |X − Y| measured on a fine uniform grid.
     pub max_deviation: f64,
     /// A guaranteed upper bound of maxₜ |X(t) − Y(t)|.
@@ -77,14 +77,14 @@ impl<P: ControlPoint> HarmonicCurve<P> {
     ///
     /// For N ≥ n (insertion of m = N − n points) the new curve is identical to the old one,
     /// for every n and N (Thm 5.3), and the error is zero. For N < n (reduction, §5.4) the new
-    /// curve passes through the N resampled points only; the returned [`ReductionError`] says
+    /// curve passes through the N resampled points only; the returned [`ReductionDeviation`] says
     /// how far it strays. Where j·n/N is an integer the point is copied exactly (yⱼ = x_{jn/N}).
     ///
     /// # Errors
     ///
     /// [`Error::InvalidCount`] unless 1 ≤ N ≤ 2²⁸.
     #[doc(alias = "theorem 5.3")]
-    pub fn resample(&self, n_new: usize) -> Result<(Self, ReductionError), Error> {
+    pub fn resample(&self, n_new: usize) -> Result<(Self, ReductionDeviation), Error> {
         check_count("number of points", n_new)?;
         let n = self.n();
         let mut points = self.fourier().sample_uniform(n_new);
@@ -96,11 +96,11 @@ impl<P: ControlPoint> HarmonicCurve<P> {
         }
         let curve = Self::try_new(points)?;
         if n_new >= n {
-            return Ok((curve, ReductionError::default()));
+            return Ok((curve, ReductionDeviation::default()));
         }
         let diff = self.fourier().sub(curve.fourier());
         let (max_deviation, upper_bound) = diff.sup_norm();
-        Ok((curve, ReductionError { max_deviation, upper_bound }))
+        Ok((curve, ReductionDeviation { max_deviation, upper_bound }))
     }
 
     /// Theorem 5.3 with m ≥ 0 inserted points: the same curve through n + m points (exact).

@@ -7,7 +7,7 @@
 //! texel (rows − i, j + cols/2)) and keep it.
 
 use glam::DVec3;
-use hi_curve::ReductionError;
+use hi_curve::ReductionDeviation;
 
 use crate::{Error, GeometryImage};
 
@@ -124,14 +124,14 @@ impl GeometryImage {
     /// # Errors
     ///
     /// [`Error::InvalidResolution`] for a side under 2 or too many texels.
-    pub fn resampled(&self, rows: usize, cols: usize) -> Result<(Self, ReductionError), Error> {
+    pub fn resampled(&self, rows: usize, cols: usize) -> Result<(Self, ReductionDeviation), Error> {
         crate::image::check_resolution(rows, cols)?;
         let surface = self.surface()?;
         // Theorem 5.3 on both axes at once: the new texels are the surface's values on the new
         // grid (by FFT).
         let image = Self::try_new(rows, cols, surface.sample_uniform(rows, cols, 0, 0)?.values)?;
         if rows >= self.rows() && cols >= self.cols() {
-            return Ok((image, ReductionError { max_deviation: 0.0, upper_bound: 0.0 }));
+            return Ok((image, ReductionDeviation { max_deviation: 0.0, upper_bound: 0.0 }));
         }
         // The deviation D = p − q is a trigonometric polynomial of degree at most M in u and N
         // in v, and q is exactly the surface through its samples on this image's grid (its
@@ -150,7 +150,7 @@ impl GeometryImage {
         let slack = std::f64::consts::PI * (deg_u as f64 / l_u as f64 + deg_v as f64 / l_v as f64);
         Ok((
             image,
-            ReductionError { max_deviation: measured, upper_bound: measured / (1.0 - slack) },
+            ReductionDeviation { max_deviation: measured, upper_bound: measured / (1.0 - slack) },
         ))
     }
 }

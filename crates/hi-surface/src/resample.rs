@@ -9,7 +9,7 @@
 
 use std::f64::consts::PI;
 
-use hi_curve::{ControlPoint, HarmonicCurve, ReductionError};
+use hi_curve::{ControlPoint, HarmonicCurve, ReductionDeviation};
 
 use crate::{Error, HarmonicSurface};
 
@@ -56,21 +56,21 @@ impl<P: ControlPoint> HarmonicSurface<P> {
 
     /// Theorem 5.3 along `axis`: the surface through N samples per line of that axis. For N at
     /// least the current size this is the same surface (exact insertion); for fewer it is a
-    /// reduction, whose error is returned (see [`ReductionError`], here measured over the whole
+    /// reduction, whose error is returned (see [`ReductionDeviation`], here measured over the whole
     /// surface on a grid of at least 32 samples per unit of degree in each direction).
     ///
     /// # Errors
     ///
     /// [`Error::Curve`] with `InvalidCount` unless 1 ≤ N ≤ 2²⁸.
     #[doc(alias = "theorem 5.3")]
-    pub fn resample(&self, axis: Axis, n_new: usize) -> Result<(Self, ReductionError), Error> {
+    pub fn resample(&self, axis: Axis, n_new: usize) -> Result<(Self, ReductionDeviation), Error> {
         let res = self.map_lines(axis, |c| Ok(c.resample(n_new)?.0))?;
         let old = match axis {
             Axis::U => self.m(),
             Axis::V => self.n(),
         };
         if n_new >= old {
-            return Ok((res, ReductionError::default()));
+            return Ok((res, ReductionDeviation::default()));
         }
         let err = self.deviation_from(&res)?;
         Ok((res, err))
@@ -78,7 +78,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
 
     /// max |p − q| over the surfaces' common period, measured on a fine uniform grid, with a
     /// guaranteed bound from Bernstein's inequality in each direction.
-    fn deviation_from(&self, other: &Self) -> Result<ReductionError, Error> {
+    fn deviation_from(&self, other: &Self) -> Result<ReductionDeviation, Error> {
         let deg_u = self.degrees().0.max(other.degrees().0).max(1);
         let deg_v = self.degrees().1.max(other.degrees().1).max(1);
         let (l_u, l_v) = (32 * deg_u, 32 * deg_v);
@@ -88,7 +88,7 @@ impl<P: ControlPoint> HarmonicSurface<P> {
             a.values.iter().zip(&b.values).map(|(x, y)| (*x - *y).norm()).fold(0.0, f64::max);
         // |D| ≤ grid max + (h_u/2)|D_u| + (h_v/2)|D_v| ≤ grid max + π(M_u/L_u + M_v/L_v)·max|D|.
         let slack = PI * (deg_u as f64 / l_u as f64 + deg_v as f64 / l_v as f64);
-        Ok(ReductionError { max_deviation, upper_bound: max_deviation / (1.0 - slack) })
+        Ok(ReductionDeviation { max_deviation, upper_bound: max_deviation / (1.0 - slack) })
     }
 
     /// Theorem 5.3 on both axes: the same surface through an M×N grid (M ≥ m, N ≥ n).

@@ -10,7 +10,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
-use hi_curve::ReductionError;
+use hi_curve::ReductionDeviation;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::fit::{
     Boundary, DroppedPart, FitErrors, PartReport, Progress, RowPoints, Stage, UNREACHED,
@@ -571,7 +571,7 @@ struct Summary<'a> {
     mesh: Option<MeshOut>,
     regularisation: &'a RegularisationReport,
     stages: &'a [Stage],
-    reduction: Option<&'a ReductionError>,
+    reduction: Option<&'a ReductionDeviation>,
     errors: Option<DistancesOut>,
     both_ways: Option<BothWaysOut>,
     hausdorff: Option<HausdorffOut>,

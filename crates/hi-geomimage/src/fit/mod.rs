@@ -40,7 +40,7 @@ use std::borrow::Cow;
 use std::time::Instant;
 
 use glam::DVec3;
-use hi_curve::ReductionError;
+use hi_curve::ReductionDeviation;
 use hi_scan::cloud::{cell_for_count, summarise};
 use hi_scan::distance::{Distances, bounding_diagonal};
 use hi_scan::implicit::{CELL, MovingLeastSquares, PointSurface};
@@ -314,7 +314,7 @@ pub struct PartReport {
     /// The regularisation applied.
     pub regularisation: RegularisationReport,
     /// The error of the reduction, if one was made.
-    pub reduction: Option<ReductionError>,
+    pub reduction: Option<ReductionDeviation>,
     /// Both ways: the scan points nearest this part's surface to it, and its samples to the
     /// scan, if measured (summaries: the per-point distances are in [`FitReport::errors`]).
     pub errors: Option<FitErrors>,
@@ -362,7 +362,7 @@ pub struct FitReport {
     /// The grid of the largest part's final surface (rows, columns).
     pub surface_size: (usize, usize),
     /// The error of the largest part's reduction, if one was made.
-    pub reduction: Option<ReductionError>,
+    pub reduction: Option<ReductionDeviation>,
     /// Distances from every scan point to the nearest surface, if measured.
     pub errors: Option<Distances>,
     /// Both ways, over every part, if measured (its scan → surface without the per-point
@@ -971,7 +971,7 @@ struct Surfaced {
     surface: HarmonicSurface<DVec3>,
     image: GeometryImage,
     regularisation: RegularisationReport,
-    reduction: Option<ReductionError>,
+    reduction: Option<ReductionDeviation>,
 }
 
 /// Smoothing, regularisation (`how`) and reduction of a part's image, and its surface.
