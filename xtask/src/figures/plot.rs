@@ -466,7 +466,7 @@ impl Plot {
     /// own or one with given key points (labelled by `y_label`).
     fn draw_marks<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
         &self,
-        mut chart: ChartContext<'_, SVGBackend<'_>, Cartesian2d<RangedCoordf64, Y>>,
+        mut chart: Chart<'_, '_, Y>,
         (xr, yr): ((f64, f64), (f64, f64)),
         (plot_w, plot_h): (u32, u32),
         y_label: impl Fn(&f64) -> String,
@@ -483,100 +483,51 @@ impl Plot {
         let unit = DVec2::new((xr.1 - xr.0) / f64::from(plot_w), (yr.1 - yr.0) / f64::from(plot_h));
 
         if axes {
-            let (x_desc, y_desc) = match &self.kind {
-                Kind::Function { x_desc, y_desc } => (x_desc.as_str(), y_desc.as_str()),
-                Kind::Plane | Kind::Projection => ("x", "y"),
-            };
-            let tick_font = ("sans-serif", font(12.0)).into_font().color(&AXIS);
-            let desc_font = ("serif", font(15.0)).into_font().style(FontStyle::Italic).color(&INK);
-            let formatter = |v: &f64| tick_label(*v);
-            let y_formatter = |v: &f64| y_label(v);
-            chart
-                .configure_mesh()
-                .x_desc(x_desc)
-                .y_desc(y_desc)
-                .x_labels(if matches!(self.kind, Kind::Function { .. }) { 11 } else { 7 })
-                .y_labels(7)
-                .max_light_lines(0)
-                .bold_line_style(GRID.stroke_width(px(1.0)))
-                .axis_style(AXIS.stroke_width(px(1.0)))
-                .set_all_tick_mark_size(px(4.0))
-                .label_style(tick_font)
-                .axis_desc_style(desc_font)
-                .x_label_formatter(&formatter)
-                .y_label_formatter(&y_formatter)
-                .draw()?;
+            self.draw_axes(&mut chart, y_label)?;
         }
 
         let mut marks: Vec<&Mark> = self.marks.iter().collect();
         marks.sort_by_key(|m| m.layer());
         for mark in marks {
-            match mark {
-                Mark::Extent { .. } => {}
-                Mark::Guide { vertical, at } => {
-                    let line = if *vertical {
-                        vec![(*at, yr.0), (*at, yr.1)]
-                    } else {
-                        vec![(xr.0, *at), (xr.1, *at)]
-                    };
-                    chart.draw_series(std::iter::once(PathElement::new(
-                        line,
-                        GUIDE.stroke_width(px(1.0)),
-                    )))?;
-                }
-                Mark::Line { points, pen, .. } => {
-                    let pieces = match pen.dash {
-                        Some((on, off)) => {
-                            dash(points, f64::from(px(on)), f64::from(px(off)), unit)
-                        }
-                        None => vec![points.clone()],
-                    };
-                    let style = pen.style();
-                    let series = pieces.into_iter().map(move |piece| {
-                        PathElement::new(
-                            piece.into_iter().map(|p| (p.x, p.y)).collect::<Vec<_>>(),
-                            style,
-                        )
-                    });
-                    chart.draw_series(series)?;
-                }
-                Mark::Points { points, marker, .. } => {
-                    let style = marker.style();
-                    let radius = px(marker.radius);
-                    chart.draw_series(
-                        points.iter().map(move |p| Circle::new((p.x, p.y), radius, style)),
-                    )?;
-                }
-                Mark::Labels { points, names, closed } => {
-                    let style =
-                        TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
-                            .color(&INK)
-                            .pos(Pos::new(HPos::Center, VPos::Center));
-                    let offsets = label_offsets(points, names, *closed, unit);
-                    let texts = points.iter().zip(names).zip(offsets).map(|((p, name), off)| {
-                        EmptyElement::at((p.x, p.y))
-                            + Text::new(name.clone(), (off.0, off.1), style.clone())
-                    });
-                    chart.draw_series(texts)?;
-                }
-                Mark::Note { at, text, offset, color } => {
-                    let style =
-                        TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
-                            .color(color)
-                            .pos(Pos::new(HPos::Center, VPos::Center));
-                    let scale = f64::from(SCALE);
-                    let off =
-                        ((offset.0 * scale).round() as i32, (-offset.1 * scale).round() as i32);
-                    chart.draw_series(std::iter::once(
-                        EmptyElement::at((at.x, at.y)) + Text::new(text.clone(), off, style),
-                    ))?;
-                }
-            }
+            draw_mark(&mut chart, mark, (xr, yr), unit)?;
         }
 
         if let Some(position) = self.legend {
             self.draw_legend(&chart.plotting_area().strip_coord_spec(), position)?;
         }
+        Ok(())
+    }
+
+    /// Draws the axes on `chart`: the grid, ticks and their labels (the y ones by `y_label`),
+    /// and the axes' names.
+    fn draw_axes<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
+        &self,
+        chart: &mut Chart<'_, '_, Y>,
+        y_label: impl Fn(&f64) -> String,
+    ) -> Result<()> {
+        let (x_desc, y_desc) = match &self.kind {
+            Kind::Function { x_desc, y_desc } => (x_desc.as_str(), y_desc.as_str()),
+            Kind::Plane | Kind::Projection => ("x", "y"),
+        };
+        let tick_font = ("sans-serif", font(12.0)).into_font().color(&AXIS);
+        let desc_font = ("serif", font(15.0)).into_font().style(FontStyle::Italic).color(&INK);
+        let formatter = |v: &f64| tick_label(*v);
+        let y_formatter = |v: &f64| y_label(v);
+        chart
+            .configure_mesh()
+            .x_desc(x_desc)
+            .y_desc(y_desc)
+            .x_labels(if matches!(self.kind, Kind::Function { .. }) { 11 } else { 7 })
+            .y_labels(7)
+            .max_light_lines(0)
+            .bold_line_style(GRID.stroke_width(px(1.0)))
+            .axis_style(AXIS.stroke_width(px(1.0)))
+            .set_all_tick_mark_size(px(4.0))
+            .label_style(tick_font)
+            .axis_desc_style(desc_font)
+            .x_label_formatter(&formatter)
+            .y_label_formatter(&y_formatter)
+            .draw()?;
         Ok(())
     }
 
@@ -778,6 +729,81 @@ impl Plot {
             Mark::Guide { .. } | Mark::Extent { .. } => true,
         })
     }
+}
+
+/// The chart the marks are drawn on: plotters' own x coordinate, and the y coordinate `Y`.
+type Chart<'a, 'b, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, Y>>;
+
+/// Draws one mark on `chart`, whose ranges are `(xr, yr)` and whose data units per drawing
+/// unit are `unit`.
+fn draw_mark<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
+    chart: &mut Chart<'_, '_, Y>,
+    mark: &Mark,
+    (xr, yr): ((f64, f64), (f64, f64)),
+    unit: DVec2,
+) -> Result<()> {
+    match mark {
+        Mark::Extent { .. } => {}
+        Mark::Guide { vertical, at } => {
+            let line = if *vertical {
+                vec![(*at, yr.0), (*at, yr.1)]
+            } else {
+                vec![(xr.0, *at), (xr.1, *at)]
+            };
+            chart.draw_series(std::iter::once(PathElement::new(
+                line,
+                GUIDE.stroke_width(px(1.0)),
+            )))?;
+        }
+        Mark::Line { points, pen, .. } => {
+            let pieces = match pen.dash {
+                Some((on, off)) => {
+                    dash(points, f64::from(px(on)), f64::from(px(off)), unit)
+                }
+                None => vec![points.clone()],
+            };
+            let style = pen.style();
+            let series = pieces.into_iter().map(move |piece| {
+                PathElement::new(
+                    piece.into_iter().map(|p| (p.x, p.y)).collect::<Vec<_>>(),
+                    style,
+                )
+            });
+            chart.draw_series(series)?;
+        }
+        Mark::Points { points, marker, .. } => {
+            let style = marker.style();
+            let radius = px(marker.radius);
+            chart.draw_series(
+                points.iter().map(move |p| Circle::new((p.x, p.y), radius, style)),
+            )?;
+        }
+        Mark::Labels { points, names, closed } => {
+            let style =
+                TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
+                    .color(&INK)
+                    .pos(Pos::new(HPos::Center, VPos::Center));
+            let offsets = label_offsets(points, names, *closed, unit);
+            let texts = points.iter().zip(names).zip(offsets).map(|((p, name), off)| {
+                EmptyElement::at((p.x, p.y))
+                    + Text::new(name.clone(), (off.0, off.1), style.clone())
+            });
+            chart.draw_series(texts)?;
+        }
+        Mark::Note { at, text, offset, color } => {
+            let style =
+                TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
+                    .color(color)
+                    .pos(Pos::new(HPos::Center, VPos::Center));
+            let scale = f64::from(SCALE);
+            let off =
+                ((offset.0 * scale).round() as i32, (-offset.1 * scale).round() as i32);
+            chart.draw_series(std::iter::once(
+                EmptyElement::at((at.x, at.y)) + Text::new(text.clone(), off, style),
+            ))?;
+        }
+    }
+    Ok(())
 }
 
 /// A linear axis whose ticks are given rather than chosen by plotters.
