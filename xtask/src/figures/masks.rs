@@ -1083,22 +1083,8 @@ fn split(title: &str, kind: SplitKind, stage: u32) -> Result<Vec<u8>> {
     let old_edges = edges(window.iter().map(Vec::as_slice));
 
     // The new vertices of the window and where they are drawn.
-    let mut face_points = Vec::new();
-    let mut edge_points = Vec::new();
-    for f in &window {
-        let centroid = f.iter().map(|&v| sample.layout[v as usize]).sum::<DVec2>() / f.len() as f64;
-        match kind {
-            SplitKind::Loop => {}
-            SplitKind::Sqrt3 => face_points.push((step.joined_to(f)?, centroid)),
-            SplitKind::CatmullClark => face_points.push((step.in_faces_with(f)?, centroid)),
-        }
-    }
-    if kind != SplitKind::Sqrt3 {
-        for [a, b] in &old_edges {
-            let mid = (sample.layout[*a as usize] + sample.layout[*b as usize]) / 2.0;
-            edge_points.push((step.joined_to(&[*a, *b])?, mid));
-        }
-    }
+    let (face_points, edge_points) =
+        split_points(kind, &sample.layout, &window, &old_edges, &step)?;
     let old_vertices: BTreeSet<u32> = window.iter().flatten().copied().collect();
     let mut drawn_at = vec![None; step.refined.n_vertices()];
     for &v in &old_vertices {
@@ -1128,20 +1114,7 @@ fn split(title: &str, kind: SplitKind, stage: u32) -> Result<Vec<u8>> {
         }
     }
     if kind == SplitKind::Sqrt3 && stage == 2 {
-        for &(_, c) in &face_points {
-            for f in &window {
-                let centroid = f.iter().map(|&v| sample.layout[v as usize]).sum::<DVec2>() / 3.0;
-                if centroid.distance(c) < 1e-12 {
-                    for &v in f {
-                        plot = plot.curve(
-                            vec![c, sample.layout[v as usize]],
-                            Pen::solid(BLUE).width(1.0),
-                            None,
-                        );
-                    }
-                }
-            }
-        }
+        plot = sqrt3_joins(plot, &face_points, &window, &sample.layout);
     }
     if stage == last {
         if kind == SplitKind::Sqrt3 {
@@ -1161,22 +1134,92 @@ fn split(title: &str, kind: SplitKind, stage: u32) -> Result<Vec<u8>> {
     }
     plot = plot.points(&old_at, Marker::point(INK), None);
     if stage >= 1 {
-        let cc = kind == SplitKind::CatmullClark;
-        if cc {
-            plot = plot.points(&old_at, Marker::ring(VERMILION), Some("vertex points"));
-        }
-        if !face_at.is_empty() {
-            plot = plot.points(&face_at, Marker::point(GREEN), cc.then_some("face points"));
-        }
-        if !edge_at.is_empty() {
-            let color = if cc { ORANGE } else { VERMILION };
-            plot = plot.points(&edge_at, Marker::point(color), cc.then_some("edge points"));
-        }
-        if cc {
-            plot = plot.legend(Legend::UpperRight);
-        }
+        plot = split_markers(plot, kind, &old_at, &face_at, &edge_at);
     }
     plot.render()
+}
+
+/// New vertices of the refined mesh, each with where [`split`] draws it.
+type Placed = Vec<(usize, DVec2)>;
+
+/// The new points of [`split`] in the `window` of faces of a mesh drawn at `layout`, each
+/// with where it is drawn: the face points (√3, Catmull-Clark) at their face's centroid, and
+/// the edge points (Loop, Catmull-Clark) at the midpoints of the `old_edges`.
+fn split_points(
+    kind: SplitKind,
+    layout: &[DVec2],
+    window: &[Vec<u32>],
+    old_edges: &BTreeSet<[u32; 2]>,
+    step: &Step,
+) -> Result<(Placed, Placed)> {
+    let mut face_points = Vec::new();
+    let mut edge_points = Vec::new();
+    for f in window {
+        let centroid = f.iter().map(|&v| layout[v as usize]).sum::<DVec2>() / f.len() as f64;
+        match kind {
+            SplitKind::Loop => {}
+            SplitKind::Sqrt3 => face_points.push((step.joined_to(f)?, centroid)),
+            SplitKind::CatmullClark => face_points.push((step.in_faces_with(f)?, centroid)),
+        }
+    }
+    if kind != SplitKind::Sqrt3 {
+        for [a, b] in old_edges {
+            let mid = (layout[*a as usize] + layout[*b as usize]) / 2.0;
+            edge_points.push((step.joined_to(&[*a, *b])?, mid));
+        }
+    }
+    Ok((face_points, edge_points))
+}
+
+/// `plot` with each √3 face point joined to the corners of its face of the `window` (drawn
+/// at `layout`).
+fn sqrt3_joins(
+    mut plot: Plot,
+    face_points: &[(usize, DVec2)],
+    window: &[Vec<u32>],
+    layout: &[DVec2],
+) -> Plot {
+    for &(_, c) in face_points {
+        for f in window {
+            let centroid = f.iter().map(|&v| layout[v as usize]).sum::<DVec2>() / 3.0;
+            if centroid.distance(c) < 1e-12 {
+                for &v in f {
+                    plot = plot.curve(
+                        vec![c, layout[v as usize]],
+                        Pen::solid(BLUE).width(1.0),
+                        None,
+                    );
+                }
+            }
+        }
+    }
+    plot
+}
+
+/// `plot` with the new points of [`split`] marked: the vertex points (Catmull-Clark), the face
+/// points and the edge points, with a legend for Catmull-Clark.
+fn split_markers(
+    mut plot: Plot,
+    kind: SplitKind,
+    old_at: &[DVec2],
+    face_at: &[DVec2],
+    edge_at: &[DVec2],
+) -> Plot {
+    let cc = kind == SplitKind::CatmullClark;
+    if cc {
+        plot = plot.points(old_at, Marker::ring(VERMILION), Some("vertex points"));
+    }
+    if !face_at.is_empty() {
+        plot = plot.points(face_at, Marker::point(GREEN), cc.then_some("face points"));
+    }
+    if !edge_at.is_empty() {
+        let color = if cc { ORANGE } else { VERMILION };
+        plot = plot.points(edge_at, Marker::point(color), cc.then_some("edge points"));
+    }
+    if cc {
+        plot = plot.legend(Legend::UpperRight);
+    }
+    plot
 }
 
 #[cfg(test)]
