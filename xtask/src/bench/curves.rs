@@ -180,10 +180,8 @@ fn time_direct(
 /// The largest difference between the FFT's and the direct sum's samples, relative to the
 /// largest coordinate, as a cell ("3.1e-15").
 fn agreement(curve: &HarmonicCurve<DVec2>, samples: usize) -> Result<String> {
-    let (a, b) = (
-        curve.sample_uniform(samples)?,
-        hi_curve::testing::sample_uniform_direct(curve, samples)?,
-    );
+    let (a, b) =
+        (curve.sample_uniform(samples)?, hi_curve::testing::sample_uniform_direct(curve, samples)?);
     let scale = a.iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
     let diff = a.iter().zip(&b).map(|(p, q)| (*p - *q).abs().max_element());
     Ok(format!("{:.1e}", diff.fold(0.0, f64::max) / scale))

@@ -325,10 +325,8 @@ fn versus_model(
     };
     let scan_arg =
         if scan.triangles.is_empty() { "-".to_owned() } else { path_str(path)?.to_owned() };
-    let (ours_m, poisson_m) = (
-        measure(root, &xyz, &scan_arg, &ours_glb)?,
-        measure(root, &xyz, &scan_arg, &poisson_ply)?,
-    );
+    let (ours_m, poisson_m) =
+        (measure(root, &xyz, &scan_arg, &ours_glb)?, measure(root, &xyz, &scan_arg, &poisson_ply)?);
     bar.set_message(format!("versus Poisson: rendering {name}"));
     let view = View { eye: DVec3::from(eye), up: DVec3::from(up), panel: PANEL };
     let panels = render_panels(

@@ -68,8 +68,7 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
         "pixels",
         &curves,
     )?;
-    let headlines =
-        headlines(time_of(TorusMethod::IntervalNewton), time_of(TorusMethod::Bezier));
+    let headlines = headlines(time_of(TorusMethod::IntervalNewton), time_of(TorusMethod::Bezier));
     Ok(Section { body: body(&rows, &plot), headlines, sub_headlines: Vec::new() })
 }
 

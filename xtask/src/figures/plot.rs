@@ -757,32 +757,25 @@ fn draw_mark<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
         }
         Mark::Line { points, pen, .. } => {
             let pieces = match pen.dash {
-                Some((on, off)) => {
-                    dash(points, f64::from(px(on)), f64::from(px(off)), unit)
-                }
+                Some((on, off)) => dash(points, f64::from(px(on)), f64::from(px(off)), unit),
                 None => vec![points.clone()],
             };
             let style = pen.style();
             let series = pieces.into_iter().map(move |piece| {
-                PathElement::new(
-                    piece.into_iter().map(|p| (p.x, p.y)).collect::<Vec<_>>(),
-                    style,
-                )
+                PathElement::new(piece.into_iter().map(|p| (p.x, p.y)).collect::<Vec<_>>(), style)
             });
             chart.draw_series(series)?;
         }
         Mark::Points { points, marker, .. } => {
             let style = marker.style();
             let radius = px(marker.radius);
-            chart.draw_series(
-                points.iter().map(move |p| Circle::new((p.x, p.y), radius, style)),
-            )?;
+            chart
+                .draw_series(points.iter().map(move |p| Circle::new((p.x, p.y), radius, style)))?;
         }
         Mark::Labels { points, names, closed } => {
-            let style =
-                TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
-                    .color(&INK)
-                    .pos(Pos::new(HPos::Center, VPos::Center));
+            let style = TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
+                .color(&INK)
+                .pos(Pos::new(HPos::Center, VPos::Center));
             let offsets = label_offsets(points, names, *closed, unit);
             let texts = points.iter().zip(names).zip(offsets).map(|((p, name), off)| {
                 EmptyElement::at((p.x, p.y))
@@ -791,13 +784,11 @@ fn draw_mark<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
             chart.draw_series(texts)?;
         }
         Mark::Note { at, text, offset, color } => {
-            let style =
-                TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
-                    .color(color)
-                    .pos(Pos::new(HPos::Center, VPos::Center));
+            let style = TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
+                .color(color)
+                .pos(Pos::new(HPos::Center, VPos::Center));
             let scale = f64::from(SCALE);
-            let off =
-                ((offset.0 * scale).round() as i32, (-offset.1 * scale).round() as i32);
+            let off = ((offset.0 * scale).round() as i32, (-offset.1 * scale).round() as i32);
             chart.draw_series(std::iter::once(
                 EmptyElement::at((at.x, at.y)) + Text::new(text.clone(), off, style),
             ))?;
