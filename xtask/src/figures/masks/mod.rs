@@ -2,20 +2,22 @@
 //! Figures 4.8–4.10, 4.14, 4.18, 4.19, 4.23 and 4.24: the masks (stencils) of the subdivision
 //! schemes of §4.5 and how Loop, √3 and Catmull-Clark subdivision split the faces.
 //!
-//! The weights drawn are read off the library, never typed in. One step of
-//! `hi_mesh::subdivision` is linear in the vertex positions, so with x = 1 at one old
-//! vertex j and x = 0 at the others (y and z keep the mesh's own coordinates), the x coordinate
-//! of every new vertex is the weight of j in that vertex's mask. One step per old vertex gives
-//! the whole subdivision matrix ([`Step`](library::Step)) of a closed mesh: a torus for the regular masks
-//! ([`tri_torus`](meshes::tri_torus), [`quad_torus`](meshes::quad_torus)) and, for a vertex of valence n whose neighbours are regular,
-//! a bipyramid after one Loop step or a prism after one Catmull-Clark step ([`cone`](meshes::cone)). The new
-//! vertex of a mask is found by its connectivity in the refined mesh (an edge point is the new
-//! vertex joined to both ends of its edge, a √3 face point the one joined to the three
-//! corners, …), and every row drawn is checked, over all old vertices, against the textbook
-//! formula computed here ([`loop_beta`](formulas::loop_beta), [`butterfly_weights`](formulas::butterfly_weights), [`sqrt3_alpha`](formulas::sqrt3_alpha),
-//! [`labsik_greiner`](formulas::labsik_greiner), the Catmull-Clark rules) to [`TOL`], in the drawing function and in the
-//! tests. A weight is written as a fraction when one with a denominator up to 1000 matches it
-//! to [`TOL`], otherwise to four decimals.
+//! The weights drawn are read off the library, never typed in. One step of `hi_mesh::subdivision`
+//! is linear in the vertex positions, so with x = 1 at one old vertex j and x = 0 at the others (y
+//! and z keep the mesh's own coordinates), the x coordinate of every new vertex is the weight of j
+//! in that vertex's mask. One step per old vertex gives the whole subdivision matrix
+//! ([`Step`](library::Step)) of a closed mesh: a torus for the regular masks
+//! ([`tri_torus`](meshes::tri_torus), [`quad_torus`](meshes::quad_torus)) and, for a vertex of
+//! valence n whose neighbours are regular, a bipyramid after one Loop step or a prism after one
+//! Catmull-Clark step ([`cone`](meshes::cone)). The new vertex of a mask is found by its
+//! connectivity in the refined mesh (an edge point is the new vertex joined to both ends of its
+//! edge, a √3 face point the one joined to the three corners, …), and every row drawn is checked,
+//! over all old vertices, against the textbook formula computed here
+//! ([`loop_beta`](formulas::loop_beta), [`butterfly_weights`](formulas::butterfly_weights),
+//! [`sqrt3_alpha`](formulas::sqrt3_alpha), [`labsik_greiner`](formulas::labsik_greiner), the
+//! Catmull-Clark rules) to [`TOL`], in the drawing function and in the tests. A weight is written
+//! as a fraction when one with a denominator up to 1000 matches it to [`TOL`], otherwise to four
+//! decimals.
 
 mod drawing;
 mod formulas;
