@@ -134,8 +134,8 @@ pub(super) fn measured(
     ))
 }
 
-/// The median of `values` (the lower middle for an even count, as [`super::median`] takes it); NaN
-/// if empty.
+/// The median of `values` (the lower middle for an even count, as [`super::super::median`]
+/// takes it); NaN if empty.
 pub(super) fn median_f64(mut values: Vec<f64>) -> f64 {
     values.sort_by(f64::total_cmp);
     values.get(values.len().saturating_sub(1) / 2).copied().unwrap_or(f64::NAN)
