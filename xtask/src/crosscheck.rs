@@ -174,27 +174,7 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
     });
     // Every model written again as OBJ and glTF, and read back.
     bar.set_message("re-exporting the models as OBJ and glTF");
-    let mut files: Vec<(PathBuf, hi_mesh::TriangleMesh)> = Vec::new();
-    let (mut obj_bad, mut gltf_bad) = (Vec::new(), Vec::new());
-    for (name, bytes) in &glbs {
-        let glb = tmp.join(name);
-        std::fs::write(&glb, bytes)?;
-        let mesh = export::load(&glb).with_context(|| format!("loading {name}"))?;
-        let stem = name.trim_end_matches(".glb");
-        for (ext, bad) in [("obj", &mut obj_bad), ("gltf", &mut gltf_bad)] {
-            let path = tmp.join(format!("{stem}.{ext}"));
-            export::save(&mesh, &path)?;
-            let back = export::read_back(&mesh, &path)?;
-            // Positions and normals exact at f32 in both; OBJ stores t as 1 − t and colours as
-            // sRGB, which round trip to within an f32 step.
-            let display = if ext == "obj" { 1e-6 } else { 0.0 };
-            if !back.agrees_within(0.0, display) {
-                bad.push(format!("{stem}.{ext}: {back}"));
-            }
-            files.push((path, mesh.clone()));
-        }
-        files.push((glb, mesh));
-    }
+    let (files, obj_bad, gltf_bad) = re_export(tmp, &glbs)?;
     for (ext, tool, bad, agreement) in [
         (
             "OBJ",
@@ -214,11 +194,55 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
             },
         });
     }
+    check_files(root, bar, &files, glbs.len(), items);
+    Ok(())
+}
+
+/// Every model of `glbs` written into `tmp` as it is, and again as OBJ and glTF, each read
+/// back: the files with their meshes, and the OBJ and glTF files that did not agree.
+fn re_export(tmp: &Path, glbs: &[&(String, Vec<u8>)]) -> Result<ReExported> {
+    let mut files: Vec<(PathBuf, hi_mesh::TriangleMesh)> = Vec::new();
+    let (mut obj_bad, mut gltf_bad) = (Vec::new(), Vec::new());
+    for (name, bytes) in glbs {
+        let glb = tmp.join(name);
+        std::fs::write(&glb, bytes)?;
+        let mesh = export::load(&glb).with_context(|| format!("loading {name}"))?;
+        let stem = name.trim_end_matches(".glb");
+        for (ext, bad) in [("obj", &mut obj_bad), ("gltf", &mut gltf_bad)] {
+            let path = tmp.join(format!("{stem}.{ext}"));
+            export::save(&mesh, &path)?;
+            let back = export::read_back(&mesh, &path)?;
+            // Positions and normals exact at f32 in both; OBJ stores t as 1 − t and colours as
+            // sRGB, which round trip to within an f32 step.
+            let display = if ext == "obj" { 1e-6 } else { 0.0 };
+            if !back.agrees_within(0.0, display) {
+                bad.push(format!("{stem}.{ext}: {back}"));
+            }
+            files.push((path, mesh.clone()));
+        }
+        files.push((glb, mesh));
+    }
+    Ok((files, obj_bad, gltf_bad))
+}
+
+/// The files written by [`re_export`] with their meshes, then the OBJ and the glTF files that
+/// did not read back as written.
+type ReExported = (Vec<(PathBuf, hi_mesh::TriangleMesh)>, Vec<String>, Vec<String>);
+
+/// The items of the other programs reading the `files` of the `models` re-exported: trimesh,
+/// the Khronos glTF-Validator, Blender on a sample.
+fn check_files(
+    root: &Path,
+    bar: &ProgressBar,
+    files: &[(PathBuf, hi_mesh::TriangleMesh)],
+    models: usize,
+    items: &mut Vec<Item>,
+) {
     bar.set_message("trimesh");
     items.push(Item {
         what: format!("trimesh loads every `.glb`, `.gltf` and `.obj` ({} files)", files.len()),
         tool: "trimesh".to_owned(),
-        outcome: trimesh(root, &files),
+        outcome: trimesh(root, files),
     });
     bar.set_message("Khronos glTF-Validator");
     let gltfs: Vec<&Path> = files
@@ -232,7 +256,7 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
         outcome: validator(&gltfs),
     });
     bar.set_message("Blender");
-    let step = (glbs.len() / (BLENDER_SAMPLE / 2)).max(1);
+    let step = (models / (BLENDER_SAMPLE / 2)).max(1);
     let sample: Vec<&(PathBuf, hi_mesh::TriangleMesh)> = files
         .iter()
         .filter(|(p, _)| p.extension().is_some_and(|e| e == "glb" || e == "obj"))
@@ -246,7 +270,6 @@ fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Ite
         tool: "Blender".to_owned(),
         outcome: blender(root, &sample),
     });
-    Ok(())
 }
 
 /// trimesh's counts and coordinate sums against the meshes.

@@ -93,22 +93,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
             fft_growth.push((n as f64, fft));
         }
         let direct = if n <= DIRECT_MAX {
-            let t = if n >= DIRECT_ONCE {
-                let start = Instant::now();
-                std::hint::black_box(
-                    one.install(|| hi_curve::testing::sample_uniform_direct(&curve, samples))?,
-                );
-                start.elapsed()
-            } else {
-                one.install(|| {
-                    median_time(RUNS, || {
-                        std::hint::black_box(hi_curve::testing::sample_uniform_direct(
-                            &curve, samples,
-                        )?);
-                        Ok(())
-                    })
-                })?
-            };
+            let t = time_direct(&one, &curve, n, samples)?;
             if even {
                 direct_growth.push((n as f64, t));
             }
@@ -119,17 +104,8 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         // The two paths compute the same samples: the largest difference, relative to the
         // largest coordinate.
         // (At 1024 and 1025: the direct sum takes about a second.)
-        let agreement = if n <= DIRECT_ONCE + 1 {
-            let (a, b) = (
-                curve.sample_uniform(samples)?,
-                hi_curve::testing::sample_uniform_direct(&curve, samples)?,
-            );
-            let scale = a.iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
-            let diff = a.iter().zip(&b).map(|(p, q)| (*p - *q).abs().max_element());
-            format!("{:.1e}", diff.fold(0.0, f64::max) / scale)
-        } else {
-            "–".to_owned()
-        };
+        let agreement =
+            if n <= DIRECT_ONCE + 1 { agreement(&curve, samples)? } else { "–".to_owned() };
         let peer = theirs.as_ref().map(|t| t[i]);
         if let (Some(t), true) = (peer, even) {
             scipy_growth.push((n as f64, t));
@@ -173,7 +149,47 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         "n",
         &series,
     )?;
-    let body = format!(
+    let body = body(&rows, &plot);
+    Ok(Section { body, headlines, sub_headlines: Vec::new() })
+}
+
+/// The direct sum's time at `n` points and `samples` samples on the pool `one`: timed once
+/// from [`DIRECT_ONCE`], else the median of [`RUNS`] after a warm-up.
+fn time_direct(
+    one: &rayon::ThreadPool,
+    curve: &HarmonicCurve<DVec2>,
+    n: usize,
+    samples: usize,
+) -> Result<Duration> {
+    Ok(if n >= DIRECT_ONCE {
+        let start = Instant::now();
+        std::hint::black_box(
+            one.install(|| hi_curve::testing::sample_uniform_direct(curve, samples))?,
+        );
+        start.elapsed()
+    } else {
+        one.install(|| {
+            median_time(RUNS, || {
+                std::hint::black_box(hi_curve::testing::sample_uniform_direct(curve, samples)?);
+                Ok(())
+            })
+        })?
+    })
+}
+
+/// The largest difference between the FFT's and the direct sum's samples, relative to the
+/// largest coordinate, as a cell ("3.1e-15").
+fn agreement(curve: &HarmonicCurve<DVec2>, samples: usize) -> Result<String> {
+    let (a, b) =
+        (curve.sample_uniform(samples)?, hi_curve::testing::sample_uniform_direct(curve, samples)?);
+    let scale = a.iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
+    let diff = a.iter().zip(&b).map(|(p, q)| (*p - *q).abs().max_element());
+    Ok(format!("{:.1e}", diff.fold(0.0, f64::max) / scale))
+}
+
+/// The section's text around its table of `rows` and its growth `plot`.
+fn body(rows: &[Vec<String>], plot: &str) -> String {
+    format!(
         "## Harmonic curves (§2.3, docs/math.md §7)\n\n\
          Machine: {}.\n\n\
          A planar harmonic curve through n points xₖ = (3 sin 0.37k, cos 1.3k + 0.01k), sampled \
@@ -197,9 +213,8 @@ pub(super) fn run(root: &Path) -> Result<Section> {
                 "scipy / FFT",
                 "largest direct − FFT difference",
             ],
-            &rows,
+            rows,
         ),
         plot
-    );
-    Ok(Section { body, headlines, sub_headlines: Vec::new() })
+    )
 }

@@ -233,17 +233,68 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let scans = scans(root);
     let bar = progress_bar((3 * scans.len() + 4 + GROWTH_SIDES.len()) as u64)?;
+    let sources: Vec<String> =
+        scans.iter().map(|(name, source, _)| format!("{name}: {source}")).collect();
+    let (pipeline, slowest_interpolation) = table51(&scans, &bar)?;
+    let (upsampling, mut headlines) = upsampling(root, &bar)?;
+    if !slowest_interpolation.is_zero() {
+        headlines.push(Headline {
+            what: "harmonic interpolation at 4× of a 256² image (slowest scan)".to_owned(),
+            ours: slowest_interpolation,
+            peer: "the thesis's Table 5.1 (about 7 min, 2005 hardware)".to_owned(),
+            theirs: Some(THESIS_INTERPOLATION),
+        });
+    }
+    let (pipeline58, more) = pipeline58(&scans, &bar)?;
+    headlines.extend(more);
+    let growth = match scans.first() {
+        Some((_, _, Ok(scan))) => growth(root, scan, &bar)?,
+        _ => bail!("the built-in ellipsoid is missing"),
+    };
+    bar.finish_and_clear();
+    let mut s = tables(&sources, &pipeline, &upsampling, &pipeline58);
+    let (versus, more) = super::poisson::versus_poisson(root, &bar)?;
+    s.push_str(&versus);
+    headlines.extend(more);
+    let plot = growth_plot(
+        root,
+        "perf-fit.svg",
+        "4× upsampling and fitting against image size",
+        "texels",
+        &growth,
+    )?;
+    let _ = write!(
+        s,
+        "\n### Growth\n\n\
+         4× upsampling of a three-channel image (ours on one thread, scipy as above) and the fit \
+         of the built-in ellipsoid (flattened octahedron, every stage but the error measurement, \
+         median of 3 runs), for images of {} texels:\n\n{plot}",
+        GROWTH_SIDES.map(|n| format!("{n}²")).join(", ")
+    );
+    // Point clouds and scans of any topology, a subsection of its own (`bench fit-clouds`).
+    let (clouds, cloud_headlines) = super::clouds::run(root, &root.join("docs"), bench)?;
+    let _ = write!(
+        s,
+        "\n<!-- bench:fit-clouds -->\n{}\n<!-- /bench:fit-clouds -->\n",
+        clouds.trim_end()
+    );
+    Ok(Section { body: s, headlines, sub_headlines: vec![("fit-clouds", cloud_headlines)] })
+}
+
+/// Table 5.1's rows: the fit of each scan (at [`IMAGE`]², flattened octahedron), stage by
+/// stage; and the slowest harmonic interpolation among them.
+fn table51(
+    scans: &[(String, String, Result<Scan>)],
+    bar: &ProgressBar,
+) -> Result<(Vec<Vec<String>>, Duration)> {
     let options = FitOptions {
         layout: Layout::FlatOctahedron,
         resolution: Some((IMAGE, IMAGE)),
         ..FitOptions::thesis()
     };
     let mut pipeline = Vec::new();
-    let mut sources = Vec::new();
-    let mut headlines = Vec::new();
     let mut slowest_interpolation = Duration::ZERO;
-    for (name, source, scan) in &scans {
-        sources.push(format!("{name}: {source}"));
+    for (name, _, scan) in scans {
         let scan = match scan {
             Ok(s) => s,
             Err(e) => {
@@ -283,6 +334,12 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
         ]);
         bar.inc(1);
     }
+    Ok((pipeline, slowest_interpolation))
+}
+
+/// The rows of 4× upsampling against scipy, at 256² and 257², and their headlines.
+fn upsampling(root: &Path, bar: &ProgressBar) -> Result<(Vec<Vec<String>>, Vec<Headline>)> {
+    let mut headlines = Vec::new();
     let mut upsampling = Vec::new();
     for size in [256usize, 257] {
         bar.set_message(format!("4× upsampling {size}²"));
@@ -306,14 +363,16 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
         ]);
         bar.inc(1);
     }
-    if !slowest_interpolation.is_zero() {
-        headlines.push(Headline {
-            what: "harmonic interpolation at 4× of a 256² image (slowest scan)".to_owned(),
-            ours: slowest_interpolation,
-            peer: "the thesis's Table 5.1 (about 7 min, 2005 hardware)".to_owned(),
-            theirs: Some(THESIS_INTERPOLATION),
-        });
-    }
+    Ok((upsampling, headlines))
+}
+
+/// The rows of §5.8's combined pipeline, and the headlines of the two heads against the
+/// thesis's times.
+fn pipeline58(
+    scans: &[(String, String, Result<Scan>)],
+    bar: &ProgressBar,
+) -> Result<(Vec<Vec<String>>, Vec<Headline>)> {
+    let mut headlines = Vec::new();
     // §5.8's combined pipeline: the head stand-ins of figures 5.29 and 5.30 (the thesis's
     // mannequin and Spock), then every scan.
     let mut pipeline58 = Vec::new();
@@ -355,11 +414,17 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
         ]);
         bar.inc(1);
     }
-    let growth = match scans.first() {
-        Some((_, _, Ok(scan))) => growth(root, scan, &bar)?,
-        _ => bail!("the built-in ellipsoid is missing"),
-    };
-    bar.finish_and_clear();
+    Ok((pipeline58, headlines))
+}
+
+/// The section's opening and its first three tables: Table 5.1, 4× upsampling, §5.8's
+/// combined pipeline.
+fn tables(
+    sources: &[String],
+    pipeline: &[Vec<String>],
+    upsampling: &[Vec<String>],
+    pipeline58: &[Vec<String>],
+) -> String {
     let mut s = String::new();
     let _ = write!(
         s,
@@ -388,7 +453,7 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
             "distance to scan: mean / RMS / max (of the diagonal)",
             "not star-shaped",
         ],
-        &pipeline,
+        pipeline,
     ));
     s.push_str(
         "\n### 4× upsampling against `scipy.signal.resample`\n\n\
@@ -399,7 +464,7 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
     );
     s.push_str(&table(
         &["image", "ours, 1 thread (ms)", "ours, all cores (ms)", "scipy (ms)", "scipy / ours"],
-        &upsampling,
+        upsampling,
     ));
     let _ = write!(
         s,
@@ -415,32 +480,7 @@ pub(super) fn run(root: &Path, bench: &super::Options) -> Result<Section> {
     );
     s.push_str(&table(
         &["scan", "points", "patches", "total (s)", "stages (s)", "the thesis / ours"],
-        &pipeline58,
+        pipeline58,
     ));
-    let (versus, more) = super::poisson::versus_poisson(root, &bar)?;
-    s.push_str(&versus);
-    headlines.extend(more);
-    let plot = growth_plot(
-        root,
-        "perf-fit.svg",
-        "4× upsampling and fitting against image size",
-        "texels",
-        &growth,
-    )?;
-    let _ = write!(
-        s,
-        "\n### Growth\n\n\
-         4× upsampling of a three-channel image (ours on one thread, scipy as above) and the fit \
-         of the built-in ellipsoid (flattened octahedron, every stage but the error measurement, \
-         median of 3 runs), for images of {} texels:\n\n{plot}",
-        GROWTH_SIDES.map(|n| format!("{n}²")).join(", ")
-    );
-    // Point clouds and scans of any topology, a subsection of its own (`bench fit-clouds`).
-    let (clouds, cloud_headlines) = super::clouds::run(root, &root.join("docs"), bench)?;
-    let _ = write!(
-        s,
-        "\n<!-- bench:fit-clouds -->\n{}\n<!-- /bench:fit-clouds -->\n",
-        clouds.trim_end()
-    );
-    Ok(Section { body: s, headlines, sub_headlines: vec![("fit-clouds", cloud_headlines)] })
+    s
 }

@@ -192,8 +192,6 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
     std::fs::create_dir_all(&dir)?;
     bar.set_message("building hi");
     let hi = build_hi(root)?;
-    let python = PathBuf::from("python3");
-    let script = root.join("xtask/peers/fit_peers.py");
     let mut rows = Vec::new();
     let mut missing = Vec::new();
     let mut panels = Vec::new();
@@ -202,65 +200,9 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
             missing.push(file);
             continue;
         };
-        bar.set_message(format!("versus Poisson: {name}"));
-        let scan = read_scan(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-        // The points both are given: for a mesh, those its triangles use.
-        let mut used = vec![scan.triangles.is_empty(); scan.points.len()];
-        for t in &scan.triangles {
-            for &k in t {
-                used[k as usize] = true;
-            }
-        }
-        let points: Vec<DVec3> =
-            scan.points.iter().zip(&used).filter(|(_, u)| **u).map(|(p, _)| *p).collect();
-        let xyz = dir.join(format!("{name}.xyz"));
-        let mut w = std::io::BufWriter::new(std::fs::File::create(&xyz)?);
-        for p in &points {
-            writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
-        }
-        w.flush()?;
-        drop(w);
-        let ours_glb = dir.join(format!("{name}-ours.glb"));
-        let report = dir.join(format!("{name}-report.json"));
-        let (ours, _) = timed(
-            &hi,
-            &["fit", path_str(&path)?, "-o", path_str(&ours_glb)?, "--report", path_str(&report)?],
-        )?;
-        let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report)?)?;
-        let poisson_ply = dir.join(format!("{name}-poisson.ply"));
-        let script_s = path_str(&script)?.to_owned();
-        let poisson = match timed(
-            &python,
-            &[&script_s, "poisson", path_str(&xyz)?, path_str(&poisson_ply)?, DEPTH],
-        ) {
-            Ok((t, _)) => t,
-            Err(e) if e.to_string().contains("not installed") => {
-                bail!("pymeshlab is not installed: `pip install pymeshlab trimesh rtree scipy`")
-            }
-            Err(e) => return Err(e),
-        };
-        let scan_arg =
-            if scan.triangles.is_empty() { "-".to_owned() } else { path_str(&path)?.to_owned() };
-        let (ours_m, poisson_m) = (
-            measure(root, &xyz, &scan_arg, &ours_glb)?,
-            measure(root, &xyz, &scan_arg, &poisson_ply)?,
-        );
-        bar.set_message(format!("versus Poisson: rendering {name}"));
-        let view = View { eye: DVec3::from(eye), up: DVec3::from(up), panel: PANEL };
-        panels.push(render_panels(
-            &scan_display(&scan, usize::MAX),
-            &[Some(poisson_ply.as_path()), Some(ours_glb.as_path())],
-            view,
-        )?);
-        rows.push(Row {
-            name: name.to_owned(),
-            points: points.len(),
-            ours,
-            poisson,
-            ours_m,
-            poisson_m,
-            report,
-        });
+        let (row, drawn) = versus_model(root, &dir, &hi, name, &path, (eye, up), bar)?;
+        panels.push(drawn);
+        rows.push(row);
         bar.inc(1);
     }
     let mut s = String::new();
@@ -279,67 +221,15 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
          Targets: mean ≤ Poisson's, max ≤ 1.5 × Poisson's, surface→scan ≤ 2 %, watertight, ≥ 5× \
          faster.\n\n"
     );
-    let pct = |x: f64| format!("{:.3}", 100.0 * x);
     let mut table_rows = Vec::new();
     let mut headlines = Vec::new();
     let mut misses = Vec::new();
     for r in &rows {
-        let rel = |key: &str, i: usize| {
-            r.report["both_ways"][key]["relative"][i].as_f64().unwrap_or(f64::NAN)
-        };
-        let bridged = r.report["both_ways"]["filled_to_scan_max_relative"].as_f64().unwrap_or(0.0);
-        let speed = r.poisson.as_secs_f64() / r.ours.as_secs_f64().max(1e-9);
-        let checks = [
-            (
-                "mean",
-                r.ours_m.mean <= r.poisson_m.mean,
-                format!("mean {:.2}× Poisson's", r.ours_m.mean / r.poisson_m.mean),
-            ),
-            (
-                "max",
-                r.ours_m.max <= 1.5 * r.poisson_m.max,
-                format!("max {:.2}× Poisson's", r.ours_m.max / r.poisson_m.max),
-            ),
-            (
-                "surface→scan",
-                rel("surface_to_scan", 2) <= 0.02,
-                format!("surface→scan {} %", pct(rel("surface_to_scan", 2))),
-            ),
-            ("watertight", r.ours_m.watertight, "not watertight".to_owned()),
-            ("speed", speed >= 5.0, format!("{speed:.1}× faster")),
-        ];
-        let failed: Vec<String> = checks.iter().filter(|c| !c.1).map(|c| c.2.clone()).collect();
+        let (cells, failed) = poisson_row(r);
         if !failed.is_empty() {
             misses.push(format!("{}: {}", r.name, failed.join(", ")));
         }
-        table_rows.push(vec![
-            r.name.clone(),
-            r.points.to_string(),
-            r.report["method"].as_str().unwrap_or("?").to_owned(),
-            format!("{:.3} / {:.3}", r.ours.as_secs_f64(), r.poisson.as_secs_f64()),
-            format!("{speed:.1}×"),
-            format!(
-                "{} / {} (all {})",
-                pct(r.ours_m.mean),
-                pct(r.poisson_m.mean),
-                pct(rel("scan_to_surface", 0))
-            ),
-            format!(
-                "{} / {} (all {})",
-                pct(r.ours_m.max),
-                pct(r.poisson_m.max),
-                pct(rel("scan_to_surface", 2))
-            ),
-            format!(
-                "{} / {} (scan part {}{})",
-                pct(r.ours_m.back_max),
-                pct(r.poisson_m.back_max),
-                pct(rel("surface_to_scan", 2)),
-                if bridged > 0.0 { format!(", bridged {}", pct(bridged)) } else { String::new() }
-            ),
-            format!("{} / {}", yes(r.ours_m.watertight), yes(r.poisson_m.watertight)),
-            if failed.is_empty() { "all met".to_owned() } else { failed.join("; ") },
-        ]);
+        table_rows.push(cells);
         headlines.push(Headline {
             what: format!("`hi fit` on {}, whole command", r.name),
             ours: r.ours,
@@ -381,6 +271,138 @@ pub(super) fn versus_poisson(root: &Path, bar: &ProgressBar) -> Result<(String, 
         );
     }
     Ok((s, headlines))
+}
+
+/// Both programs on the model `name` read from `path` (writing into `dir`), measured by
+/// trimesh and drawn from `(eye, up)`: its row and its panels.
+fn versus_model(
+    root: &Path,
+    dir: &Path,
+    hi: &Path,
+    name: &str,
+    path: &Path,
+    (eye, up): ([f64; 3], [f64; 3]),
+    bar: &ProgressBar,
+) -> Result<(Row, Vec<image::RgbImage>)> {
+    let python = PathBuf::from("python3");
+    let script = root.join("xtask/peers/fit_peers.py");
+    bar.set_message(format!("versus Poisson: {name}"));
+    let scan = read_scan(path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    // The points both are given: for a mesh, those its triangles use.
+    let mut used = vec![scan.triangles.is_empty(); scan.points.len()];
+    for t in &scan.triangles {
+        for &k in t {
+            used[k as usize] = true;
+        }
+    }
+    let points: Vec<DVec3> =
+        scan.points.iter().zip(&used).filter(|(_, u)| **u).map(|(p, _)| *p).collect();
+    let xyz = dir.join(format!("{name}.xyz"));
+    let mut w = std::io::BufWriter::new(std::fs::File::create(&xyz)?);
+    for p in &points {
+        writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
+    }
+    w.flush()?;
+    drop(w);
+    let ours_glb = dir.join(format!("{name}-ours.glb"));
+    let report = dir.join(format!("{name}-report.json"));
+    let (ours, _) = timed(
+        hi,
+        &["fit", path_str(path)?, "-o", path_str(&ours_glb)?, "--report", path_str(&report)?],
+    )?;
+    let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report)?)?;
+    let poisson_ply = dir.join(format!("{name}-poisson.ply"));
+    let script_s = path_str(&script)?.to_owned();
+    let poisson = match timed(
+        &python,
+        &[&script_s, "poisson", path_str(&xyz)?, path_str(&poisson_ply)?, DEPTH],
+    ) {
+        Ok((t, _)) => t,
+        Err(e) if e.to_string().contains("not installed") => {
+            bail!("pymeshlab is not installed: `pip install pymeshlab trimesh rtree scipy`")
+        }
+        Err(e) => return Err(e),
+    };
+    let scan_arg =
+        if scan.triangles.is_empty() { "-".to_owned() } else { path_str(path)?.to_owned() };
+    let (ours_m, poisson_m) =
+        (measure(root, &xyz, &scan_arg, &ours_glb)?, measure(root, &xyz, &scan_arg, &poisson_ply)?);
+    bar.set_message(format!("versus Poisson: rendering {name}"));
+    let view = View { eye: DVec3::from(eye), up: DVec3::from(up), panel: PANEL };
+    let panels = render_panels(
+        &scan_display(&scan, usize::MAX),
+        &[Some(poisson_ply.as_path()), Some(ours_glb.as_path())],
+        view,
+    )?;
+    let row = Row {
+        name: name.to_owned(),
+        points: points.len(),
+        ours,
+        poisson,
+        ours_m,
+        poisson_m,
+        report,
+    };
+    Ok((row, panels))
+}
+
+/// The table's cells of one model, and the targets it missed.
+fn poisson_row(r: &Row) -> (Vec<String>, Vec<String>) {
+    let pct = |x: f64| format!("{:.3}", 100.0 * x);
+    let rel = |key: &str, i: usize| {
+        r.report["both_ways"][key]["relative"][i].as_f64().unwrap_or(f64::NAN)
+    };
+    let bridged = r.report["both_ways"]["filled_to_scan_max_relative"].as_f64().unwrap_or(0.0);
+    let speed = r.poisson.as_secs_f64() / r.ours.as_secs_f64().max(1e-9);
+    let checks = [
+        (
+            "mean",
+            r.ours_m.mean <= r.poisson_m.mean,
+            format!("mean {:.2}× Poisson's", r.ours_m.mean / r.poisson_m.mean),
+        ),
+        (
+            "max",
+            r.ours_m.max <= 1.5 * r.poisson_m.max,
+            format!("max {:.2}× Poisson's", r.ours_m.max / r.poisson_m.max),
+        ),
+        (
+            "surface→scan",
+            rel("surface_to_scan", 2) <= 0.02,
+            format!("surface→scan {} %", pct(rel("surface_to_scan", 2))),
+        ),
+        ("watertight", r.ours_m.watertight, "not watertight".to_owned()),
+        ("speed", speed >= 5.0, format!("{speed:.1}× faster")),
+    ];
+    let failed: Vec<String> = checks.iter().filter(|c| !c.1).map(|c| c.2.clone()).collect();
+    let cells = vec![
+        r.name.clone(),
+        r.points.to_string(),
+        r.report["method"].as_str().unwrap_or("?").to_owned(),
+        format!("{:.3} / {:.3}", r.ours.as_secs_f64(), r.poisson.as_secs_f64()),
+        format!("{speed:.1}×"),
+        format!(
+            "{} / {} (all {})",
+            pct(r.ours_m.mean),
+            pct(r.poisson_m.mean),
+            pct(rel("scan_to_surface", 0))
+        ),
+        format!(
+            "{} / {} (all {})",
+            pct(r.ours_m.max),
+            pct(r.poisson_m.max),
+            pct(rel("scan_to_surface", 2))
+        ),
+        format!(
+            "{} / {} (scan part {}{})",
+            pct(r.ours_m.back_max),
+            pct(r.poisson_m.back_max),
+            pct(rel("surface_to_scan", 2)),
+            if bridged > 0.0 { format!(", bridged {}", pct(bridged)) } else { String::new() }
+        ),
+        format!("{} / {}", yes(r.ours_m.watertight), yes(r.poisson_m.watertight)),
+        if failed.is_empty() { "all met".to_owned() } else { failed.join("; ") },
+    ];
+    (cells, failed)
 }
 
 fn yes(b: bool) -> &'static str {
@@ -561,6 +583,50 @@ pub(super) fn compose(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_row_of_the_table_against_poisson_is_formatted_cell_by_cell() {
+        let measured = |mean, max, back_max, watertight| Measured {
+            mean,
+            max,
+            back_max,
+            watertight,
+            ..Measured::default()
+        };
+        let r = Row {
+            name: "bunny".to_owned(),
+            points: 35_947,
+            ours: Duration::from_secs(1),
+            poisson: Duration::from_secs(3),
+            ours_m: measured(1e-4, 1e-3, 2e-3, true),
+            poisson_m: measured(2e-4, 5e-4, 1e-3, false),
+            report: serde_json::json!({
+                "method": "radial",
+                "both_ways": {
+                    "scan_to_surface": {"relative": [1.2e-4, 0.0, 1.5e-3]},
+                    "surface_to_scan": {"relative": [0.0, 0.0, 0.005]},
+                    "filled_to_scan_max_relative": 0.001,
+                },
+            }),
+        };
+        let (cells, failed) = poisson_row(&r);
+        assert_eq!(failed, ["max 2.00× Poisson's", "3.0× faster"]);
+        assert_eq!(
+            cells,
+            [
+                "bunny",
+                "35947",
+                "radial",
+                "1.000 / 3.000",
+                "3.0×",
+                "0.010 / 0.020 (all 0.012)",
+                "0.100 / 0.050 (all 0.150)",
+                "0.200 / 0.100 (scan part 0.500, bridged 0.100)",
+                "yes / no",
+                "max 2.00× Poisson's; 3.0× faster",
+            ]
+        );
+    }
 
     /// A GLB of three triangles in two meshes: mesh 0 with two primitives (the unit triangle in
     /// z = 0, and the same lifted to z = 1), placed as it is; mesh 1 (the unit triangle) placed

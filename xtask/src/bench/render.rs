@@ -11,7 +11,9 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Result;
+use hi_raytrace::RayCounts;
 use hi_raytrace::testing::{TorusMethod, render_torus, torus_scene};
+use indicatif::ProgressBar;
 
 use super::{
     Growth, Headline, Section, growth_plot, machine, median, median_time, ms, progress_bar, table,
@@ -33,28 +35,7 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
     let mut curves = Vec::new();
     let mut totals = Vec::new();
     for method in TorusMethod::ALL {
-        bar.set_message(format!("{}: preparation", method.name()));
-        let preparation = median_time(RUNS, || {
-            std::hint::black_box(torus_scene(method)?);
-            Ok(())
-        })?;
-        bar.inc(1);
-        let mut points = Vec::new();
-        let mut last = None;
-        for side in SIDES {
-            bar.set_message(format!("{}: {side}×{side}", method.name()));
-            let mut times = Vec::new();
-            let mut counts = None;
-            for _ in 0..RUNS {
-                let out = render_torus(method, side, side, 1)?;
-                times.push(out.elapsed);
-                counts = Some(out.counts);
-            }
-            let t = median(times);
-            points.push((f64::from(side * side), t));
-            last = counts.map(|c| (t, c));
-            bar.inc(1);
-        }
+        let (preparation, points, last) = measure(method, &bar)?;
         if let Some((t, c)) = last {
             totals.push((method, t));
             let rays = c.camera + c.shadow;
@@ -87,15 +68,53 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
         "pixels",
         &curves,
     )?;
+    let headlines = headlines(time_of(TorusMethod::IntervalNewton), time_of(TorusMethod::Bezier));
+    Ok(Section { body: body(&rows, &plot), headlines, sub_headlines: Vec::new() })
+}
+
+/// One method's times: the preparation (building the scene), the render at each of [`SIDES`]
+/// against its pixels, and the last (the table's size) with its rays.
+type Timings = (Duration, Vec<(f64, Duration)>, Option<(Duration, RayCounts)>);
+
+/// Times one method as [`Timings`] says.
+fn measure(method: TorusMethod, bar: &ProgressBar) -> Result<Timings> {
+    bar.set_message(format!("{}: preparation", method.name()));
+    let preparation = median_time(RUNS, || {
+        std::hint::black_box(torus_scene(method)?);
+        Ok(())
+    })?;
+    bar.inc(1);
+    let mut points = Vec::new();
+    let mut last = None;
+    for side in SIDES {
+        bar.set_message(format!("{}: {side}×{side}", method.name()));
+        let mut times = Vec::new();
+        let mut counts = None;
+        for _ in 0..RUNS {
+            let out = render_torus(method, side, side, 1)?;
+            times.push(out.elapsed);
+            counts = Some(out.counts);
+        }
+        let t = median(times);
+        points.push((f64::from(side * side), t));
+        last = counts.map(|c| (t, c));
+        bar.inc(1);
+    }
+    Ok((preparation, points, last))
+}
+
+/// The headlines: interval Newton against the thesis's "several hours", and the Bézier
+/// patches against interval Newton (each when timed).
+fn headlines(newton: Option<Duration>, bezier: Option<Duration>) -> Vec<Headline> {
     let mut headlines = Vec::new();
-    if let Some(newton) = time_of(TorusMethod::IntervalNewton) {
+    if let Some(newton) = newton {
         headlines.push(Headline {
             what: "torus ray traced by interval Newton, 512², shadows".to_owned(),
             ours: newton,
             peer: "the thesis's \"several hours\" (≥ 2 h, 2005 hardware)".to_owned(),
             theirs: Some(SEVERAL_HOURS),
         });
-        if let Some(bezier) = time_of(TorusMethod::Bezier) {
+        if let Some(bezier) = bezier {
             headlines.push(Headline {
                 what: "torus ray traced through Bézier patches, 512², shadows".to_owned(),
                 ours: bezier,
@@ -104,6 +123,11 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
             });
         }
     }
+    headlines
+}
+
+/// The section's text around its table of `rows` and its growth `plot`.
+fn body(rows: &[Vec<String>], plot: &str) -> String {
     let mut s = String::new();
     let _ = write!(
         s,
@@ -130,11 +154,11 @@ pub(crate) fn run(root: &Path) -> Result<Section> {
             "interval Newton / this",
             "vs several hours",
         ],
-        &rows,
+        rows,
     ));
     let _ = write!(
         s,
         "\nHow the render time grows with the number of pixels (64² … 512², log axes):\n\n{plot}"
     );
-    Ok(Section { body: s, headlines, sub_headlines: Vec::new() })
+    s
 }

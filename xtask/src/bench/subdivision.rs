@@ -295,37 +295,8 @@ pub(super) fn run(root: &Path) -> Result<Section> {
     for &(scheme, i) in &jobs {
         let (label, mesh) = &inputs[i];
         bar.set_message(format!("{} on {label}", scheme.name()));
-        let ours = median_time(OUR_RUNS, || {
-            std::hint::black_box(scheme.step(mesh)?);
-            Ok(())
-        })?;
-        let per_second = 1.0 / ours.as_secs_f64();
-        let mut row =
-            vec![scheme.name().to_owned(), label.clone(), ms(ours), format!("{per_second:.1}")];
-        for (peer, exe) in [(Peer::OpenMesh, openmesh.as_deref()), (Peer::Cgal, cgal.as_deref())] {
-            match run_peer(peer, exe, scheme, &files[i], &dir) {
-                Outcome::Time(t) => {
-                    // The headlines: Loop against both peers, Catmull-Clark on quads against CGAL.
-                    let headline = matches!(scheme, Scheme::Loop(LoopWeights::Loop))
-                        || (scheme == Scheme::CatmullClark && i == 1);
-                    if headline {
-                        headlines.push(Headline {
-                            what: format!("one {} step, {label}", scheme.name()),
-                            ours,
-                            peer: peer.name().to_owned(),
-                            theirs: Some(t),
-                        });
-                    }
-                    row.push(ms(t));
-                    row.push(ratio(t, ours));
-                }
-                Outcome::NoScheme => row.extend(["–".to_owned(), "–".to_owned()]),
-                Outcome::Absent => row.extend(["not installed".to_owned(), "–".to_owned()]),
-                Outcome::Failed(why) => {
-                    row.extend([format!("failed: {}", why.replace('|', "/")), "–".to_owned()]);
-                }
-            }
-        }
+        let peers = [(Peer::OpenMesh, openmesh.as_deref()), (Peer::Cgal, cgal.as_deref())];
+        let row = scheme_row(scheme, i, (label, mesh), &files[i], &dir, peers, &mut headlines)?;
         rows.push(row);
         bar.inc(1);
     }
@@ -343,6 +314,64 @@ pub(super) fn run(root: &Path) -> Result<Section> {
     if rows.is_empty() {
         bail!("nothing was measured");
     }
+    let body = body(openmesh_version.as_deref(), cgal_version.as_deref(), &rows, &plot);
+    Ok(Section { body, headlines, sub_headlines: Vec::new() })
+}
+
+/// One row of the table: one step of `scheme` on input `i` (`label`, its mesh, saved as
+/// `file`), ours and each of `peers`; the headlines (Loop against both peers, Catmull-Clark on
+/// quads against CGAL) added to `headlines`.
+fn scheme_row(
+    scheme: Scheme,
+    i: usize,
+    (label, mesh): (&str, &PolyMesh),
+    file: &Path,
+    dir: &Path,
+    peers: [(Peer, Option<&Path>); 2],
+    headlines: &mut Vec<Headline>,
+) -> Result<Vec<String>> {
+    let ours = median_time(OUR_RUNS, || {
+        std::hint::black_box(scheme.step(mesh)?);
+        Ok(())
+    })?;
+    let per_second = 1.0 / ours.as_secs_f64();
+    let mut row =
+        vec![scheme.name().to_owned(), label.to_owned(), ms(ours), format!("{per_second:.1}")];
+    for (peer, exe) in peers {
+        match run_peer(peer, exe, scheme, file, dir) {
+            Outcome::Time(t) => {
+                // The headlines: Loop against both peers, Catmull-Clark on quads against CGAL.
+                let headline = matches!(scheme, Scheme::Loop(LoopWeights::Loop))
+                    || (scheme == Scheme::CatmullClark && i == 1);
+                if headline {
+                    headlines.push(Headline {
+                        what: format!("one {} step, {label}", scheme.name()),
+                        ours,
+                        peer: peer.name().to_owned(),
+                        theirs: Some(t),
+                    });
+                }
+                row.push(ms(t));
+                row.push(ratio(t, ours));
+            }
+            Outcome::NoScheme => row.extend(["–".to_owned(), "–".to_owned()]),
+            Outcome::Absent => row.extend(["not installed".to_owned(), "–".to_owned()]),
+            Outcome::Failed(why) => {
+                row.extend([format!("failed: {}", why.replace('|', "/")), "–".to_owned()]);
+            }
+        }
+    }
+    Ok(row)
+}
+
+/// The section's text around its table of `rows` and its growth `plot`, with the peers'
+/// versions.
+fn body(
+    openmesh_version: Option<&str>,
+    cgal_version: Option<&str>,
+    rows: &[Vec<String>],
+    plot: &str,
+) -> String {
     let header = [
         "scheme",
         "input",
@@ -353,7 +382,7 @@ pub(super) fn run(root: &Path) -> Result<Section> {
         "CGAL (ms)",
         "CGAL / ours",
     ];
-    let body = format!(
+    format!(
         "## Subdivision (§4.5, Table 4.1)\n\n\
          One step of each scheme on a closed mesh of at least 100 000 faces: the star \
          (`PolyMesh::star`) after five Loop and two √3 steps, and after seven Catmull-Clark steps. \
@@ -370,12 +399,11 @@ pub(super) fn run(root: &Path) -> Result<Section> {
          Machine: {}.\n\n{}\n\
          How one step's time grows with the mesh: Loop on the star after 2 … 6 Loop steps, and \
          Catmull-Clark on the star after 2 … 6 Catmull-Clark steps (log axes):\n\n{plot}",
-        openmesh_version.as_deref().unwrap_or("not installed"),
-        cgal_version.as_deref().unwrap_or("not installed"),
+        openmesh_version.unwrap_or("not installed"),
+        cgal_version.unwrap_or("not installed"),
         machine(),
-        table(&header, &rows)
-    );
-    Ok(Section { body, headlines, sub_headlines: Vec::new() })
+        table(&header, rows)
+    )
 }
 
 #[cfg(test)]

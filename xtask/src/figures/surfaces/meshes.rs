@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: MIT
+//! Meshing the surfaces: a parametric surface by its derivatives, a control grid as a closed
+//! quad mesh, and markers (small octahedra) at points.
+
+use anyhow::{Result, ensure};
+use glam::{DVec2, DVec3};
+use hi_mesh::{TriangleMesh, srgb_to_linear_rgb};
+use hi_surface::{HarmonicSurface, ParamRange, ParamWindow, SurfaceDerivs};
+
+use super::{MARKER_SRGB, SURFACE_SRGB};
+
+/// A triangle mesh of a parametric surface, given by its derivatives, over `window` with
+/// `n_u`×`n_v` quads (see the module notes), and the parameters (u, v) of its vertices.
+pub(super) fn parametric_mesh(
+    derivs: &dyn Fn(f64, f64) -> SurfaceDerivs,
+    scale: f64,
+    window: ParamWindow,
+    (n_u, n_v): (usize, usize),
+) -> Result<(TriangleMesh, Vec<DVec2>)> {
+    let ParamWindow { u: ParamRange { start: u0, end: u1 }, v: ParamRange { start: v0, end: v1 } } =
+        window;
+    let cols = n_v + 1;
+    let mut params = Vec::with_capacity((n_u + 1) * cols);
+    for i in 0..=n_u {
+        for l in 0..=n_v {
+            params.push(DVec2::new(
+                u0 + (u1 - u0) * i as f64 / n_u as f64,
+                v0 + (v1 - v0) * l as f64 / n_v as f64,
+            ));
+        }
+    }
+    let samples: Vec<SurfaceDerivs> = params.iter().map(|t| derivs(t.x, t.y)).collect();
+    let size = samples.iter().map(|d| d.p.length()).fold(scale, f64::max);
+    let tol = 1e-9 * size;
+    let at = |i: usize, l: usize| (i * cols + l) as u32;
+    let position = |k: u32| samples[k as usize].p;
+    let mut triangles = Vec::with_capacity(2 * n_u * n_v);
+    for i in 0..n_u {
+        for l in 0..n_v {
+            let (a, b, c, d) = (at(i, l), at(i + 1, l), at(i + 1, l + 1), at(i, l + 1));
+            for t in [[a, b, c], [a, c, d]] {
+                let [pa, pb, pc] = t.map(position);
+                if pa.distance(pb) > tol && pb.distance(pc) > tol && pa.distance(pc) > tol {
+                    triangles.push(t);
+                }
+            }
+        }
+    }
+    // Keep the vertices triangles use, in grid order.
+    let mut new_index = vec![u32::MAX; samples.len()];
+    for &k in triangles.iter().flatten() {
+        new_index[k as usize] = 0;
+    }
+    let mut used = Vec::with_capacity(samples.len());
+    for (k, slot) in new_index.iter_mut().enumerate() {
+        if *slot == 0 {
+            *slot = used.len() as u32;
+            used.push(k);
+        }
+    }
+    let positions: Vec<DVec3> = used.iter().map(|&k| samples[k].p).collect();
+    // The area-weighted normal of the triangles at each vertex: a vertex normal points to its
+    // side (where the parameterisation folds, ∂u × ∂v turns against the triangles' winding,
+    // and a renderer would shade those triangles from behind).
+    let mut winding = vec![DVec3::ZERO; samples.len()];
+    for t in &triangles {
+        let [a, b, c] = t.map(position);
+        let n = (b - a).cross(c - a);
+        for &k in t {
+            winding[k as usize] += n;
+        }
+    }
+    let normals: Vec<DVec3> = used
+        .iter()
+        .map(|&k| {
+            let n = samples[k].normal(scale).unwrap_or_else(|| {
+                // The sum of the normals of the triangles at this point.
+                let here = samples[k].p;
+                let sum: DVec3 = triangles
+                    .iter()
+                    .filter(|t| t.iter().any(|&g| position(g).distance(here) <= tol))
+                    .map(|t| {
+                        let [a, b, c] = t.map(position);
+                        (b - a).cross(c - a)
+                    })
+                    .sum();
+                sum.try_normalize().unwrap_or(DVec3::Z)
+            });
+            if n.dot(winding[k]) < 0.0 { -n } else { n }
+        })
+        .collect();
+    let uvs: Vec<DVec2> = used
+        .iter()
+        .map(|&k| DVec2::new((k / cols) as f64 / n_u as f64, (k % cols) as f64 / n_v as f64))
+        .collect();
+    let triangles: Vec<[u32; 3]> =
+        triangles.into_iter().map(|t| t.map(|k| new_index[k as usize])).collect();
+    let params = used.iter().map(|&k| params[k]).collect();
+    Ok((TriangleMesh::try_new(positions, normals, uvs, triangles)?, params))
+}
+
+/// The control grid of `surface` as a closed mesh: each quad split into two triangles,
+/// area-weighted face normals, UVs (j/m, k/n).
+pub(super) fn control_mesh(surface: &HarmonicSurface<DVec3>) -> Result<TriangleMesh> {
+    let (m, n) = (surface.m(), surface.n());
+    let at = |j: usize, k: usize| ((j % m) * n + k % n) as u32;
+    let positions = surface.points().to_vec();
+    let mut triangles = Vec::with_capacity(2 * m * n);
+    for j in 0..m {
+        for k in 0..n {
+            let (a, b, c, d) = (at(j, k), at(j + 1, k), at(j + 1, k + 1), at(j, k + 1));
+            triangles.push([a, b, c]);
+            triangles.push([a, c, d]);
+        }
+    }
+    let mut sums = vec![DVec3::ZERO; positions.len()];
+    for t in &triangles {
+        let [a, b, c] = t.map(|k| positions[k as usize]);
+        let face = (b - a).cross(c - a);
+        for &k in t {
+            sums[k as usize] += face;
+        }
+    }
+    let normals = sums.into_iter().map(|s| s.try_normalize().unwrap_or(DVec3::Z)).collect();
+    let uvs = (0..m * n).map(|g| DVec2::new((g / n) as f64 / m as f64, (g % n) as f64 / n as f64));
+    Ok(TriangleMesh::try_new(positions, normals, uvs.collect(), triangles)?)
+}
+
+/// `mesh` with a small red octahedron of radius `radius` at each of the distinct `points`;
+/// the mesh keeps its colours, or becomes light grey if it had none.
+pub(super) fn with_markers(
+    mesh: &TriangleMesh,
+    points: &[DVec3],
+    radius: f64,
+) -> Result<TriangleMesh> {
+    let mut positions = mesh.positions().to_vec();
+    let mut normals = mesh.normals().to_vec();
+    let mut uvs = mesh.uvs().to_vec();
+    let mut triangles = mesh.triangles().to_vec();
+    let mut colors = mesh.colors().map_or_else(
+        || vec![srgb_to_linear_rgb(SURFACE_SRGB); mesh.n_vertices()],
+        <[[f32; 3]]>::to_vec,
+    );
+    push_octahedra(
+        (&mut positions, &mut normals, &mut uvs, &mut triangles, &mut colors),
+        points,
+        radius,
+    )?;
+    Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
+}
+
+/// Data points drawn alone as red octahedra ("beads") of `radius`, one per distinct point.
+///
+/// # Errors
+///
+/// If there is no point or more than 2³² corners.
+pub(crate) fn beads(points: &[DVec3], radius: f64) -> Result<TriangleMesh> {
+    let mut parts = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    push_octahedra(
+        (&mut parts.0, &mut parts.1, &mut parts.2, &mut parts.3, &mut parts.4),
+        points,
+        radius,
+    )?;
+    let (positions, normals, uvs, triangles, colors) = parts;
+    ensure!(!triangles.is_empty(), "no points to draw");
+    Ok(TriangleMesh::try_new(positions, normals, uvs, triangles)?.try_with_colors(colors)?)
+}
+
+/// The parts of a mesh being built: positions, normals, UVs, triangles and colours.
+type Parts<'a> = (
+    &'a mut Vec<DVec3>,
+    &'a mut Vec<DVec3>,
+    &'a mut Vec<DVec2>,
+    &'a mut Vec<[u32; 3]>,
+    &'a mut Vec<[f32; 3]>,
+);
+
+/// Appends a red octahedron of `radius` at each distinct point of `points` (points within a
+/// thousandth of the radius of one already drawn are drawn once).
+fn push_octahedra(
+    (positions, normals, uvs, triangles, colors): Parts<'_>,
+    points: &[DVec3],
+    radius: f64,
+) -> Result<()> {
+    let mut distinct: Vec<DVec3> = Vec::new();
+    for &p in points {
+        if distinct.iter().all(|q| q.distance(p) > 1e-3 * radius) {
+            distinct.push(p);
+        }
+    }
+    let axes = [DVec3::X, DVec3::NEG_X, DVec3::Y, DVec3::NEG_Y, DVec3::Z, DVec3::NEG_Z];
+    for p in distinct {
+        let base = u32::try_from(positions.len())?;
+        for e in axes {
+            positions.push(p + radius * e);
+            normals.push(e);
+            uvs.push(DVec2::ZERO);
+            colors.push(srgb_to_linear_rgb(MARKER_SRGB));
+        }
+        // One face per octant, counter-clockwise seen from outside.
+        for (sx, sy, sz) in [(0, 0, 0), (0, 0, 1), (0, 1, 0), (0, 1, 1)]
+            .into_iter()
+            .flat_map(|(x, y, z)| [(x, y, z), (1 - x, 1 - y, 1 - z)])
+        {
+            let (x, y, z) = (base + sx, base + 2 + sy, base + 4 + sz);
+            triangles.push(if (sx + sy + sz) % 2 == 0 { [x, y, z] } else { [x, z, y] });
+        }
+    }
+    Ok(())
+}
