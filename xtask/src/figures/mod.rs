@@ -58,6 +58,7 @@ mod subdivision;
 mod surfaces;
 mod theorems;
 
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::Path;
@@ -330,9 +331,62 @@ pub(crate) fn generate(progress: bool, renders: Renders) -> Result<Generated> {
     }
     bar.finish_and_clear();
     outputs.push((INDEX.to_owned(), index(&figures, &computed).into_bytes()));
-    outputs.push((html::GALLERY.to_owned(), html::gallery(&figures, &computed).into_bytes()));
+    let sizes = image_sizes(&figures, &outputs);
+    outputs
+        .push((html::GALLERY.to_owned(), html::gallery(&figures, &computed, &sizes).into_bytes()));
     outputs.push((html::VIEWER.to_owned(), html::VIEWER_PAGE.as_bytes().to_vec()));
     Ok(Generated { files: outputs, skipped })
+}
+
+/// The width and height of every image the gallery shows, from its bytes among `outputs`, or
+/// for a render not drawn this time, from the committed file (which `--check` compares with a
+/// fresh render): the gallery gives them to the browser so that the page does not reflow as
+/// lazily loaded images arrive.
+fn image_sizes(figures: &[Figure], outputs: &[Output]) -> BTreeMap<String, (u32, u32)> {
+    let drawn: BTreeMap<&str, &[u8]> =
+        outputs.iter().map(|(name, bytes)| (name.as_str(), bytes.as_slice())).collect();
+    let dir = crate::project_root().join(OUT_DIR);
+    let mut sizes = BTreeMap::new();
+    for f in figures {
+        for (_, _, shown, _) in f.entries() {
+            let size = match drawn.get(shown.as_str()) {
+                Some(bytes) => image_size(&shown, bytes),
+                None => std::fs::read(dir.join(&shown)).ok().and_then(|b| image_size(&shown, &b)),
+            };
+            if let Some(size) = size {
+                sizes.insert(shown, size);
+            }
+        }
+    }
+    sizes
+}
+
+/// The size of an image file: an SVG's `width` and `height` attributes (in pixels), or the
+/// header of a PNG, WebP or JPEG.
+fn image_size(name: &str, bytes: &[u8]) -> Option<(u32, u32)> {
+    if name.ends_with(".svg") {
+        let text = std::str::from_utf8(bytes).ok()?;
+        let root = &text[text.find("<svg")?..];
+        let root = &root[..root.find('>')?];
+        let attribute = |key: &str| -> Option<u32> {
+            let start = root.find(&format!(" {key}=\""))? + key.len() + 3;
+            let value = &root[start..];
+            let value = value[..value.find('"')?].trim_end_matches("px");
+            value.parse::<f64>().ok().map(|v| v.round() as u32)
+        };
+        return Some((attribute("width")?, attribute("height")?));
+    }
+    image::ImageReader::new(std::io::Cursor::new(bytes))
+        .with_guessed_format()
+        .ok()?
+        .into_dimensions()
+        .ok()
+}
+
+/// `text` as the cell of a Markdown table: its `|` (as in |κ|) escaped, so that it does not
+/// end the cell.
+fn cell(text: &str) -> String {
+    text.replace('|', "\\|")
 }
 
 /// The index page: every figure with its files, caption and notes, the tables, then the
@@ -368,11 +422,11 @@ fn index(figures: &[Figure], tables: &[(Table, String)]) -> String {
             "| [{}](#figure-{}) | {} | {} | {} | {} | {} |",
             f.label(),
             f.label().replace('.', ""),
-            f.caption,
+            cell(f.caption),
             files.join("<br>"),
-            f.drawn,
-            f.data,
-            differences::differs(f.number).unwrap_or("–").replace('|', "\\|")
+            cell(f.drawn),
+            cell(f.data),
+            cell(differences::differs(f.number).unwrap_or("–"))
         );
     }
     let _ = writeln!(s);
@@ -494,6 +548,12 @@ pub(crate) fn run(root: &Path, check: bool, renders: Renders) -> Result<()> {
             );
         }
         println!("figures: {} files in {OUT_DIR} are current", generated.files.len());
+        match html::check_gallery(&dir)? {
+            Some(summary) => println!("figures: {summary}"),
+            None => {
+                println!("figures: gallery not opened in a browser (Chromium is not installed)")
+            }
+        }
         return Ok(());
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
@@ -516,6 +576,20 @@ pub(crate) fn run(root: &Path, check: bool, renders: Renders) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every row of the index's table has its six cells: a `|` in a caption (as in |κ|) is
+    /// escaped rather than ending the cell.
+    #[test]
+    fn index_rows_have_six_cells() {
+        let page = index(&registry(), &[]);
+        let rows: Vec<&str> = page.lines().filter(|l| l.starts_with("| [")).collect();
+        assert!(rows.len() > 100, "{} rows", rows.len());
+        assert!(rows.iter().any(|r| r.contains("\\|κ\\|")), "a row with |κ| in it");
+        for row in rows {
+            let separators = row.match_indices('|').filter(|(i, _)| !row[..*i].ends_with('\\'));
+            assert_eq!(separators.count(), 7, "{row}");
+        }
+    }
 
     #[test]
     fn committed_figures_are_current() {
