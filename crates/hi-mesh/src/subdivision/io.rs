@@ -142,6 +142,6 @@ fn extension(path: &Path) -> Result<String, Error> {
     if ext == "obj" || ext == "off" {
         Ok(ext)
     } else {
-        Err(Error::UnknownExtension { path: path.to_path_buf(), expected: ".obj or .off" }.into())
+        Err(Error::UnknownExtension { path: path.to_path_buf(), expected: ".obj or .off" })
     }
 }
