@@ -47,6 +47,10 @@ enum Task {
         /// checks.
         #[arg(long)]
         no_renders: bool,
+        /// Draw only these figures (their numbers, e.g. `5.37,5.38`), leaving the others' files
+        /// as they are; the index and the gallery are written whole.
+        #[arg(long, value_delimiter = ',', value_name = "FIGURES")]
+        only: Vec<String>,
     },
     /// Time our code and the peer programs side by side in the same run, into
     /// docs/performance.md.
@@ -121,9 +125,9 @@ fn main() -> ExitCode {
 fn run(task: Task) -> Result<()> {
     let root = project_root();
     match task {
-        Task::Figures { check, no_renders } => {
+        Task::Figures { check, no_renders, only } => {
             let renders = if no_renders { figures::Renders::Skip } else { figures::Renders::Draw };
-            figures::run(&root, check, renders)
+            figures::run(&root, check, renders, &only)
         }
         Task::Bench { topic, small, only } => {
             let options = bench::Options {

@@ -260,11 +260,17 @@ pub(crate) struct Generated {
     pub(crate) skipped: Vec<String>,
 }
 
-/// Draws every figure and the index page, in memory, with a progress bar if `progress` and
-/// standard error is a terminal; the renders only with [`Renders::Draw`].
-pub(crate) fn generate(progress: bool, renders: Renders) -> Result<Generated> {
+/// Draws every figure (or those `only` names, when it names any: the others' files count as
+/// skipped) and the index page, in memory, with a progress bar if `progress` and standard error
+/// is a terminal; the renders only with [`Renders::Draw`].
+pub(crate) fn generate(progress: bool, renders: Renders, only: &[String]) -> Result<Generated> {
     let figures = registry();
-    let count: usize = figures.iter().map(|f| f.panels.len() + f.views.len()).sum();
+    if let Some(unknown) = only.iter().find(|o| !figures.iter().any(|f| f.label() == **o)) {
+        bail!("--only {unknown}: no such figure (figures are numbered as 1.3 or 5.37)");
+    }
+    let chosen = |f: &Figure| only.is_empty() || only.iter().any(|o| *o == f.label());
+    let count: usize =
+        figures.iter().filter(|f| chosen(f)).map(|f| f.panels.len() + f.views.len()).sum();
     let bar = if progress && std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(count as u64);
         bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}")?);
@@ -275,6 +281,12 @@ pub(crate) fn generate(progress: bool, renders: Renders) -> Result<Generated> {
     let mut outputs = Vec::with_capacity(count + 1);
     let mut skipped = Vec::new();
     for figure in &figures {
+        if !chosen(figure) {
+            skipped.extend(figure.entries().into_iter().flat_map(|(_, file, shown, model)| {
+                if model { vec![file, shown] } else { vec![file] }
+            }));
+            continue;
+        }
         let mut drawn = Vec::with_capacity(figure.panels.len());
         for panel in figure.panels {
             let file = figure.file(panel);
@@ -535,9 +547,9 @@ fn orphans(dir: &Path, generated: &Generated) -> Result<Vec<String>> {
 ///
 /// If a figure fails to draw, a file cannot be read or written, or (with `check`) a file is
 /// stale; the error names the stale files.
-pub(crate) fn run(root: &Path, check: bool, renders: Renders) -> Result<()> {
+pub(crate) fn run(root: &Path, check: bool, renders: Renders, only: &[String]) -> Result<()> {
     let dir = root.join(OUT_DIR);
-    let generated = generate(true, renders)?;
+    let generated = generate(true, renders, only)?;
     if check {
         let stale = stale_files(&dir, &generated)?;
         if !stale.is_empty() {
@@ -595,7 +607,7 @@ mod tests {
     fn committed_figures_are_current() {
         // Every file but the renders, which `cargo xtask figures --check` compares.
         let dir = crate::project_root().join(OUT_DIR);
-        let generated = generate(false, Renders::Skip).expect("every figure draws");
+        let generated = generate(false, Renders::Skip, &[]).expect("every figure draws");
         assert!(generated.skipped.len() > 100, "{} renders skipped", generated.skipped.len());
         let stale = stale_files(&dir, &generated).expect("docs/figures is readable");
         assert!(stale.is_empty(), "stale figures, run `cargo xtask figures`: {stale:?}");

@@ -4,7 +4,7 @@
 
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
-use hi_mesh::{ColorMap, ColorScale, Palette, TriangleMesh};
+use hi_mesh::TriangleMesh;
 use hi_surface::{
     CurvatureQuantity, HarmonicSurface, MeshOptions, ParametricSurface, compare_curvature,
     test_surface, test_surfaces,
@@ -13,7 +13,7 @@ use hi_surface::{
 use super::super::glb::glb;
 use super::colours::colored;
 use super::meshes::{parametric_mesh, with_markers};
-use super::{COVERAGE, FLOOR, MARKER_SIZE, OVER, SPECS, Side, Spec, TABLE_RES};
+use super::{COVERAGE, FLOOR, MARKER_SIZE, MIN_COLOUR_USE, OVER, SPECS, Side, Spec, TABLE_RES};
 
 /// A §5.9 comparison: the surface, its harmonic surface and both meshes.
 pub(super) struct Comparison {
@@ -70,17 +70,94 @@ impl Comparison {
             .collect()
     }
 
-    /// The colour-scale extent of `quantity` (see the module notes).
+    /// The colour-scale extent of `quantity` (see the module notes): the [`COVERAGE`] quantile
+    /// of |values| over the parametric surface's *area* (each vertex weighted by a third of
+    /// its triangles' area), so that what most of the picture shows sets the scale, not the
+    /// many small triangles a parameterisation crowds near an apex or a pole.
     pub(super) fn extent(&self, quantity: CurvatureQuantity) -> Result<f64> {
-        let map =
-            ColorMap { scale: ColorScale::Magnitude, coverage: COVERAGE, palette: Palette::Thesis };
-        let a = map.try_apply(&self.values(Side::Parametric, quantity))?.legend.max;
+        let (mesh, _) = self.mesh(Side::Parametric);
+        let a =
+            area_quantile(&self.values(Side::Parametric, quantity), &vertex_areas(mesh), COVERAGE);
         let floor = match quantity {
             CurvatureQuantity::Gaussian => FLOOR / (self.scale * self.scale),
             _ => FLOOR / self.scale,
         };
         Ok(if a.is_finite() { a.max(floor) } else { floor })
     }
+
+    /// How much of the colour bar [−a, a] the picture of `quantity` on `side` uses, as a
+    /// fraction of the bar: from the least to the greatest of 0 and the 2 % and 98 % area
+    /// quantiles of the values (the neutral grey of 0 counts as shown: a sphere's constant K
+    /// uses half the bar); `None` for a quantity that vanishes everywhere (a plane's K), which no
+    /// scale can show.
+    pub(super) fn colour_use(
+        &self,
+        side: Side,
+        quantity: CurvatureQuantity,
+    ) -> Result<Option<f64>> {
+        let a = self.extent(quantity)?;
+        let values = self.values(side, quantity);
+        let areas = vertex_areas(&self.mesh(side).0);
+        let floor = match quantity {
+            CurvatureQuantity::Gaussian => FLOOR / (self.scale * self.scale),
+            _ => FLOOR / self.scale,
+        };
+        if values.iter().all(|x| !x.is_finite() || x.abs() <= floor) {
+            return Ok(None);
+        }
+        let signed = |q: f64| {
+            let (v, w): (Vec<f64>, Vec<f64>) = values
+                .iter()
+                .zip(&areas)
+                .filter(|(x, _)| x.is_finite())
+                .map(|(x, w)| (x.clamp(-a, a), *w))
+                .unzip();
+            weighted_quantile(v, &w, q)
+        };
+        let (lo, hi) = (signed(0.02).min(0.0), signed(0.98).max(0.0));
+        Ok(Some((hi - lo) / (2.0 * a)))
+    }
+}
+
+/// The area around each vertex of `mesh`: a third of the area of each triangle at it.
+fn vertex_areas(mesh: &TriangleMesh) -> Vec<f64> {
+    let p = mesh.positions();
+    let mut areas = vec![0.0; p.len()];
+    for t in mesh.triangles() {
+        let [a, b, c] = t.map(|k| p[k as usize]);
+        let third = (b - a).cross(c - a).length() / 6.0;
+        for k in t {
+            areas[*k as usize] += third;
+        }
+    }
+    areas
+}
+
+/// The `q` quantile of |`values`| weighted by `weights` (non-finite values left out).
+fn area_quantile(values: &[f64], weights: &[f64], q: f64) -> f64 {
+    let (v, w): (Vec<f64>, Vec<f64>) = values
+        .iter()
+        .zip(weights)
+        .filter(|(x, _)| x.is_finite())
+        .map(|(x, w)| (x.abs(), *w))
+        .unzip();
+    weighted_quantile(v, &w, q)
+}
+
+/// The smallest of `values` below which at least the fraction `q` of the total weight lies
+/// (NaN for no values).
+fn weighted_quantile(values: Vec<f64>, weights: &[f64], q: f64) -> f64 {
+    let mut order: Vec<usize> = (0..values.len()).collect();
+    order.sort_by(|&i, &j| values[i].total_cmp(&values[j]));
+    let total: f64 = weights.iter().sum();
+    let mut below = 0.0;
+    for &i in &order {
+        below += weights[i];
+        if below >= q * total {
+            return values[i];
+        }
+    }
+    order.last().map_or(f64::NAN, |&i| values[i])
 }
 
 /// One panel of figures 5.31–5.43: a side, plain (the harmonic one with its samples marked) or
@@ -93,7 +170,20 @@ pub(super) fn comparison(
     let c = Comparison::new(spec)?;
     let mesh = &c.mesh(side).0;
     let mesh = match show {
-        Some(quantity) => colored(mesh.clone(), &c.values(side, quantity), c.extent(quantity)?)?,
+        Some(quantity) => {
+            if let Some(used) = c.colour_use(side, quantity)? {
+                ensure!(
+                    used >= MIN_COLOUR_USE,
+                    "figure {} ({side:?}, {}): the picture uses {:.0} % of its colour bar, less \
+                     than {:.0} %: its scale says nothing",
+                    spec.figure,
+                    quantity.symbol(),
+                    100.0 * used,
+                    100.0 * MIN_COLOUR_USE
+                );
+            }
+            colored(mesh.clone(), &c.values(side, quantity), c.extent(quantity)?)?
+        }
         None if side == Side::Harmonic => {
             with_markers(mesh, c.harmonic.points(), MARKER_SIZE * c.scale)?
         }
@@ -157,4 +247,27 @@ pub(super) fn mesh_table() -> Result<String> {
         );
     }
     Ok(s)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every curvature picture of figures 5.31–5.43 uses at least a quarter of its colour bar
+    /// (the figures refuse to draw otherwise; here each is named with its share).
+    #[test]
+    fn curvature_pictures_use_their_colour_bars() {
+        let mut report = Vec::new();
+        for spec in &SPECS {
+            let c = Comparison::new(spec).expect("a §5.9 surface");
+            for side in [Side::Parametric, Side::Harmonic] {
+                for q in [CurvatureQuantity::Gaussian, CurvatureQuantity::Mean] {
+                    let used = c.colour_use(side, q).expect("values");
+                    report.push(format!("{} {side:?} {}: {used:.2?}", spec.figure, q.symbol()));
+                    assert!(used.is_none_or(|u| u >= MIN_COLOUR_USE), "{}", report.join("\n"));
+                }
+            }
+        }
+        eprintln!("{}", report.join("\n"));
+    }
 }

@@ -21,8 +21,11 @@
 //! curvature and purple for much, which hides whether a point is elliptic or hyperbolic) on
 //! Moreland's diverging cool–warm map: −a blue, 0 light grey, +a red, with one a per surface
 //! and quantity shared by the parametric and the harmonic picture so that they compare: the
-//! 95th percentile of the parametric surface's |values| (at least 10⁻⁶ of the curvature of the
-//! surface's size, so that a flat surface is grey). Values beyond ±a take the end colours;
+//! 95th percentile of the parametric surface's |values| weighted by area, so that the many
+//! small triangles of a parameterisation near an apex or a pole do not set it (at least 10⁻⁶ of
+//! the curvature of the surface's size, so that a flat surface is grey). Every picture must use
+//! at least a quarter of its bar (from the least to the greatest of 0 and its 2 % and 98 % area
+//! quantiles), or the figures are not drawn. Values beyond ±a take the end colours;
 //! undefined values (poles) are mid grey. Each picture is an SVG: the render, and beside it a
 //! colour bar with its values ([`colour_bar_svg`]).
 
@@ -43,8 +46,12 @@ use meshes::{control_mesh, parametric_mesh, with_markers};
 pub(crate) use colours::{colour_bar, colour_bar_svg, has_colour_bar};
 pub(crate) use meshes::beads;
 
-/// The fraction of the parametric surface's curvature values the colour scale spans.
+/// The fraction of the parametric surface's area whose curvature the colour scale spans.
 const COVERAGE: f64 = 0.95;
+
+/// The least fraction of its colour bar a curvature picture must use ([`curvature::Comparison`]'s
+/// `colour_use`): below it, `cargo xtask figures` fails rather than draw a grey picture.
+const MIN_COLOUR_USE: f64 = 0.25;
 
 /// The least colour-scale extent, relative to the curvature of the surface's size (1/r² for
 /// K, 1/r for H).
