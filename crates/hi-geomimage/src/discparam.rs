@@ -48,7 +48,9 @@
 
 use glam::{DVec2, DVec3, IVec2};
 
-use crate::flat::{self, FlatMap, Freedom, RelaxOptions, Relaxation, solve_until_embedded};
+use crate::flat::{
+    self, Embedded, FlatMap, Freedom, RelaxOptions, Relaxation, solve_until_embedded,
+};
 pub use crate::flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
 use crate::laplace::{CgOptions, Laplacian, NONE, Topology, head, tail};
 use crate::{Error, GeometryImage, MAX_TEXELS};
@@ -161,6 +163,48 @@ fn window_sums(turning: &[f64], s: &[f64], reach: f64) -> Vec<f64> {
         .collect()
 }
 
+/// The corners [`choose_corners`] tries after the evenly spaced ones: the four sharpest convex
+/// windows of `corner` (each at the sharpest single `turning` within it), if each turns by 45°
+/// or more and no side is shorter than L/8 or longer than 3L/8 (`s` the arc lengths).
+fn sharpest_corners(corner: &[f64], turning: &[f64], s: &[f64]) -> Option<[usize; 4]> {
+    let b = turning.len();
+    let total = s[b];
+    let apart = |j: usize, k: usize| {
+        let d = (s[j] - s[k]).abs();
+        d.min(total - d)
+    };
+    let mut order: Vec<usize> = (0..b).collect();
+    order.sort_by(|&x, &y| corner[y].total_cmp(&corner[x]).then(x.cmp(&y)));
+    let mut picked: Vec<usize> = Vec::with_capacity(4);
+    for k in order {
+        if picked.len() == 4 || corner[k] < std::f64::consts::FRAC_PI_4 {
+            break;
+        }
+        if picked.iter().all(|&q| apart(k, q) > total / 16.0) {
+            picked.push(k);
+        }
+    }
+    // Each at the sharpest single turn of its window.
+    for k in &mut picked {
+        let centre = *k;
+        *k = (0..b)
+            .filter(|&j| apart(j, centre) <= total / 32.0)
+            .max_by(|&x, &y| turning[x].total_cmp(&turning[y]).then(y.cmp(&x)))
+            .unwrap_or(centre);
+    }
+    if picked.len() != 4 {
+        return None;
+    }
+    picked.sort_unstable();
+    picked.dedup();
+    let sides_ok = picked.len() == 4
+        && (0..4).all(|m| {
+            let len = (s[picked[(m + 1) % 4]] - s[picked[m]]).rem_euclid(total);
+            (total / 8.0..=3.0 * total / 8.0).contains(&len)
+        });
+    sides_ok.then(|| [picked[0], picked[1], picked[2], picked[3]])
+}
+
 /// The loop positions of the four corners (see the module documentation), or `None` if no
 /// placement gives four distinct corners in order. `normals` holds the surface's normal at each
 /// boundary vertex, in loop order, to tell convex corners (turning towards the surface) from
@@ -190,10 +234,6 @@ fn choose_corners(
             if a.cross(c).dot(normals[k]) < 0.0 { -angle } else { angle }
         })
         .collect();
-    let apart = |j: usize, k: usize| {
-        let d = (s[j] - s[k]).abs();
-        d.min(total - d)
-    };
     let corner = window_sums(&turning, &s, if measured { total / 32.0 } else { -1.0 });
     let mut best: Option<(usize, f64, [usize; 4])> = None;
     let mut consider = |c: [usize; 4]| {
@@ -233,38 +273,8 @@ fn choose_corners(
     }
     // The four sharpest convex corners, if each turns by 45° or more and no side is shorter
     // than L/8 or longer than 3L/8.
-    if measured {
-        let mut order: Vec<usize> = (0..b).collect();
-        order.sort_by(|&x, &y| corner[y].total_cmp(&corner[x]).then(x.cmp(&y)));
-        let mut picked: Vec<usize> = Vec::with_capacity(4);
-        for k in order {
-            if picked.len() == 4 || corner[k] < std::f64::consts::FRAC_PI_4 {
-                break;
-            }
-            if picked.iter().all(|&q| apart(k, q) > total / 16.0) {
-                picked.push(k);
-            }
-        }
-        // Each at the sharpest single turn of its window.
-        for k in &mut picked {
-            let centre = *k;
-            *k = (0..b)
-                .filter(|&j| apart(j, centre) <= total / 32.0)
-                .max_by(|&x, &y| turning[x].total_cmp(&turning[y]).then(y.cmp(&x)))
-                .unwrap_or(centre);
-        }
-        if picked.len() == 4 {
-            picked.sort_unstable();
-            picked.dedup();
-            let sides_ok = picked.len() == 4
-                && (0..4).all(|m| {
-                    let len = (s[picked[(m + 1) % 4]] - s[picked[m]]).rem_euclid(total);
-                    (total / 8.0..=3.0 * total / 8.0).contains(&len)
-                });
-            if sides_ok {
-                consider([picked[0], picked[1], picked[2], picked[3]]);
-            }
-        }
+    if measured && let Some(picked) = sharpest_corners(&corner, &turning, &s) {
+        consider(picked);
     }
     best.map(|x| x.2)
 }
@@ -333,67 +343,12 @@ pub fn parameterise_disc(
     let cg = options.check()?;
     let topology = flat::check_input(positions, triangles, filled, 2, "disc")?;
     let topo_err = |what: String| Err(Error::Topology { what });
-    if topology.boundary.is_empty() {
-        return topo_err(
-            "the mesh is closed (no boundary edge); a disc has one boundary loop".to_owned(),
-        );
-    }
-    let loops = topology.boundary_loops(triangles);
-    if loops.len() != 1 {
-        return topo_err(format!(
-            "the mesh has {} boundary loops; a disc has exactly one",
-            loops.len()
-        ));
-    }
-    let chi = topology.euler_characteristic();
-    if chi != 1 {
-        return topo_err(format!(
-            "the mesh is not a disc: χ = V − E + F = {chi} with one boundary loop (genus {}), a disc has χ = 1",
-            (1 - chi) as f64 / 2.0
-        ));
-    }
-    let ring: Vec<u32> = loops[0].iter().map(|&h| tail(triangles, h)).collect();
+    let ring = boundary_ring(&topology, triangles)?;
     let b = ring.len();
-    if b < 4 {
-        return topo_err(format!(
-            "the boundary has {b} vertices; the square's four corners need at least 4"
-        ));
-    }
     let n = positions.len();
-    let mut position_in_ring = vec![NONE; n];
-    for (k, &v) in ring.iter().enumerate() {
-        position_in_ring[v as usize] = k as u32;
-    }
-    // Interior edges with both ends on the boundary.
-    let dividing: Vec<(usize, usize)> = (0..topology.twin.len() as u32)
-        .filter(|&h| {
-            let t = topology.twin[h as usize];
-            t != NONE
-                && h < t
-                && position_in_ring[tail(triangles, h) as usize] != NONE
-                && position_in_ring[head(triangles, h) as usize] != NONE
-        })
-        .map(|h| {
-            (
-                position_in_ring[tail(triangles, h) as usize] as usize,
-                position_in_ring[head(triangles, h) as usize] as usize,
-            )
-        })
-        .collect();
-    // The surface's normal at each boundary vertex (its triangles' normals, by area).
-    let normals: Vec<DVec3> = ring
-        .iter()
-        .map(|&v| {
-            topology
-                .outgoing(v)
-                .iter()
-                .map(|&h| {
-                    let [a, b, c] = triangles[(h / 3) as usize].map(|k| positions[k as usize]);
-                    (b - a).cross(c - a)
-                })
-                .sum()
-        })
-        .collect();
+    let mut position_in_ring = ring_positions(&ring, n);
+    let dividing = dividing_edges(&topology, triangles, &position_in_ring);
+    let normals = boundary_normals(&topology, triangles, positions, &ring);
     let Some(corner_at) = choose_corners(positions, &ring, &normals, &dividing) else {
         return topo_err(
             "no four distinct boundary vertices can be the square's corners".to_owned(),
@@ -405,35 +360,8 @@ pub fn parameterise_disc(
     for (k, &v) in ring.iter().enumerate() {
         position_in_ring[v as usize] = k as u32;
     }
-    // The boundary on the square by arc length along each side.
     let mut uv = vec![DVec2::splat(0.5); n];
-    let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
-    for m in 0..4 {
-        let (from, to) = (rel[m], if m == 3 { b } else { rel[m + 1] });
-        let mut lengths = vec![0.0];
-        for k in from..to {
-            let step =
-                (positions[ring[(k + 1) % b] as usize] - positions[ring[k] as usize]).length();
-            lengths.push(lengths[lengths.len() - 1] + step);
-        }
-        let total = lengths[lengths.len() - 1];
-        for k in from..to {
-            let t = if total > 0.0 {
-                lengths[k - from] / total
-            } else {
-                (k - from) as f64 / (to - from) as f64
-            };
-            let (a, c) = (square[m], square[(m + 1) % 4]);
-            // Exactly on the side: the coordinate the side fixes is copied, not interpolated.
-            let mut q = a + (c - a) * t;
-            if m % 2 == 0 {
-                q.y = a.y;
-            } else {
-                q.x = a.x;
-            }
-            uv[ring[k] as usize] = q;
-        }
-    }
+    boundary_on_square(positions, &ring, rel, &mut uv);
     let side_bits = |v: u32| {
         let k = position_in_ring[v as usize];
         if k == NONE { 0 } else { sides_of(k as usize, rel) }
@@ -444,64 +372,14 @@ pub fn parameterise_disc(
     let mut lap = Laplacian::new(&topology, triangles);
     lap.set_cotangent_weights(positions, triangles, None);
     let zero = vec![[0.0; 2]; n];
-    let mut x: Vec<[f64; 2]> = uv.iter().map(|p| p.to_array()).collect();
-    let offsets = vec![[IVec2::ZERO; 3]; triangles.len()];
-    let folds = |x: &[[f64; 2]]| {
-        let map = FlatMap {
-            uv: x.iter().map(|p| DVec2::from_array(*p)).collect(),
-            offsets: offsets.clone(),
-        };
-        flat::count_folds(triangles, &map, flat.as_deref())
-    };
-    let (harmonic_iterations, solved) = solve_until_embedded(
-        &lap,
-        Some(&fixed),
-        &zero,
-        &mut x,
-        cg,
-        lap.preconditioner(Some(&fixed), cg).as_ref(),
-        folds,
-    );
+    let (harmonic_iterations, solved, x, offsets) =
+        harmonic_map(&lap, &fixed, &uv, triangles, flat.as_deref(), cg);
     let mut residual = solved?.residual;
     let mut iterations = harmonic_iterations;
     let mut map = FlatMap { uv: x.iter().map(|p| DVec2::from_array(*p)).collect(), offsets };
-    let mut freedom: Vec<Freedom> = (0..n)
-        .map(|v| {
-            let k = position_in_ring[v];
-            if k == NONE {
-                return Freedom::Free;
-            }
-            let k = k as usize;
-            if rel.contains(&k) {
-                return Freedom::Fixed;
-            }
-            let bits = sides_of(k, rel);
-            let axis = if bits & 0b0101 != 0 { 0 } else { 1 };
-            Freedom::Slide { axis, a: ring[(k + b - 1) % b], b: ring[(k + 1) % b] }
-        })
-        .collect();
+    let mut freedom = freedoms(&position_in_ring, &ring, rel);
     if let Some(sides) = &flat_sides {
-        // What an edge cut off lies on its side: exactly there, and it stays (held in the
-        // relaxation's solves too).
-        for (f, t) in triangles.iter().enumerate() {
-            if sides[f] == 0 {
-                continue;
-            }
-            for &v in t {
-                freedom[v as usize] = Freedom::Fixed;
-                fixed[v as usize] = true;
-                if position_in_ring[v as usize] == NONE {
-                    let q = &mut map.uv[v as usize];
-                    *q = q.clamp(DVec2::ZERO, DVec2::ONE);
-                    match sides[f].trailing_zeros() {
-                        0 => q.y = 0.0,
-                        1 => q.x = 1.0,
-                        2 => q.y = 1.0,
-                        _ => q.x = 0.0,
-                    }
-                }
-            }
-        }
+        hold_cut_off(triangles, sides, &position_in_ring, &mut freedom, &mut fixed, &mut map);
     }
     let (harmonic, _) = flat::quality(positions, triangles, &map, flat.as_deref());
     if harmonic.folded_triangles > 0 {
@@ -545,6 +423,211 @@ pub fn parameterise_disc(
             solve_residual: residual,
         },
     })
+}
+
+/// Each ring vertex's position in `ring` ([`NONE`] for the interior), over `n` vertices.
+fn ring_positions(ring: &[u32], n: usize) -> Vec<u32> {
+    let mut position_in_ring = vec![NONE; n];
+    for (k, &v) in ring.iter().enumerate() {
+        position_in_ring[v as usize] = k as u32;
+    }
+    position_in_ring
+}
+
+/// The harmonic stage of [`parameterise_disc`]: the interior solved with the vertices `fixed`
+/// held, from `uv`, until the map folds nothing off the cut-off triangles `flat`; the
+/// iterations, the solve's outcome, the coordinates and the (zero) corner offsets.
+#[expect(clippy::type_complexity, reason = "a private tuple of the stage's results")]
+fn harmonic_map(
+    lap: &Laplacian,
+    fixed: &[bool],
+    uv: &[DVec2],
+    triangles: &[[u32; 3]],
+    flat: Option<&[bool]>,
+    cg: CgOptions,
+) -> (usize, Result<Embedded, Error>, Vec<[f64; 2]>, Vec<[IVec2; 3]>) {
+    let zero = vec![[0.0; 2]; uv.len()];
+    let mut x: Vec<[f64; 2]> = uv.iter().map(|p| p.to_array()).collect();
+    let offsets = vec![[IVec2::ZERO; 3]; triangles.len()];
+    let folds = |x: &[[f64; 2]]| {
+        let map = FlatMap {
+            uv: x.iter().map(|p| DVec2::from_array(*p)).collect(),
+            offsets: offsets.clone(),
+        };
+        flat::count_folds(triangles, &map, flat)
+    };
+    let (harmonic_iterations, solved) = solve_until_embedded(
+        lap,
+        Some(fixed),
+        &zero,
+        &mut x,
+        cg,
+        lap.preconditioner(Some(fixed), cg).as_ref(),
+        folds,
+    );
+    (harmonic_iterations, solved, x, offsets)
+}
+
+/// The first stage of [`parameterise_disc`]: the mesh's one boundary loop as a ring of
+/// vertices, or an error naming why the mesh is not a disc with at least 4 boundary vertices.
+fn boundary_ring(topology: &Topology, triangles: &[[u32; 3]]) -> Result<Vec<u32>, Error> {
+    let topo_err = |what: String| Err(Error::Topology { what });
+    if topology.boundary.is_empty() {
+        return topo_err(
+            "the mesh is closed (no boundary edge); a disc has one boundary loop".to_owned(),
+        );
+    }
+    let loops = topology.boundary_loops(triangles);
+    if loops.len() != 1 {
+        return topo_err(format!(
+            "the mesh has {} boundary loops; a disc has exactly one",
+            loops.len()
+        ));
+    }
+    let chi = topology.euler_characteristic();
+    if chi != 1 {
+        return topo_err(format!(
+            "the mesh is not a disc: χ = V − E + F = {chi} with one boundary loop (genus {}), a disc has χ = 1",
+            (1 - chi) as f64 / 2.0
+        ));
+    }
+    let ring: Vec<u32> = loops[0].iter().map(|&h| tail(triangles, h)).collect();
+    let b = ring.len();
+    if b < 4 {
+        return topo_err(format!(
+            "the boundary has {b} vertices; the square's four corners need at least 4"
+        ));
+    }
+    Ok(ring)
+}
+
+/// Interior edges with both ends on the boundary, as pairs of positions in the ring.
+fn dividing_edges(
+    topology: &Topology,
+    triangles: &[[u32; 3]],
+    position_in_ring: &[u32],
+) -> Vec<(usize, usize)> {
+    (0..topology.twin.len() as u32)
+        .filter(|&h| {
+            let t = topology.twin[h as usize];
+            t != NONE
+                && h < t
+                && position_in_ring[tail(triangles, h) as usize] != NONE
+                && position_in_ring[head(triangles, h) as usize] != NONE
+        })
+        .map(|h| {
+            (
+                position_in_ring[tail(triangles, h) as usize] as usize,
+                position_in_ring[head(triangles, h) as usize] as usize,
+            )
+        })
+        .collect()
+}
+
+/// The surface's normal at each boundary vertex (its triangles' normals, by area).
+fn boundary_normals(
+    topology: &Topology,
+    triangles: &[[u32; 3]],
+    positions: &[DVec3],
+    ring: &[u32],
+) -> Vec<DVec3> {
+    ring.iter()
+        .map(|&v| {
+            topology
+                .outgoing(v)
+                .iter()
+                .map(|&h| {
+                    let [a, b, c] = triangles[(h / 3) as usize].map(|k| positions[k as usize]);
+                    (b - a).cross(c - a)
+                })
+                .sum()
+        })
+        .collect()
+}
+
+/// The boundary on the square by arc length along each side (corner m of the square at ring
+/// position `rel[m]`), into `uv`.
+fn boundary_on_square(positions: &[DVec3], ring: &[u32], rel: [usize; 4], uv: &mut [DVec2]) {
+    let b = ring.len();
+    let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+    for m in 0..4 {
+        let (from, to) = (rel[m], if m == 3 { b } else { rel[m + 1] });
+        let mut lengths = vec![0.0];
+        for k in from..to {
+            let step =
+                (positions[ring[(k + 1) % b] as usize] - positions[ring[k] as usize]).length();
+            lengths.push(lengths[lengths.len() - 1] + step);
+        }
+        let total = lengths[lengths.len() - 1];
+        for k in from..to {
+            let t = if total > 0.0 {
+                lengths[k - from] / total
+            } else {
+                (k - from) as f64 / (to - from) as f64
+            };
+            let (a, c) = (square[m], square[(m + 1) % 4]);
+            // Exactly on the side: the coordinate the side fixes is copied, not interpolated.
+            let mut q = a + (c - a) * t;
+            if m % 2 == 0 {
+                q.y = a.y;
+            } else {
+                q.x = a.x;
+            }
+            uv[ring[k] as usize] = q;
+        }
+    }
+}
+
+/// How each vertex may move in the relaxation: the corners fixed, the other boundary vertices
+/// sliding along their side, the interior free.
+fn freedoms(position_in_ring: &[u32], ring: &[u32], rel: [usize; 4]) -> Vec<Freedom> {
+    let b = ring.len();
+    (0..position_in_ring.len())
+        .map(|v| {
+            let k = position_in_ring[v];
+            if k == NONE {
+                return Freedom::Free;
+            }
+            let k = k as usize;
+            if rel.contains(&k) {
+                return Freedom::Fixed;
+            }
+            let bits = sides_of(k, rel);
+            let axis = if bits & 0b0101 != 0 { 0 } else { 1 };
+            Freedom::Slide { axis, a: ring[(k + b - 1) % b], b: ring[(k + 1) % b] }
+        })
+        .collect()
+}
+
+/// What an edge cut off lies on its side: exactly there, and it stays (held in the
+/// relaxation's solves too).
+fn hold_cut_off(
+    triangles: &[[u32; 3]],
+    sides: &[u8],
+    position_in_ring: &[u32],
+    freedom: &mut [Freedom],
+    fixed: &mut [bool],
+    map: &mut FlatMap,
+) {
+    for (f, t) in triangles.iter().enumerate() {
+        if sides[f] == 0 {
+            continue;
+        }
+        for &v in t {
+            freedom[v as usize] = Freedom::Fixed;
+            fixed[v as usize] = true;
+            if position_in_ring[v as usize] == NONE {
+                let q = &mut map.uv[v as usize];
+                *q = q.clamp(DVec2::ZERO, DVec2::ONE);
+                match sides[f].trailing_zeros() {
+                    0 => q.y = 0.0,
+                    1 => q.x = 1.0,
+                    2 => q.y = 1.0,
+                    _ => q.x = 0.0,
+                }
+            }
+        }
+    }
 }
 
 /// The triangles cut off by an interior edge joining two vertices of one side (they lie flat
