@@ -46,6 +46,8 @@
 //! flattened octahedron — whose harmonic surface is periodic, symmetric about u = ½ and
 //! v = ½, and on the quarter u, v ∈ [0, ½] is the open sheet.
 
+mod corners;
+
 use glam::{DVec2, DVec3, IVec2};
 
 use crate::flat::{
@@ -54,9 +56,6 @@ use crate::flat::{
 pub use crate::flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
 use crate::laplace::{CgOptions, Laplacian, NONE, Topology, head, tail};
 use crate::{Error, GeometryImage, MAX_TEXELS};
-
-mod corners;
-
 use corners::{choose_corners, sides_of};
 
 /// The settings of [`parameterise_disc`].
