@@ -11,7 +11,7 @@ use super::*;
 /// [P₁₁, P₁₂, P₂₂].
 pub(crate) type Metric = [f64; 3];
 
-/// Sums over a block of triangles for [`quality`].
+/// Sums over a block of triangles for [`quality`](fn@quality).
 #[derive(Clone, Copy)]
 struct Sums {
     /// Surface area, (u, v) area, Σ A |pᵤ|², Σ A |pᵥ|² (A the surface area).

@@ -33,7 +33,7 @@ pub(super) struct Hierarchy {
     /// now (recomputed when a face's corners change).
     pub(super) face_area: Vec<f64>,
     pub(super) face_l2: Vec<[f64; 3]>,
-    /// The weight of the shape term of [`face_energy`].
+    /// The weight of the shape term of [`face_energy`](super::relax::face_energy).
     pub(super) face_shape: Vec<f64>,
     /// Surface area over the sphere's, for the shape weights.
     pub(super) shape_scale: f64,

@@ -9,9 +9,9 @@ use super::holes::{boundary_loops, fill_hole};
 use super::{ClosedMesh, Repair, edge_key};
 
 /// The length of the shortest loop found on the closed mesh `mesh` that does not separate it
-/// (the loop [`close_part`] would cut first, found the same way), or `None` for a surface of
-/// genus 0. A handle's loop as short as a few edges is a tunnel between two sheets that nearly
-/// touch, not a handle of the object.
+/// (the loop [`close_part`](super::close_part) would cut first, found the same way), or
+/// `None` for a surface of genus 0. A handle's loop as short as a few edges is a tunnel
+/// between two sheets that nearly touch, not a handle of the object.
 ///
 /// # Examples
 ///
@@ -45,8 +45,8 @@ pub fn shortest_handle(mesh: &ClosedMesh) -> Option<f64> {
         .min_by(f64::total_cmp)
 }
 
-/// The sides of the blocks in which [`close_mesh`] looks for loops that cut handles (then over
-/// the whole mesh), in mean edge lengths of the mesh.
+/// The sides of the blocks in which [`close_mesh`](super::close_mesh) looks for loops that
+/// cut handles (then over the whole mesh), in mean edge lengths of the mesh.
 pub const HANDLE_BLOCKS: [f64; 3] = [8.0, 32.0, 128.0];
 
 /// At most this many handles are cut.
@@ -62,11 +62,11 @@ pub(super) fn euler_characteristic(vertices: usize, faces: usize, boundary_edges
     v - (3 * f + boundary_edges) / 2 + f
 }
 
-/// Step 7 of [`close_mesh`] on a closed, consistently oriented mesh: while its genus is above
-/// 0, cuts the shortest non-separating loops found ([`handle_loops`], in blocks of every
-/// size of [`HANDLE_BLOCKS`] and over the whole mesh; several at once when they are disjoint
-/// and do not separate the surface together, [`independent_loops`]) and closes both sides of
-/// each cut.
+/// Step 7 of [`close_mesh`](super::close_mesh) on a closed, consistently oriented mesh: while
+/// its genus is above 0, cuts the shortest non-separating loops found ([`handle_loops`], in
+/// blocks of every size of [`HANDLE_BLOCKS`] and over the whole mesh; several at once when
+/// they are disjoint and do not separate the surface together, [`independent_loops`]) and
+/// closes both sides of each cut.
 pub(super) fn cut_handles(
     faces: &mut Vec<[u32; 3]>,
     positions: &mut Vec<DVec3>,

@@ -325,7 +325,8 @@ pub fn primitive_triangles(mode: ::gltf::mesh::Mode, indices: &[u32]) -> Option<
 
 /// Reads a `.gltf` (with its buffers) or `.glb` file: the triangle primitives (`TRIANGLES`,
 /// `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh the scene places, concatenated in world space
-/// (points and lines, such as the edges of [`write_glb_with_edges`], are left out).
+/// (points and lines, such as the edges of
+/// [`write_glb_with_edges`](super::write_glb_with_edges), are left out).
 ///
 /// The scene is the default one, or every scene when there is none (a file with no scene at
 /// all has its meshes read as they are). Each node's world transform is applied to its mesh's
