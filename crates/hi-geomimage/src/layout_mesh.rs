@@ -90,64 +90,12 @@ pub fn layout_mesh(
     let (m, n) = (surface.m(), surface.n());
     let k = per_texel;
     let (rows, cols) = (k.saturating_mul(m), k.saturating_mul(n));
-    if k == 0 || rows.saturating_mul(cols) > MAX_TEXELS {
-        return Err(Error::InvalidOption {
-            name: "samples per texel",
-            value: k as f64,
-            expected: "at least 1, and at most 2²⁶ samples in all",
-        });
-    }
-    if layout == Some(Layout::Octahedron) && k % 2 == 1 {
-        return Err(Error::InvalidOption {
-            name: "samples per texel",
-            value: k as f64,
-            expected: "even for the plain octahedron (its edges lie half a texel off the grid)",
-        });
-    }
-    if matches!(layout, Some(Layout::Sphere | Layout::FlatOctahedron)) && m % 2 == 1 {
-        return Err(Error::InvalidResolution {
-            rows: m,
-            cols: n,
-            expected: "an even number of rows (both poles are texels)",
-        });
-    }
-    if domain == Domain::Sheet && (m % 2 == 1 || n % 2 == 1) {
-        return Err(Error::InvalidResolution {
-            rows: m,
-            cols: n,
-            expected: "an even number of rows and columns (a sheet's image is mirrored)",
-        });
-    }
+    check_sizes(domain, layout, (m, n), k)?;
     let value = surface.sample_uniform(rows, cols, 0, 0)?.values;
     // The window's grid: (row, column) offsets, unwrapped; its direction and sample index.
-    let (row_range, col_range): (Vec<i64>, Vec<i64>) = match domain {
-        Domain::Sphere(Layout::Sphere | Layout::FlatOctahedron) => {
-            ((0..=rows as i64 / 2).collect(), (0..=cols as i64).collect())
-        }
-        Domain::Sphere(Layout::Octahedron) => {
-            let (h_r, h_c) = ((k / 2) as i64, (k / 2) as i64);
-            ((-h_r..=rows as i64 - h_r).collect(), (-h_c..=cols as i64 - h_c).collect())
-        }
-        Domain::Torus => ((0..=rows as i64).collect(), (0..=cols as i64).collect()),
-        Domain::Sheet => ((0..=rows as i64 / 2).collect(), (0..=cols as i64 / 2).collect()),
-    };
-    let direction = |layout: Layout, i: i64, j: i64| -> DVec3 {
-        match layout {
-            Layout::Octahedron => {
-                // Texel (a, b) of the image is at s = −1 + (2a + 1)/m: the grid point i is at
-                // a = i/k.
-                let s = -1.0 + (2.0 * i as f64 / k as f64 + 1.0) / m as f64;
-                let t = -1.0 + (2.0 * j as f64 / k as f64 + 1.0) / n as f64;
-                octahedral_direction(s, t)
-            }
-            _ => layout.direction(
-                i.rem_euclid(rows as i64) as usize,
-                j.rem_euclid(cols as i64) as usize,
-                rows,
-                cols,
-            ),
-        }
-    };
+    let (row_range, col_range) = grid_ranges(domain, rows, cols, k);
+    let direction =
+        |layout: Layout, i: i64, j: i64| grid_direction(layout, (i, j), (m, n, k), (rows, cols));
     let wrap = |i: i64, j: i64| {
         (i.rem_euclid(rows as i64) as usize) * cols + j.rem_euclid(cols as i64) as usize
     };
@@ -205,6 +153,139 @@ pub fn layout_mesh(
     }
     let mut positions: Vec<DVec3> =
         sum.iter().zip(&count).map(|(s, &c)| *s / f64::from(c)).collect();
+    let triangles = grid_triangles(&positions, &vertex_of, (nr, nc), domain.is_closed());
+    let normals = vertex_normals(&positions, &triangles);
+    let (uvs, texel) = uvs_and_texels(
+        (&row_range, &col_range),
+        &vertex_of,
+        &first,
+        &source,
+        (rows, cols),
+        (m, n, k),
+    );
+    positions.shrink_to_fit();
+    let mesh = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
+    Ok(LayoutMesh { mesh, texel })
+}
+
+/// The direction grid point (i, j) of [`layout_mesh`] looks along in `layout`, for a surface
+/// of m × n texels sampled `k` times per texel (rows × cols samples).
+fn grid_direction(
+    layout: Layout,
+    (i, j): (i64, i64),
+    (m, n, k): (usize, usize, usize),
+    (rows, cols): (usize, usize),
+) -> DVec3 {
+    match layout {
+        Layout::Octahedron => {
+            // Texel (a, b) of the image is at s = −1 + (2a + 1)/m: the grid point i is at
+            // a = i/k.
+            let s = -1.0 + (2.0 * i as f64 / k as f64 + 1.0) / m as f64;
+            let t = -1.0 + (2.0 * j as f64 / k as f64 + 1.0) / n as f64;
+            octahedral_direction(s, t)
+        }
+        _ => layout.direction(
+            i.rem_euclid(rows as i64) as usize,
+            j.rem_euclid(cols as i64) as usize,
+            rows,
+            cols,
+        ),
+    }
+}
+
+/// UVs of [`layout_mesh`]: the (u, v) of each vertex's first grid point; and the nearest
+/// texel of the surface's m × n grid (`k` samples per texel).
+fn uvs_and_texels(
+    (row_range, col_range): (&[i64], &[i64]),
+    vertex_of: &[u32],
+    first: &[usize],
+    source: &dyn Fn(i64, i64) -> usize,
+    (rows, cols): (usize, usize),
+    (m, n, k): (usize, usize, usize),
+) -> (Vec<DVec2>, Vec<u32>) {
+    let nc = col_range.len();
+    let mut uvs = vec![DVec2::ZERO; first.len()];
+    let mut texel = vec![0u32; first.len()];
+    for (a, &i) in row_range.iter().enumerate() {
+        for (b, &j) in col_range.iter().enumerate() {
+            let g = vertex_of[a * nc + b] as usize;
+            if first[g] == source(i, j) {
+                uvs[g] = DVec2::new(i as f64 / rows as f64, j as f64 / cols as f64);
+                let (ti, tj) =
+                    ((i as f64 / k as f64).round() as i64, (j as f64 / k as f64).round() as i64);
+                texel[g] = u32::try_from(
+                    ti.rem_euclid(m as i64) as usize * n + tj.rem_euclid(n as i64) as usize,
+                )
+                .unwrap_or(u32::MAX);
+            }
+        }
+    }
+    (uvs, texel)
+}
+
+/// The first stage of [`layout_mesh`]: the checks of the samples per texel `k` and of the
+/// surface's size (m, n) for the domain.
+fn check_sizes(
+    domain: Domain,
+    layout: Option<Layout>,
+    (m, n): (usize, usize),
+    k: usize,
+) -> Result<(), Error> {
+    let (rows, cols) = (k.saturating_mul(m), k.saturating_mul(n));
+    if k == 0 || rows.saturating_mul(cols) > MAX_TEXELS {
+        return Err(Error::InvalidOption {
+            name: "samples per texel",
+            value: k as f64,
+            expected: "at least 1, and at most 2²⁶ samples in all",
+        });
+    }
+    if layout == Some(Layout::Octahedron) && k % 2 == 1 {
+        return Err(Error::InvalidOption {
+            name: "samples per texel",
+            value: k as f64,
+            expected: "even for the plain octahedron (its edges lie half a texel off the grid)",
+        });
+    }
+    if matches!(layout, Some(Layout::Sphere | Layout::FlatOctahedron)) && m % 2 == 1 {
+        return Err(Error::InvalidResolution {
+            rows: m,
+            cols: n,
+            expected: "an even number of rows (both poles are texels)",
+        });
+    }
+    if domain == Domain::Sheet && (m % 2 == 1 || n % 2 == 1) {
+        return Err(Error::InvalidResolution {
+            rows: m,
+            cols: n,
+            expected: "an even number of rows and columns (a sheet's image is mirrored)",
+        });
+    }
+    Ok(())
+}
+
+/// The window's grid of [`layout_mesh`]: its (row, column) offsets, unwrapped.
+fn grid_ranges(domain: Domain, rows: usize, cols: usize, k: usize) -> (Vec<i64>, Vec<i64>) {
+    match domain {
+        Domain::Sphere(Layout::Sphere | Layout::FlatOctahedron) => {
+            ((0..=rows as i64 / 2).collect(), (0..=cols as i64).collect())
+        }
+        Domain::Sphere(Layout::Octahedron) => {
+            let (h_r, h_c) = ((k / 2) as i64, (k / 2) as i64);
+            ((-h_r..=rows as i64 - h_r).collect(), (-h_c..=cols as i64 - h_c).collect())
+        }
+        Domain::Torus => ((0..=rows as i64).collect(), (0..=cols as i64).collect()),
+        Domain::Sheet => ((0..=rows as i64 / 2).collect(), (0..=cols as i64 / 2).collect()),
+    }
+}
+
+/// The triangles of [`layout_mesh`]: two per grid quad (less those welded to a point), wound
+/// outward (a positive enclosed volume) when the domain is `closed` (a sheet keeps pᵤ × pᵥ).
+fn grid_triangles(
+    positions: &[DVec3],
+    vertex_of: &[u32],
+    (nr, nc): (usize, usize),
+    closed: bool,
+) -> Vec<[u32; 3]> {
     let mut triangles = Vec::with_capacity(2 * (nr - 1) * (nc - 1));
     for a in 0..nr - 1 {
         for b in 0..nc - 1 {
@@ -230,15 +311,19 @@ pub fn layout_mesh(
             a.dot(b.cross(c))
         })
         .sum();
-    let flip = domain.is_closed() && volume < 0.0;
+    let flip = closed && volume < 0.0;
     if flip {
         for t in &mut triangles {
             t.swap(1, 2);
         }
     }
-    // Normals: area-weighted means of the triangles' normals.
+    triangles
+}
+
+/// Normals: area-weighted means of the triangles' normals.
+fn vertex_normals(positions: &[DVec3], triangles: &[[u32; 3]]) -> Vec<DVec3> {
     let mut normals = vec![DVec3::ZERO; positions.len()];
-    for t in &triangles {
+    for t in triangles {
         let [a, b, c] = t.map(|v| positions[v as usize]);
         let w = (b - a).cross(c - a);
         for &v in t {
@@ -248,24 +333,5 @@ pub fn layout_mesh(
     for n in &mut normals {
         *n = n.try_normalize().unwrap_or(DVec3::Z);
     }
-    // UVs: the (u, v) of the vertex's first grid point; and the nearest texel.
-    let mut uvs = vec![DVec2::ZERO; positions.len()];
-    let mut texel = vec![0u32; positions.len()];
-    for (a, &i) in row_range.iter().enumerate() {
-        for (b, &j) in col_range.iter().enumerate() {
-            let g = vertex_of[a * nc + b] as usize;
-            if first[g] == source(i, j) {
-                uvs[g] = DVec2::new(i as f64 / rows as f64, j as f64 / cols as f64);
-                let (ti, tj) =
-                    ((i as f64 / k as f64).round() as i64, (j as f64 / k as f64).round() as i64);
-                texel[g] = u32::try_from(
-                    ti.rem_euclid(m as i64) as usize * n + tj.rem_euclid(n as i64) as usize,
-                )
-                .unwrap_or(u32::MAX);
-            }
-        }
-    }
-    positions.shrink_to_fit();
-    let mesh = TriangleMesh::try_new(positions, normals, uvs, triangles)?;
-    Ok(LayoutMesh { mesh, texel })
+    normals
 }

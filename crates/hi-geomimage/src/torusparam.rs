@@ -309,23 +309,7 @@ pub fn parameterise_torus(
 ) -> Result<TorusParam, Error> {
     let cg = options.check()?;
     let topology = flat::check_input(positions, triangles, filled, 14, "torus")?;
-    if !topology.boundary.is_empty() {
-        return Err(Error::Topology {
-            what: format!(
-                "the mesh is not closed: {} edges have a triangle on one side only, a torus has none",
-                topology.boundary.len()
-            ),
-        });
-    }
-    let chi = topology.euler_characteristic();
-    if chi != 0 {
-        let genus = (2 - chi) as f64 / 2.0;
-        return Err(Error::Topology {
-            what: format!(
-                "the mesh has genus {genus} (χ = V − E + F = {chi}); a torus has genus 1"
-            ),
-        });
-    }
+    check_torus(&topology)?;
     let n = positions.len();
     let mut form = cohomology_basis(&topology, triangles)?;
     let mut lap = Laplacian::new(&topology, triangles);
@@ -335,16 +319,7 @@ pub fn parameterise_torus(
     let mut x = vec![[0.0; 2]; n];
     let offsets = offsets_from_form(triangles, &form);
     // Folds against the map's own orientation (it may come out clockwise).
-    let folds = |x: &[[f64; 2]]| {
-        let map = FlatMap {
-            uv: x.iter().map(|p| DVec2::from_array(*p)).collect(),
-            offsets: offsets.clone(),
-        };
-        let dets: Vec<f64> =
-            (0..triangles.len()).map(|f| flat::det(map.corners(triangles, f))).collect();
-        let sign = dets.iter().sum::<f64>().signum();
-        dets.iter().filter(|&&d| d * sign <= 0.0).count()
-    };
+    let folds = |x: &[[f64; 2]]| oriented_folds(triangles, &offsets, x);
     let (harmonic_iterations, solved) = solve_until_embedded(
         &lap,
         Some(&fixed),
@@ -374,19 +349,7 @@ pub fn parameterise_torus(
         });
     }
     // The Gram matrix of the two harmonic forms, and the reduction of the periods' form G⁻¹.
-    let mut gram = [0.0; 3];
-    for i in 0..n {
-        let (cols, ws, sides) = lap.row(i);
-        for ((&j, &w), s) in cols.iter().zip(ws).zip(sides) {
-            if (j as usize) < i {
-                continue;
-            }
-            let h = map.uv[j as usize] - map.uv[i] + form[s[0] as usize].as_dvec2();
-            gram[0] += w * h.x * h.x;
-            gram[1] += w * h.x * h.y;
-            gram[2] += w * h.y * h.y;
-        }
-    }
+    let gram = form_gram(&lap, &map, &form);
     let periods = [gram[2], -gram[1], gram[0]];
     let basis = reduce(periods);
     apply_basis(&mut map, &mut form, basis);
@@ -432,6 +395,61 @@ pub fn parameterise_torus(
             solve_residual: residual,
         },
     })
+}
+
+/// The first check of [`parameterise_torus`]: the mesh is closed and of genus 1.
+fn check_torus(topology: &Topology) -> Result<(), Error> {
+    if !topology.boundary.is_empty() {
+        return Err(Error::Topology {
+            what: format!(
+                "the mesh is not closed: {} edges have a triangle on one side only, a torus has none",
+                topology.boundary.len()
+            ),
+        });
+    }
+    let chi = topology.euler_characteristic();
+    if chi != 0 {
+        let genus = (2 - chi) as f64 / 2.0;
+        return Err(Error::Topology {
+            what: format!(
+                "the mesh has genus {genus} (χ = V − E + F = {chi}); a torus has genus 1"
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// The folds of the map with coordinates `x` and corner `offsets`, against the map's own
+/// orientation (it may come out clockwise).
+fn oriented_folds(triangles: &[[u32; 3]], offsets: &[[IVec2; 3]], x: &[[f64; 2]]) -> usize {
+    let map = FlatMap {
+        uv: x.iter().map(|p| DVec2::from_array(*p)).collect(),
+        offsets: offsets.to_vec(),
+    };
+    let dets: Vec<f64> =
+        (0..triangles.len()).map(|f| flat::det(map.corners(triangles, f))).collect();
+    let sign = dets.iter().sum::<f64>().signum();
+    dets.iter().filter(|&&d| d * sign <= 0.0).count()
+}
+
+/// The Gram matrix [G₁₁, G₁₂, G₂₂] of the two harmonic forms of the map (its coordinates
+/// `map` plus the integer `form`) in the Laplacian's inner product.
+fn form_gram(lap: &Laplacian, map: &FlatMap, form: &[IVec2]) -> [f64; 3] {
+    let n = lap.size();
+    let mut gram = [0.0; 3];
+    for i in 0..n {
+        let (cols, ws, sides) = lap.row(i);
+        for ((&j, &w), s) in cols.iter().zip(ws).zip(sides) {
+            if (j as usize) < i {
+                continue;
+            }
+            let h = map.uv[j as usize] - map.uv[i] + form[s[0] as usize].as_dvec2();
+            gram[0] += w * h.x * h.x;
+            gram[1] += w * h.x * h.y;
+            gram[2] += w * h.y * h.y;
+        }
+    }
+    gram
 }
 
 /// Changes to the basis B (columns, determinant 1): u ↦ B⁻¹u, and the same for the jumps.

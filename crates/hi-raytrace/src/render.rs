@@ -252,102 +252,14 @@ pub fn render(
     let n_tiles = (nx * ny) as usize;
     let done = AtomicUsize::new(0);
     let aspect = f64::from(w) / f64::from(h);
-    let spp = options.samples_per_pixel;
     let background = scene.background();
     // The tiles on all cores (the `parallel` feature) or in turn; each is computed alone, so
     // the image is the same either way.
     let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = (0..n_tiles)
         .into_par_iter()
         .map(|tile| {
-            let (tx, ty) = (tile as u32 % nx, tile as u32 / nx);
-            let (x0, y0) = (tx * ts, ty * ts);
-            let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
-            let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
-            let mut counts = RayCounts::default();
-            // Samples `from..to` of the `spp` of pixel (x, y), added to `sum`; returns the
-            // spread of these samples in their widest channel.
-            let mut samples = |x: u32, y: u32, from: u32, to: u32, sum: &mut [f64; 3]| {
-                let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-                for s in from..to {
-                    let (ox, oy) = sample_offset(x, y, s, spp);
-                    let ray = camera.ray(
-                        (f64::from(x) + ox) / f64::from(w),
-                        (f64::from(y) + oy) / f64::from(h),
-                        aspect,
-                    );
-                    counts.camera += 1;
-                    let color = match scene.intersect(&ray) {
-                        Some(hit) => {
-                            counts.hits += 1;
-                            let (c, n_shadow, blocked) = scene.shade(&ray, &hit);
-                            counts.shadow += n_shadow;
-                            counts.shadowed += usize::from(blocked);
-                            c
-                        }
-                        None => background,
-                    };
-                    for k in 0..3 {
-                        sum[k] += f64::from(color[k]);
-                        lo[k] = lo[k].min(color[k]);
-                        hi[k] = hi[k].max(color[k]);
-                    }
-                }
-                (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max)
-            };
-            let first = options.first_pass;
-            let adaptive = first > 0 && first < spp;
-            // The first pass over the tile and a one-pixel border around it (a pixel whose
-            // few samples all miss a thin edge shows it by differing from a neighbour): the
-            // sum of each pixel's first samples, their mean and their spread.
-            let (bx0, by0) = (x0.saturating_sub(1), y0.saturating_sub(1));
-            let (bx1, by1) = ((x1 + 1).min(w), (y1 + 1).min(h));
-            let bw = (bx1 - bx0) as usize;
-            let coarse: Vec<([f64; 3], [f64; 3], f32)> = if adaptive {
-                (by0..by1)
-                    .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))
-                    .map(|(x, y)| {
-                        let mut sum = [0.0; 3];
-                        let spread = samples(x, y, 0, first, &mut sum);
-                        (sum, sum.map(|c| c / f64::from(first)), spread)
-                    })
-                    .collect()
-            } else {
-                Vec::new()
-            };
-            let at = |x: u32, y: u32| &coarse[(y - by0) as usize * bw + (x - bx0) as usize];
-            for y in y0..y1 {
-                for x in x0..x1 {
-                    let mean = if adaptive {
-                        let (sum, mean, spread) = *at(x, y);
-                        let smooth = spread <= ADAPTIVE_SPREAD
-                            && (y.saturating_sub(1)..(y + 2).min(h)).all(|ny| {
-                                (x.saturating_sub(1)..(x + 2).min(w)).all(|nx| {
-                                    let other = at(nx, ny).1;
-                                    (0..3).all(|k| {
-                                        ((other[k] - mean[k]).abs() as f32) <= ADAPTIVE_SPREAD
-                                    })
-                                })
-                            });
-                        if smooth {
-                            mean
-                        } else {
-                            // The rest of the samples, after the first pass's.
-                            let mut sum = sum;
-                            samples(x, y, first, spp, &mut sum);
-                            sum.map(|c| c / f64::from(spp))
-                        }
-                    } else {
-                        let mut sum = [0.0; 3];
-                        samples(x, y, 0, spp, &mut sum);
-                        sum.map(|c| c / f64::from(spp))
-                    };
-                    let px = mean.map(|c| {
-                        let linear = c.clamp(0.0, 1.0) as f32;
-                        (linear_to_srgb(linear) * 255.0).round().clamp(0.0, 255.0) as u8
-                    });
-                    pixels.push(px);
-                }
-            }
+            let (pixels, counts) = render_tile(scene, camera, options, tile, aspect, background);
+            let (x0, y0) = ((tile as u32 % nx) * ts, (tile as u32 / nx) * ts);
             let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
             if let Some(report) = progress {
                 report(finished, n_tiles);
@@ -369,6 +281,111 @@ pub fn render(
         counts.shadowed += c.shadowed;
     }
     Ok(Rendering { width: w, height: h, pixels: image_pixels, counts, elapsed: start.elapsed() })
+}
+
+/// One tile of [`render`] (tile index `tile`, row-major), on its own: its pixels, row by
+/// row, and the rays cast. With a first pass (`options.first_pass`), a pixel whose first
+/// samples agree with each other and with its neighbours' is their mean; every other pixel
+/// takes all `samples_per_pixel`.
+fn render_tile(
+    scene: &Scene,
+    camera: &Camera,
+    options: &RenderOptions,
+    tile: usize,
+    aspect: f64,
+    background: [f32; 3],
+) -> (Vec<[u8; 3]>, RayCounts) {
+    let (w, h, ts) = (options.width, options.height, options.tile_size);
+    let nx = w.div_ceil(ts);
+    let spp = options.samples_per_pixel;
+    let (tx, ty) = (tile as u32 % nx, tile as u32 / nx);
+    let (x0, y0) = (tx * ts, ty * ts);
+    let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
+    let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+    let mut counts = RayCounts::default();
+    // Samples `from..to` of the `spp` of pixel (x, y), added to `sum`; returns the
+    // spread of these samples in their widest channel.
+    let mut samples = |x: u32, y: u32, from: u32, to: u32, sum: &mut [f64; 3]| {
+        let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+        for s in from..to {
+            let (ox, oy) = sample_offset(x, y, s, spp);
+            let ray = camera.ray(
+                (f64::from(x) + ox) / f64::from(w),
+                (f64::from(y) + oy) / f64::from(h),
+                aspect,
+            );
+            counts.camera += 1;
+            let color = match scene.intersect(&ray) {
+                Some(hit) => {
+                    counts.hits += 1;
+                    let (c, n_shadow, blocked) = scene.shade(&ray, &hit);
+                    counts.shadow += n_shadow;
+                    counts.shadowed += usize::from(blocked);
+                    c
+                }
+                None => background,
+            };
+            for k in 0..3 {
+                sum[k] += f64::from(color[k]);
+                lo[k] = lo[k].min(color[k]);
+                hi[k] = hi[k].max(color[k]);
+            }
+        }
+        (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max)
+    };
+    let first = options.first_pass;
+    let adaptive = first > 0 && first < spp;
+    // The first pass over the tile and a one-pixel border around it (a pixel whose
+    // few samples all miss a thin edge shows it by differing from a neighbour): the
+    // sum of each pixel's first samples, their mean and their spread.
+    let (bx0, by0) = (x0.saturating_sub(1), y0.saturating_sub(1));
+    let (bx1, by1) = ((x1 + 1).min(w), (y1 + 1).min(h));
+    let bw = (bx1 - bx0) as usize;
+    let coarse: Vec<([f64; 3], [f64; 3], f32)> = if adaptive {
+        (by0..by1)
+            .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))
+            .map(|(x, y)| {
+                let mut sum = [0.0; 3];
+                let spread = samples(x, y, 0, first, &mut sum);
+                (sum, sum.map(|c| c / f64::from(first)), spread)
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let at = |x: u32, y: u32| &coarse[(y - by0) as usize * bw + (x - bx0) as usize];
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let mean = if adaptive {
+                let (sum, mean, spread) = *at(x, y);
+                let smooth = spread <= ADAPTIVE_SPREAD
+                    && (y.saturating_sub(1)..(y + 2).min(h)).all(|ny| {
+                        (x.saturating_sub(1)..(x + 2).min(w)).all(|nx| {
+                            let other = at(nx, ny).1;
+                            (0..3).all(|k| ((other[k] - mean[k]).abs() as f32) <= ADAPTIVE_SPREAD)
+                        })
+                    });
+                if smooth {
+                    mean
+                } else {
+                    // The rest of the samples, after the first pass's.
+                    let mut sum = sum;
+                    samples(x, y, first, spp, &mut sum);
+                    sum.map(|c| c / f64::from(spp))
+                }
+            } else {
+                let mut sum = [0.0; 3];
+                samples(x, y, 0, spp, &mut sum);
+                sum.map(|c| c / f64::from(spp))
+            };
+            let px = mean.map(|c| {
+                let linear = c.clamp(0.0, 1.0) as f32;
+                (linear_to_srgb(linear) * 255.0).round().clamp(0.0, 255.0) as u8
+            });
+            pixels.push(px);
+        }
+    }
+    (pixels, counts)
 }
 
 #[cfg(test)]

@@ -75,91 +75,12 @@ pub struct Grid<'a> {
 pub fn surface_nets(grid: &Grid<'_>) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Error> {
     let &Grid { origin, spacing, dims, values } = grid;
     let [nx, ny, nz] = dims;
-    if dims.iter().any(|&d| d < 2) {
-        return Err(Error::InvalidOption {
-            name: "grid nodes along an axis",
-            value: dims.iter().copied().min().unwrap_or(0) as f64,
-            expected: "at least 2",
-        });
-    }
-    let nodes = nx.checked_mul(ny).and_then(|m| m.checked_mul(nz)).unwrap_or(usize::MAX);
-    if nodes > MAX_NODES {
-        return Err(Error::InvalidOption {
-            name: "grid nodes",
-            value: nodes as f64,
-            expected: "at most 2^27",
-        });
-    }
-    if values.len() != nodes {
-        return Err(Error::InvalidOption {
-            name: "grid values",
-            value: values.len() as f64,
-            expected: "one value per node",
-        });
-    }
-    if !(spacing.is_finite() && spacing > 0.0) {
-        return Err(Error::InvalidOption {
-            name: "grid spacing",
-            value: spacing,
-            expected: "positive and finite",
-        });
-    }
-    if !origin.is_finite() {
-        return Err(Error::NonFinite { what: NonFiniteInput::GridOrigin });
-    }
-    if let Some(k) = values.iter().position(|v| v.is_infinite()) {
-        return Err(Error::NonFinite { what: NonFiniteInput::GridValue(k) });
-    }
+    check_grid(grid)?;
     let node = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
     let values = &resolve_ambiguous_faces(values, dims);
     let (cx, cy) = (nx - 1, ny - 1);
     let cell = |i: usize, j: usize, k: usize| i + cx * (j + cy * k);
-    // The corners of a cell, as offsets, and its twelve edges as pairs of corners.
-    const CORNERS: [[usize; 3]; 8] =
-        [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]];
-    const EDGES: [[usize; 2]; 12] = [
-        [0, 1],
-        [2, 3],
-        [4, 5],
-        [6, 7],
-        [0, 2],
-        [1, 3],
-        [4, 6],
-        [5, 7],
-        [0, 4],
-        [1, 5],
-        [2, 6],
-        [3, 7],
-    ];
-    let mut vertex = vec![NONE; cx * cy * (nz - 1)];
-    let mut points = Vec::new();
-    for k in 0..nz - 1 {
-        for j in 0..cy {
-            for i in 0..cx {
-                let v: [f64; 8] = CORNERS.map(|c| values[node(i + c[0], j + c[1], k + c[2])]);
-                if v.iter().any(|x| x.is_nan()) {
-                    continue;
-                }
-                let inside = v.iter().filter(|&&x| x < 0.0).count();
-                if inside == 0 || inside == 8 {
-                    continue;
-                }
-                let (mut sum, mut count) = (DVec3::ZERO, 0.0);
-                for [a, b] in EDGES {
-                    if (v[a] < 0.0) != (v[b] < 0.0) {
-                        let t = v[a] / (v[a] - v[b]);
-                        let pa = DVec3::from_array(CORNERS[a].map(|c| c as f64));
-                        let pb = DVec3::from_array(CORNERS[b].map(|c| c as f64));
-                        sum += pa + (pb - pa) * t;
-                        count += 1.0;
-                    }
-                }
-                vertex[cell(i, j, k)] = points.len() as u32;
-                let local = sum / count;
-                points.push(origin + (DVec3::new(i as f64, j as f64, k as f64) + local) * spacing);
-            }
-        }
-    }
+    let (vertex, points) = cell_vertices(values, dims, origin, spacing);
     let mut triangles = Vec::with_capacity(2 * points.len());
     let mut quad = |q: [u32; 4], outward: bool| {
         if q.contains(&NONE) {
@@ -213,6 +134,113 @@ pub fn surface_nets(grid: &Grid<'_>) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Erro
         }
     }
     Ok((points, triangles))
+}
+
+// The corners of a cell, as offsets, and its twelve edges as pairs of corners.
+const CORNERS: [[usize; 3]; 8] =
+    [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]];
+const EDGES: [[usize; 2]; 12] = [
+    [0, 1],
+    [2, 3],
+    [4, 5],
+    [6, 7],
+    [0, 2],
+    [1, 3],
+    [4, 6],
+    [5, 7],
+    [0, 4],
+    [1, 5],
+    [2, 6],
+    [3, 7],
+];
+
+/// The checks of [`surface_nets`]: at least 2 nodes along each axis and at most
+/// [`MAX_NODES`] in all, one value per node, a positive finite spacing, a finite origin, and
+/// no infinite value.
+fn check_grid(grid: &Grid<'_>) -> Result<(), Error> {
+    let &Grid { origin, spacing, dims, values } = grid;
+    let [nx, ny, nz] = dims;
+    if dims.iter().any(|&d| d < 2) {
+        return Err(Error::InvalidOption {
+            name: "grid nodes along an axis",
+            value: dims.iter().copied().min().unwrap_or(0) as f64,
+            expected: "at least 2",
+        });
+    }
+    let nodes = nx.checked_mul(ny).and_then(|m| m.checked_mul(nz)).unwrap_or(usize::MAX);
+    if nodes > MAX_NODES {
+        return Err(Error::InvalidOption {
+            name: "grid nodes",
+            value: nodes as f64,
+            expected: "at most 2^27",
+        });
+    }
+    if values.len() != nodes {
+        return Err(Error::InvalidOption {
+            name: "grid values",
+            value: values.len() as f64,
+            expected: "one value per node",
+        });
+    }
+    if !(spacing.is_finite() && spacing > 0.0) {
+        return Err(Error::InvalidOption {
+            name: "grid spacing",
+            value: spacing,
+            expected: "positive and finite",
+        });
+    }
+    if !origin.is_finite() {
+        return Err(Error::NonFinite { what: NonFiniteInput::GridOrigin });
+    }
+    if let Some(k) = values.iter().position(|v| v.is_infinite()) {
+        return Err(Error::NonFinite { what: NonFiniteInput::GridValue(k) });
+    }
+    Ok(())
+}
+
+/// The vertices of [`surface_nets`]: in each cell the surface crosses, the mean of the points
+/// where it crosses the cell's edges (linear along each); each cell's vertex ([`NONE`] where
+/// there is none) and the points.
+fn cell_vertices(
+    values: &[f64],
+    dims: [usize; 3],
+    origin: DVec3,
+    spacing: f64,
+) -> (Vec<u32>, Vec<DVec3>) {
+    let [nx, ny, nz] = dims;
+    let node = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
+    let (cx, cy) = (nx - 1, ny - 1);
+    let cell = |i: usize, j: usize, k: usize| i + cx * (j + cy * k);
+    let mut vertex = vec![NONE; cx * cy * (nz - 1)];
+    let mut points = Vec::new();
+    for k in 0..nz - 1 {
+        for j in 0..cy {
+            for i in 0..cx {
+                let v: [f64; 8] = CORNERS.map(|c| values[node(i + c[0], j + c[1], k + c[2])]);
+                if v.iter().any(|x| x.is_nan()) {
+                    continue;
+                }
+                let inside = v.iter().filter(|&&x| x < 0.0).count();
+                if inside == 0 || inside == 8 {
+                    continue;
+                }
+                let (mut sum, mut count) = (DVec3::ZERO, 0.0);
+                for [a, b] in EDGES {
+                    if (v[a] < 0.0) != (v[b] < 0.0) {
+                        let t = v[a] / (v[a] - v[b]);
+                        let pa = DVec3::from_array(CORNERS[a].map(|c| c as f64));
+                        let pb = DVec3::from_array(CORNERS[b].map(|c| c as f64));
+                        sum += pa + (pb - pa) * t;
+                        count += 1.0;
+                    }
+                }
+                vertex[cell(i, j, k)] = points.len() as u32;
+                let local = sum / count;
+                points.push(origin + (DVec3::new(i as f64, j as f64, k as f64) + local) * spacing);
+            }
+        }
+    }
+    (vertex, points)
 }
 
 /// The values with every face whose corners alternate in sign resolved (see [`surface_nets`]):

@@ -305,18 +305,16 @@ impl<'a> Builder<'a> {
         Ok(Samples { n_v: vs.len(), p: grid(0, 0)?, pu: grid(1, 0)?, pv: grid(0, 1)?, second })
     }
 
-    fn build(self) -> Result<TriangleMesh, Error> {
-        let samples = self.sample()?;
+    /// The first stage of `build`: which grid points are one surface point (seam copies,
+    /// collapsed rows and columns), as each grid point's class.
+    fn weld(&self, samples: &Samples, rows: usize, cols: usize) -> Vec<u32> {
         let seam = self.options.seam;
-        let (rows, cols) = (self.u.n_lines(seam), self.v.n_lines(seam));
         let line = |i: usize, l: usize| (i * cols + l) as u32;
         let sample_of = |g: u32| {
             let (i, l) = (g as usize / cols, g as usize % cols);
             self.u.sample(i) * samples.n_v + self.v.sample(l)
         };
         let tol = WELD * self.size;
-
-        // Which grid points are one surface point: seam copies, collapsed rows and columns.
         let mut same = Classes((0..(rows * cols) as u32).collect());
         if seam == Seam::Split {
             if self.u.closed {
@@ -347,7 +345,21 @@ impl<'a> Builder<'a> {
                 }
             }
         }
-        let key: Vec<u32> = (0..(rows * cols) as u32).map(|g| same.find(g)).collect();
+        (0..(rows * cols) as u32).map(|g| same.find(g)).collect()
+    }
+
+    fn build(self) -> Result<TriangleMesh, Error> {
+        let samples = self.sample()?;
+        let seam = self.options.seam;
+        let (rows, cols) = (self.u.n_lines(seam), self.v.n_lines(seam));
+        let line = |i: usize, l: usize| (i * cols + l) as u32;
+        let sample_of = |g: u32| {
+            let (i, l) = (g as usize / cols, g as usize % cols);
+            self.u.sample(i) * samples.n_v + self.v.sample(l)
+        };
+
+        let key = self.weld(&samples, rows, cols);
+        let p = |g: u32| samples.p[sample_of(g)];
         // A vertex is a class when welded, a grid point when split.
         let vertex_of = |g: u32| if seam == Seam::Welded { key[g as usize] } else { g };
 
@@ -374,18 +386,7 @@ impl<'a> Builder<'a> {
             });
         }
 
-        // Keep the vertices that triangles use, in grid order.
-        let mut new_index = vec![u32::MAX; rows * cols];
-        for &g in triangles.iter().flatten() {
-            new_index[g as usize] = 0;
-        }
-        let mut used: Vec<u32> = Vec::with_capacity(rows * cols);
-        for (g, slot) in new_index.iter_mut().enumerate() {
-            if *slot == 0 {
-                *slot = used.len() as u32;
-                used.push(g as u32);
-            }
-        }
+        let (new_index, used) = used_vertices(&triangles, rows * cols);
         let positions: Vec<DVec3> = used.iter().map(|&g| p(g)).collect();
 
         // Normals: `p_u × p_v`, or the fallbacks of the module notes where it vanishes.
@@ -444,6 +445,23 @@ impl<'a> Builder<'a> {
         }
         Ok(mesh)
     }
+}
+
+/// The vertices the triangles (over grid points `0..n`) use, in grid order: each grid point's
+/// new index (`u32::MAX` if unused), and the grid point of each vertex.
+fn used_vertices(triangles: &[[u32; 3]], n: usize) -> (Vec<u32>, Vec<u32>) {
+    let mut new_index = vec![u32::MAX; n];
+    for &g in triangles.iter().flatten() {
+        new_index[g as usize] = 0;
+    }
+    let mut used: Vec<u32> = Vec::with_capacity(n);
+    for (g, slot) in new_index.iter_mut().enumerate() {
+        if *slot == 0 {
+            *slot = used.len() as u32;
+            used.push(g as u32);
+        }
+    }
+    (new_index, used)
 }
 
 /// Normals where `p_u × p_v` vanishes: the area-weighted sum of the normals of the triangles

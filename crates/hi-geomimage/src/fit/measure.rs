@@ -141,6 +141,75 @@ pub(crate) fn measure_parts(
     triangles: &[[u32; 3]],
     measure: ErrorMeasure,
 ) -> Result<(FitErrors, Vec<FitErrors>, Vec<LayoutMesh>), Error> {
+    let meshes = part_meshes(parts, measure)?;
+    let first_triangle =
+        meshes.last().map_or(0, |m| m.first_triangle + m.mesh.mesh.triangles().len());
+    let diagonal = bounding_diagonal(points);
+    // The union of the parts' meshes, and the part of each triangle.
+    let mut positions = Vec::new();
+    let mut all_triangles = Vec::with_capacity(first_triangle);
+    for m in &meshes {
+        let offset = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+        positions.extend_from_slice(m.mesh.mesh.positions());
+        all_triangles.extend(m.mesh.mesh.triangles().iter().map(|t| t.map(|k| k + offset)));
+    }
+    let exact = measure == ErrorMeasure::Exact;
+    // Scan → surface: each point's distance and the part it is nearest.
+    let forward = || scan_to_surface(&meshes, (&positions, &all_triangles), points, exact);
+    // Surface → scan.
+    let samples: Vec<Vec<DVec3>> = meshes.iter().map(PartMesh::samples).collect();
+    let queried: Vec<DVec3> = meshes
+        .iter()
+        .zip(&samples)
+        .flat_map(|(m, s)| s.iter().enumerate().filter(|(v, _)| !m.on_scan(*v)).map(|(_, x)| *x))
+        .collect();
+    let backward = || -> Result<Vec<f64>, Error> {
+        if triangles.is_empty() {
+            Ok(hi_scan::distance::nearest_point_distances(&queried, points)?)
+        } else {
+            // The scan's triangles can be long and thin (scanners leave slivers at folds and
+            // holes), which the nearest-vertex query misjudges: this side is always exact.
+            Ok(TriangleBvh::try_new(points, triangles)?.distances(&queried))
+        }
+    };
+    // Both ways at once (each builds its search structure on one thread).
+    let (forward, measured) = hi_par::join(forward, backward);
+    let forward = forward?;
+    let mut measured = measured?.into_iter();
+    let (kept_by_part, filled_max_by_part) = split_samples(&meshes, &samples, &mut measured);
+    let unreached = |d: &[f64]| {
+        d.iter().filter(|&&x| x > UNREACHED * diagonal).count() as f64 / d.len().max(1) as f64
+    };
+    // Each part's measure summarised (its points' distances are in the whole's).
+    let by_part: Vec<FitErrors> = (0..meshes.len())
+        .map(|k| {
+            let mine = || forward.iter().filter(move |f| f.1 as usize == k).map(|f| f.0);
+            let count = mine().count();
+            let far = mine().filter(|&d| d > UNREACHED * diagonal).count();
+            FitErrors {
+                unreached_fraction: far as f64 / count.max(1) as f64,
+                scan_to_surface: Distances::summary_of(mine(), diagonal),
+                surface_to_scan: Distances::summary_of(kept_by_part[k].iter().copied(), diagonal),
+                filled_to_scan_max: filled_max_by_part[k],
+            }
+        })
+        .collect();
+    let per_point: Vec<f64> = forward.into_iter().map(|f| f.0).collect();
+    let all = FitErrors {
+        unreached_fraction: unreached(&per_point),
+        scan_to_surface: Distances::from_values(per_point, diagonal),
+        surface_to_scan: Distances::from_values(kept_by_part.concat(), diagonal),
+        filled_to_scan_max: filled_max_by_part.iter().copied().fold(0.0, f64::max),
+    };
+    Ok((all, by_part, meshes.into_iter().map(|m| m.mesh).collect()))
+}
+
+/// The first stage of [`measure_parts`]: each part's mesh, refined as `measure` asks, with the
+/// index of its first triangle in the union of them all.
+fn part_meshes<'a>(
+    parts: &[Measured<'a>],
+    measure: ErrorMeasure,
+) -> Result<Vec<PartMesh<'a>>, Error> {
     let mut meshes = Vec::with_capacity(parts.len());
     let mut first_triangle = 0;
     for part in parts {
@@ -175,82 +244,70 @@ pub(crate) fn measure_parts(
         meshes.push(PartMesh { part: *part, mesh, per_texel, first_triangle });
         first_triangle += n;
     }
-    let diagonal = bounding_diagonal(points);
-    // The union of the parts' meshes, and the part of each triangle.
-    let mut positions = Vec::new();
-    let mut all_triangles = Vec::with_capacity(first_triangle);
-    for m in &meshes {
-        let offset = u32::try_from(positions.len()).unwrap_or(u32::MAX);
-        positions.extend_from_slice(m.mesh.mesh.positions());
-        all_triangles.extend(m.mesh.mesh.triangles().iter().map(|t| t.map(|k| k + offset)));
-    }
+    Ok(meshes)
+}
+
+/// Scan → surface in [`measure_parts`]: each point's distance to the union of the parts'
+/// meshes (`positions`, `all_triangles`), projected onto the surface when `exact`, and the part
+/// it is nearest.
+fn scan_to_surface(
+    meshes: &[PartMesh<'_>],
+    (positions, all_triangles): (&[DVec3], &[[u32; 3]]),
+    points: &[DVec3],
+    exact: bool,
+) -> Result<Vec<(f64, u32)>, Error> {
     let part_of = |t: u32| meshes.partition_point(|m| m.first_triangle <= t as usize) - 1;
-    let exact = measure == ErrorMeasure::Exact;
-    // Scan → surface: each point's distance and the part it is nearest.
-    let forward = || -> Result<Vec<(f64, u32)>, Error> {
-        use hi_par::*;
-        Ok(if exact {
-            let bvh = TriangleBvh::try_new(&positions, &all_triangles)?;
-            let grids = meshes
-                .iter()
-                .map(|m| HermiteGrid::of(m.part.surface, m.per_texel))
-                .collect::<Result<Vec<_>, _>>()?;
-            points
-                .par_iter()
-                .map(|x| {
-                    let c = bvh.closest(*x);
-                    let k = part_of(c.triangle);
-                    let local = c.triangle - meshes[k].first_triangle as u32;
-                    let d = project(&grids[k], &meshes[k].mesh.mesh, *x, local, c.point);
-                    (d, u32::try_from(k).unwrap_or(0))
-                })
-                .collect()
-        } else {
-            let near = NearMesh::try_new(&positions, &all_triangles)?;
-            // In the order of a grid's cells, so that each query finds its neighbours in cache,
-            // then back in the scan's order.
-            let order = hi_scan::cloud::spatial_order(points);
-            let found: Vec<(f64, u32)> = order
-                .par_iter()
-                .with_min_len(256)
-                .map(|&i| {
-                    let c = near.closest(points[i as usize]);
-                    let k = if c.triangle == u32::MAX { 0 } else { part_of(c.triangle) };
-                    (c.distance, u32::try_from(k).unwrap_or(0))
-                })
-                .collect();
-            drop(near);
-            let mut out = vec![(0.0, 0); points.len()];
-            for (&i, f) in order.iter().zip(found) {
-                out[i as usize] = f;
-            }
-            out
-        })
-    };
-    // Surface → scan.
-    let samples: Vec<Vec<DVec3>> = meshes.iter().map(PartMesh::samples).collect();
-    let queried: Vec<DVec3> = meshes
-        .iter()
-        .zip(&samples)
-        .flat_map(|(m, s)| s.iter().enumerate().filter(|(v, _)| !m.on_scan(*v)).map(|(_, x)| *x))
-        .collect();
-    let backward = || -> Result<Vec<f64>, Error> {
-        if triangles.is_empty() {
-            Ok(hi_scan::distance::nearest_point_distances(&queried, points)?)
-        } else {
-            // The scan's triangles can be long and thin (scanners leave slivers at folds and
-            // holes), which the nearest-vertex query misjudges: this side is always exact.
-            Ok(TriangleBvh::try_new(points, triangles)?.distances(&queried))
+    use hi_par::*;
+    Ok(if exact {
+        let bvh = TriangleBvh::try_new(positions, all_triangles)?;
+        let grids = meshes
+            .iter()
+            .map(|m| HermiteGrid::of(m.part.surface, m.per_texel))
+            .collect::<Result<Vec<_>, _>>()?;
+        points
+            .par_iter()
+            .map(|x| {
+                let c = bvh.closest(*x);
+                let k = part_of(c.triangle);
+                let local = c.triangle - meshes[k].first_triangle as u32;
+                let d = project(&grids[k], &meshes[k].mesh.mesh, *x, local, c.point);
+                (d, u32::try_from(k).unwrap_or(0))
+            })
+            .collect()
+    } else {
+        let near = NearMesh::try_new(positions, all_triangles)?;
+        // In the order of a grid's cells, so that each query finds its neighbours in cache,
+        // then back in the scan's order.
+        let order = hi_scan::cloud::spatial_order(points);
+        let found: Vec<(f64, u32)> = order
+            .par_iter()
+            .with_min_len(256)
+            .map(|&i| {
+                let c = near.closest(points[i as usize]);
+                let k = if c.triangle == u32::MAX { 0 } else { part_of(c.triangle) };
+                (c.distance, u32::try_from(k).unwrap_or(0))
+            })
+            .collect();
+        drop(near);
+        let mut out = vec![(0.0, 0); points.len()];
+        for (&i, f) in order.iter().zip(found) {
+            out[i as usize] = f;
         }
-    };
-    // Both ways at once (each builds its search structure on one thread).
-    let (forward, measured) = hi_par::join(forward, backward);
-    let forward = forward?;
-    let mut measured = measured?.into_iter();
-    // Each part's samples, those on fills apart.
+        out
+    })
+}
+
+/// Each part's samples' distances to the scan in [`measure_parts`], those on fills apart:
+/// the distances kept, and the largest on a fill (`measured` holds the distances of the
+/// samples not on the scan, in order).
+fn split_samples(
+    meshes: &[PartMesh<'_>],
+    samples: &[Vec<DVec3>],
+    measured: &mut impl Iterator<Item = f64>,
+) -> (Vec<Vec<f64>>, Vec<f64>) {
     let mut kept_by_part = Vec::with_capacity(meshes.len());
     let mut filled_max_by_part = Vec::with_capacity(meshes.len());
-    for (m, s) in meshes.iter().zip(&samples) {
+    for (m, s) in meshes.iter().zip(samples) {
         let (mut kept, mut filled_max) = (Vec::with_capacity(s.len()), 0.0f64);
         for v in 0..s.len() {
             let d = if m.on_scan(v) { 0.0 } else { measured.next().unwrap_or(0.0) };
@@ -263,31 +320,7 @@ pub(crate) fn measure_parts(
         kept_by_part.push(kept);
         filled_max_by_part.push(filled_max);
     }
-    let unreached = |d: &[f64]| {
-        d.iter().filter(|&&x| x > UNREACHED * diagonal).count() as f64 / d.len().max(1) as f64
-    };
-    // Each part's measure summarised (its points' distances are in the whole's).
-    let by_part: Vec<FitErrors> = (0..meshes.len())
-        .map(|k| {
-            let mine = || forward.iter().filter(move |f| f.1 as usize == k).map(|f| f.0);
-            let count = mine().count();
-            let far = mine().filter(|&d| d > UNREACHED * diagonal).count();
-            FitErrors {
-                unreached_fraction: far as f64 / count.max(1) as f64,
-                scan_to_surface: Distances::summary_of(mine(), diagonal),
-                surface_to_scan: Distances::summary_of(kept_by_part[k].iter().copied(), diagonal),
-                filled_to_scan_max: filled_max_by_part[k],
-            }
-        })
-        .collect();
-    let per_point: Vec<f64> = forward.into_iter().map(|f| f.0).collect();
-    let all = FitErrors {
-        unreached_fraction: unreached(&per_point),
-        scan_to_surface: Distances::from_values(per_point, diagonal),
-        surface_to_scan: Distances::from_values(kept_by_part.concat(), diagonal),
-        filled_to_scan_max: filled_max_by_part.iter().copied().fold(0.0, f64::max),
-    };
-    Ok((all, by_part, meshes.into_iter().map(|m| m.mesh).collect()))
+    (kept_by_part, filled_max_by_part)
 }
 
 /// The harmonic surface near its grid, for Gauss–Newton projections: p and its derivatives

@@ -64,6 +64,7 @@
 //! - [`Problem::StraysFromPoints`]: some of the surface lies further from every input point
 //!   than [`STRAY_LIMIT`] times the sampling scale.
 
+mod align;
 mod diagnose;
 mod slice;
 
@@ -78,6 +79,7 @@ use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use crate::distance::distances_to_surface;
 use crate::fit::{Stage, StageKind};
 use crate::{Error, MAX_TEXELS, NonFiniteInput};
+use align::{rotate_rows, squared_deviation};
 use hi_scan::distance::Distances;
 use slice::{Frame, MIN_SLICE_POINTS, Slab, axis_of, equal_slabs, order_contour, recursive_slabs};
 
@@ -542,16 +544,7 @@ fn fit_slabs(
 
     // Step 7: rotation (Theorem 5.1) for the least total deviation.
     let start = Instant::now();
-    let mut rows: Vec<Vec<DVec3>> = Vec::with_capacity(k);
-    let mut rotations = Vec::with_capacity(k);
-    for curve in &inserted {
-        let (offset, row) = match rows.last() {
-            None => (0.0, curve.points().to_vec()),
-            Some(below) => align(curve, below, options.alignment)?,
-        };
-        rotations.push(offset);
-        rows.push(row);
-    }
+    let (rows, rotations) = rotate_rows(&inserted, options.alignment)?;
     timed(StageKind::Rotation, &mut stages, start);
 
     // Step 8: the reversed traversal on the other side, and the surface.
@@ -567,6 +560,48 @@ fn fit_slabs(
 
     // Diagnostics.
     let start = Instant::now();
+    let (slices, deviation, deviation_unaligned) =
+        slice_reports(slabs, &ordered, &shapes, &rows, &inserted, &rotations, n);
+    let sampling_scale = sampling_scale(&slices, &shapes);
+    timed(StageKind::Diagnostics, &mut stages, start);
+    let (mut surface_to_points, mut points_to_surface) = (None, None);
+    if options.error_oversample > 0 {
+        let start = Instant::now();
+        surface_to_points =
+            Some(surface_to_nearest_point(&surface, points, options.error_oversample)?);
+        points_to_surface = Some(distances_to_surface(&surface, points, options.error_oversample)?);
+        timed(StageKind::FitError, &mut stages, start);
+    }
+    let problems = problems(&slices, surface_to_points.as_ref(), sampling_scale);
+    let report = SectionReport {
+        points: points.len(),
+        axis,
+        slices,
+        contour_points: n,
+        surface_size: (surface.m(), surface.n()),
+        deviation_unaligned,
+        deviation,
+        sampling_scale,
+        surface_to_points,
+        points_to_surface,
+        problems,
+    };
+    let contours = ordered.into_iter().map(|o| o.points).collect();
+    Ok(SectionFit { surface, contours, rows, report, stages })
+}
+
+/// The diagnostics stage of [`fit_slabs`]: each section's report, and the total squared
+/// deviation between consecutive rows after and before their rotation.
+fn slice_reports(
+    slabs: &[Slab],
+    ordered: &[Ordered],
+    shapes: &[Shape],
+    rows: &[Vec<DVec3>],
+    inserted: &[HarmonicCurve<DVec3>],
+    rotations: &[f64],
+    n: usize,
+) -> (Vec<SliceReport>, f64, f64) {
+    let k = slabs.len();
     let mut slices = Vec::with_capacity(k);
     let (mut deviation, mut deviation_unaligned) = (0.0, 0.0);
     for i in 0..k {
@@ -594,32 +629,7 @@ fn fit_slabs(
             deviation_unaligned: (d0 / n as f64).sqrt(),
         });
     }
-    let sampling_scale = sampling_scale(&slices, &shapes);
-    timed(StageKind::Diagnostics, &mut stages, start);
-    let (mut surface_to_points, mut points_to_surface) = (None, None);
-    if options.error_oversample > 0 {
-        let start = Instant::now();
-        surface_to_points =
-            Some(surface_to_nearest_point(&surface, points, options.error_oversample)?);
-        points_to_surface = Some(distances_to_surface(&surface, points, options.error_oversample)?);
-        timed(StageKind::FitError, &mut stages, start);
-    }
-    let problems = problems(&slices, surface_to_points.as_ref(), sampling_scale);
-    let report = SectionReport {
-        points: points.len(),
-        axis,
-        slices,
-        contour_points: n,
-        surface_size: (surface.m(), surface.n()),
-        deviation_unaligned,
-        deviation,
-        sampling_scale,
-        surface_to_points,
-        points_to_surface,
-        problems,
-    };
-    let contours = ordered.into_iter().map(|o| o.points).collect();
-    Ok(SectionFit { surface, contours, rows, report, stages })
+    (slices, deviation, deviation_unaligned)
 }
 
 /// The points of one section in contour order, with the plane they were put on.
@@ -687,65 +697,6 @@ impl Ordered {
             overshoot: if radius > tiny { overshoot / radius } else { 0.0 },
         })
     }
-}
-
-/// Σⱼ |aⱼ − bⱼ|².
-fn squared_deviation(a: &[DVec3], b: &[DVec3]) -> f64 {
-    a.iter().zip(b).map(|(p, q)| p.distance_squared(*q)).sum()
-}
-
-/// Turns `curve` (N points) against the contour `below` (N points) for the least squared
-/// deviation: the offset in [0, 1) and the turned points X(j/N + o) (Theorem 5.1).
-fn align(
-    curve: &HarmonicCurve<DVec3>,
-    below: &[DVec3],
-    alignment: Alignment,
-) -> Result<(f64, Vec<DVec3>), Error> {
-    let n = curve.n();
-    let x = curve.points();
-    if alignment == Alignment::None {
-        return Ok((0.0, x.to_vec()));
-    }
-    // Whole steps: D(s/N) = Σⱼ |x_{j+s} − bⱼ|².
-    let step_deviation =
-        |s: usize| -> f64 { (0..n).map(|j| x[(j + s) % n].distance_squared(below[j])).sum() };
-    let best_step = (0..n)
-        .map(|s| (step_deviation(s), s))
-        .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
-        .map_or(0, |(_, s)| s);
-    let mut offset = best_step as f64 / n as f64;
-    if alignment == Alignment::Continuous {
-        // D(o) = Σⱼ |X(j/N + o) − bⱼ|², a trigonometric polynomial in o, over a step either side.
-        let fourier = curve.fourier();
-        let deviation =
-            |o: f64| -> f64 { squared_deviation(&fourier.shifted(o).sample_uniform(n), below) };
-        let step = 1.0 / n as f64;
-        let (mut a, mut b) = (offset - step, offset + step);
-        let ratio = 0.5 * (5f64.sqrt() - 1.0);
-        let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
-        let (mut fc, mut fd) = (deviation(c), deviation(d));
-        for _ in 0..60 {
-            if fc < fd {
-                (b, d, fd) = (d, c, fc);
-                c = b - ratio * (b - a);
-                fc = deviation(c);
-            } else {
-                (a, c, fc) = (c, d, fd);
-                d = a + ratio * (b - a);
-                fd = deviation(d);
-            }
-            if b - a < 1e-12 {
-                break;
-            }
-        }
-        let refined = 0.5 * (a + b);
-        if deviation(refined) < step_deviation(best_step) {
-            offset = refined;
-        }
-    }
-    let offset = offset.rem_euclid(1.0);
-    let turned = curve.rotate_theorem_5_1(offset).map_err(Error::from)?;
-    Ok((offset, turned.points().to_vec()))
 }
 
 /// See [`SectionReport::sampling_scale`].

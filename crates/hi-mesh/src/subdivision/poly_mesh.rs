@@ -138,21 +138,53 @@ impl PolyMesh {
             n_edges: 0,
             vertex_he: Vec::new(),
         };
-        // Pair half-edges by the undirected edge (min, max): a counting sort on min (linear),
-        // then a sort on max inside each vertex's small bucket. Edges are numbered in
-        // (min, max) order.
-        let n_vertices = mesh.positions.len();
+        // Pair half-edges by the undirected edge (min, max); edges are numbered in (min, max)
+        // order.
+        let keys = mesh.edge_keys();
+        mesh.pair_half_edges(&keys)?;
+        // One outgoing half-edge per vertex, the boundary one where there is one.
+        let mut vertex_he = vec![NONE; mesh.positions.len()];
+        let mut n_out = vec![0_u32; mesh.positions.len()];
+        for h in 0..n_he as u32 {
+            let v = mesh.corners[h as usize] as usize;
+            n_out[v] += 1;
+            if vertex_he[v] == NONE || mesh.twin[h as usize] == NONE {
+                if mesh.twin[h as usize] == NONE
+                    && vertex_he[v] != NONE
+                    && mesh.twin[vertex_he[v] as usize] == NONE
+                {
+                    return Err(Error::NonManifoldVertex { vertex: v });
+                }
+                vertex_he[v] = h;
+            }
+        }
+        mesh.vertex_he = vertex_he;
+        // Each vertex's fan must reach all of its outgoing half-edges.
+        for (v, &n) in n_out.iter().enumerate() {
+            if mesh.vertex_he[v] != NONE && mesh.fan(v as u32).count() != n as usize {
+                return Err(Error::NonManifoldVertex { vertex: v });
+            }
+        }
+        Ok(mesh)
+    }
+
+    /// The first stage of pairing in [`PolyMesh::from_parts`]: each half-edge keyed by its
+    /// undirected edge (min, max), sorted by key: a counting sort on min (linear), then a sort
+    /// on max inside each vertex's small bucket.
+    fn edge_keys(&self) -> Vec<(u64, u32)> {
+        let n_vertices = self.positions.len();
+        let (n_he, n_faces) = (self.corners.len(), self.face_start.len() - 1);
         // The head of every half-edge, in one pass over the faces.
         let mut head = vec![0_u32; n_he];
         for f in 0..n_faces {
-            let (start, end) = (mesh.face_start[f] as usize, mesh.face_start[f + 1] as usize);
+            let (start, end) = (self.face_start[f] as usize, self.face_start[f + 1] as usize);
             for (i, out) in head[start..end].iter_mut().enumerate() {
                 let next = if start + i + 1 == end { start } else { start + i + 1 };
-                *out = mesh.corners[next];
+                *out = self.corners[next];
             }
         }
         let ends = |h: u32| {
-            let (a, b) = (mesh.corners[h as usize], head[h as usize]);
+            let (a, b) = (self.corners[h as usize], head[h as usize]);
             (a.min(b), a.max(b))
         };
         let mut bucket_start = vec![0_u32; n_vertices + 1];
@@ -179,6 +211,13 @@ impl PolyMesh {
             }
             keys.extend(bucket.iter().map(|&(hi, h)| (((v as u64) << 32) | u64::from(hi), h)));
         }
+        keys
+    }
+
+    /// The second stage of pairing in [`PolyMesh::from_parts`]: half-edges of one key made
+    /// twins and numbered as one edge, in key order; an error for an edge of three or more
+    /// faces or two wound the same way.
+    fn pair_half_edges(&mut self, keys: &[(u64, u32)]) -> Result<(), Error> {
         let mut i = 0;
         let mut n_edges = 0_u32;
         while i < keys.len() {
@@ -189,7 +228,7 @@ impl PolyMesh {
             let group = &keys[i..j];
             if group.len() > 2 {
                 let mut faces: Vec<usize> =
-                    group.iter().map(|&(_, h)| mesh.he_face[h as usize] as usize).collect();
+                    group.iter().map(|&(_, h)| self.he_face[h as usize] as usize).collect();
                 faces.sort_unstable();
                 let key = group[0].0;
                 return Err(Error::NonManifoldEdge {
@@ -198,47 +237,24 @@ impl PolyMesh {
                 });
             }
             if let [(_, h0), (_, h1)] = *group {
-                if mesh.from(h0) == mesh.from(h1) {
-                    let (f0, f1) = (mesh.he_face[h0 as usize], mesh.he_face[h1 as usize]);
+                if self.from(h0) == self.from(h1) {
+                    let (f0, f1) = (self.he_face[h0 as usize], self.he_face[h1 as usize]);
                     return Err(Error::InconsistentOrientation {
-                        edge: [mesh.from(h0), mesh.to(h0)],
+                        edge: [self.from(h0), self.to(h0)],
                         faces: [f0.min(f1) as usize, f0.max(f1) as usize],
                     });
                 }
-                mesh.twin[h0 as usize] = h1;
-                mesh.twin[h1 as usize] = h0;
+                self.twin[h0 as usize] = h1;
+                self.twin[h1 as usize] = h0;
             }
             for &(_, h) in group {
-                mesh.he_edge[h as usize] = n_edges;
+                self.he_edge[h as usize] = n_edges;
             }
             n_edges += 1;
             i = j;
         }
-        mesh.n_edges = n_edges as usize;
-        // One outgoing half-edge per vertex, the boundary one where there is one.
-        let mut vertex_he = vec![NONE; mesh.positions.len()];
-        let mut n_out = vec![0_u32; mesh.positions.len()];
-        for h in 0..n_he as u32 {
-            let v = mesh.corners[h as usize] as usize;
-            n_out[v] += 1;
-            if vertex_he[v] == NONE || mesh.twin[h as usize] == NONE {
-                if mesh.twin[h as usize] == NONE
-                    && vertex_he[v] != NONE
-                    && mesh.twin[vertex_he[v] as usize] == NONE
-                {
-                    return Err(Error::NonManifoldVertex { vertex: v });
-                }
-                vertex_he[v] = h;
-            }
-        }
-        mesh.vertex_he = vertex_he;
-        // Each vertex's fan must reach all of its outgoing half-edges.
-        for (v, &n) in n_out.iter().enumerate() {
-            if mesh.vertex_he[v] != NONE && mesh.fan(v as u32).count() != n as usize {
-                return Err(Error::NonManifoldVertex { vertex: v });
-            }
-        }
-        Ok(mesh)
+        self.n_edges = n_edges as usize;
+        Ok(())
     }
 
     /// A mesh whose half-edge twins are already known: what a subdivision step builds from a

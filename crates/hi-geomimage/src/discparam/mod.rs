@@ -46,12 +46,17 @@
 //! flattened octahedron — whose harmonic surface is periodic, symmetric about u = ½ and
 //! v = ½, and on the quarter u, v ∈ [0, ½] is the open sheet.
 
+mod corners;
+
 use glam::{DVec2, DVec3, IVec2};
 
-use crate::flat::{self, FlatMap, Freedom, RelaxOptions, Relaxation, solve_until_embedded};
+use crate::flat::{
+    self, Embedded, FlatMap, Freedom, RelaxOptions, Relaxation, solve_until_embedded,
+};
 pub use crate::flat::{FlatImage, FlatQuality, FlatReport, RoundsEnd};
 use crate::laplace::{CgOptions, Laplacian, NONE, Topology, head, tail};
 use crate::{Error, GeometryImage, MAX_TEXELS};
+use corners::{choose_corners, sides_of};
 
 /// The settings of [`parameterise_disc`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,162 +116,6 @@ pub struct DiscParam {
     corners: [u32; 4],
     aspect: f64,
     report: FlatReport,
-}
-
-/// The sides (a bit each, side m from corner m to corner m + 1) that loop position `rel`
-/// (counted from corner 0) lies on, given the corners' positions.
-fn sides_of(rel: usize, corners: [usize; 4]) -> u8 {
-    for (m, &c) in corners.iter().enumerate() {
-        if rel == c {
-            return (1 << m) | (1 << ((m + 3) % 4));
-        }
-    }
-    let m = (0..4).rev().find(|&m| rel > corners[m]).unwrap_or(0);
-    1 << m
-}
-
-/// The most checks of a dividing edge against a placement of the corners that
-/// [`choose_corners`] makes (from every start up to this many divided by the dividing edges).
-const CORNER_CHECKS: usize = 1 << 24;
-
-/// For each vertex k of a boundary loop, `turning[k]` plus the turning at the vertices within
-/// `reach` of it along the loop either way (by the arc lengths `s`, `s[b]` the loop's length;
-/// fewer than half the loop's vertices each way; none for a negative `reach`): prefix sums and
-/// windows that only move forward, so linear in the loop's length whatever the reach.
-fn window_sums(turning: &[f64], s: &[f64], reach: f64) -> Vec<f64> {
-    let b = turning.len();
-    let total = s[b];
-    // Over the loop twice: position i is vertex i mod b, at arc length `arc(i)`.
-    let arc = |i: usize| if i < b { s[i] } else { s[i - b] + total };
-    let mut acc = vec![0.0; 2 * b + 1];
-    for i in 0..2 * b {
-        acc[i + 1] = acc[i] + turning[i % b];
-    }
-    let most = (b / 2).saturating_sub(1);
-    let (mut ahead, mut behind) = (0, 0);
-    (0..b)
-        .map(|k| {
-            // The last position ahead of k, and the first behind it (as k + b), in reach.
-            ahead = ahead.max(k);
-            while ahead - k < most && arc(ahead + 1) - arc(k) <= reach {
-                ahead += 1;
-            }
-            let back = k + b;
-            behind = behind.max(back - most);
-            while behind < back && arc(back) - arc(behind) > reach {
-                behind += 1;
-            }
-            turning[k] + (acc[ahead + 1] - acc[k + 1]) + (acc[back] - acc[behind])
-        })
-        .collect()
-}
-
-/// The loop positions of the four corners (see the module documentation), or `None` if no
-/// placement gives four distinct corners in order. `normals` holds the surface's normal at each
-/// boundary vertex, in loop order, to tell convex corners (turning towards the surface) from
-/// concave ones.
-fn choose_corners(
-    positions: &[DVec3],
-    ring: &[u32],
-    normals: &[DVec3],
-    dividing: &[(usize, usize)],
-) -> Option<[usize; 4]> {
-    let b = ring.len();
-    let p = |k: usize| positions[ring[k % b] as usize];
-    let mut s = vec![0.0; b + 1];
-    for k in 0..b {
-        s[k + 1] = s[k] + (p(k + 1) - p(k)).length();
-    }
-    let total = s[b];
-    let measured = total.is_finite() && total > 0.0;
-    // The signed turning at each vertex, summed over the vertices within L/32 along the
-    // boundary (so that a corner cut by a short edge still counts whole, and jagged noise
-    // cancels).
-    let turning: Vec<f64> = (0..b)
-        .map(|k| {
-            let (a, c) = (p(k) - p(k + b - 1), p(k + 1) - p(k));
-            let d = (a.length() * c.length()).max(f64::MIN_POSITIVE);
-            let angle = (a.dot(c) / d).clamp(-1.0, 1.0).acos();
-            if a.cross(c).dot(normals[k]) < 0.0 { -angle } else { angle }
-        })
-        .collect();
-    let apart = |j: usize, k: usize| {
-        let d = (s[j] - s[k]).abs();
-        d.min(total - d)
-    };
-    let corner = window_sums(&turning, &s, if measured { total / 32.0 } else { -1.0 });
-    let mut best: Option<(usize, f64, [usize; 4])> = None;
-    let mut consider = |c: [usize; 4]| {
-        let rel = c.map(|x| (x + b - c[0]) % b);
-        if !(rel[1] > 0 && rel[1] < rel[2] && rel[2] < rel[3]) {
-            return;
-        }
-        let bad = dividing
-            .iter()
-            .filter(|&&(x, y)| {
-                sides_of((x + b - c[0]) % b, rel) & sides_of((y + b - c[0]) % b, rel) != 0
-            })
-            .count();
-        let score: f64 = c.iter().map(|&k| corner[k]).sum();
-        if best.is_none_or(|(bb, bs, _)| bad < bb || (bad == bb && score > bs)) {
-            best = Some((bad, score, c));
-        }
-    };
-    // Corners a quarter of the boundary apart, from every start.
-    let nearest = |x: f64, start: usize, m: usize| -> usize {
-        if !measured {
-            return (start + m * b / 4) % b;
-        }
-        let x = x.rem_euclid(total);
-        let k = s.partition_point(|&y| y <= x).saturating_sub(1).min(b - 1);
-        if (x - s[k]) <= (s[k + 1] - x) { k } else { (k + 1) % b }
-    };
-    // Every placement is checked against every dividing edge: on a long boundary with many
-    // (a ribbon two triangles wide has as many as it has vertices) only some starts, evenly
-    // spaced, so that the check stays within CORNER_CHECKS.
-    let starts = b.min((CORNER_CHECKS / dividing.len().max(1)).max(64));
-    for start in (0..b).step_by(b.div_ceil(starts)) {
-        let from = s[start];
-        consider(std::array::from_fn(|m| {
-            if m == 0 { start } else { nearest(from + total * m as f64 / 4.0, start, m) }
-        }));
-    }
-    // The four sharpest convex corners, if each turns by 45° or more and no side is shorter
-    // than L/8 or longer than 3L/8.
-    if measured {
-        let mut order: Vec<usize> = (0..b).collect();
-        order.sort_by(|&x, &y| corner[y].total_cmp(&corner[x]).then(x.cmp(&y)));
-        let mut picked: Vec<usize> = Vec::with_capacity(4);
-        for k in order {
-            if picked.len() == 4 || corner[k] < std::f64::consts::FRAC_PI_4 {
-                break;
-            }
-            if picked.iter().all(|&q| apart(k, q) > total / 16.0) {
-                picked.push(k);
-            }
-        }
-        // Each at the sharpest single turn of its window.
-        for k in &mut picked {
-            let centre = *k;
-            *k = (0..b)
-                .filter(|&j| apart(j, centre) <= total / 32.0)
-                .max_by(|&x, &y| turning[x].total_cmp(&turning[y]).then(y.cmp(&x)))
-                .unwrap_or(centre);
-        }
-        if picked.len() == 4 {
-            picked.sort_unstable();
-            picked.dedup();
-            let sides_ok = picked.len() == 4
-                && (0..4).all(|m| {
-                    let len = (s[picked[(m + 1) % 4]] - s[picked[m]]).rem_euclid(total);
-                    (total / 8.0..=3.0 * total / 8.0).contains(&len)
-                });
-            if sides_ok {
-                consider([picked[0], picked[1], picked[2], picked[3]]);
-            }
-        }
-    }
-    best.map(|x| x.2)
 }
 
 /// Parameterises an open, oriented, 2-manifold mesh with one boundary loop and χ = 1 (a
@@ -333,67 +182,12 @@ pub fn parameterise_disc(
     let cg = options.check()?;
     let topology = flat::check_input(positions, triangles, filled, 2, "disc")?;
     let topo_err = |what: String| Err(Error::Topology { what });
-    if topology.boundary.is_empty() {
-        return topo_err(
-            "the mesh is closed (no boundary edge); a disc has one boundary loop".to_owned(),
-        );
-    }
-    let loops = topology.boundary_loops(triangles);
-    if loops.len() != 1 {
-        return topo_err(format!(
-            "the mesh has {} boundary loops; a disc has exactly one",
-            loops.len()
-        ));
-    }
-    let chi = topology.euler_characteristic();
-    if chi != 1 {
-        return topo_err(format!(
-            "the mesh is not a disc: χ = V − E + F = {chi} with one boundary loop (genus {}), a disc has χ = 1",
-            (1 - chi) as f64 / 2.0
-        ));
-    }
-    let ring: Vec<u32> = loops[0].iter().map(|&h| tail(triangles, h)).collect();
+    let ring = boundary_ring(&topology, triangles)?;
     let b = ring.len();
-    if b < 4 {
-        return topo_err(format!(
-            "the boundary has {b} vertices; the square's four corners need at least 4"
-        ));
-    }
     let n = positions.len();
-    let mut position_in_ring = vec![NONE; n];
-    for (k, &v) in ring.iter().enumerate() {
-        position_in_ring[v as usize] = k as u32;
-    }
-    // Interior edges with both ends on the boundary.
-    let dividing: Vec<(usize, usize)> = (0..topology.twin.len() as u32)
-        .filter(|&h| {
-            let t = topology.twin[h as usize];
-            t != NONE
-                && h < t
-                && position_in_ring[tail(triangles, h) as usize] != NONE
-                && position_in_ring[head(triangles, h) as usize] != NONE
-        })
-        .map(|h| {
-            (
-                position_in_ring[tail(triangles, h) as usize] as usize,
-                position_in_ring[head(triangles, h) as usize] as usize,
-            )
-        })
-        .collect();
-    // The surface's normal at each boundary vertex (its triangles' normals, by area).
-    let normals: Vec<DVec3> = ring
-        .iter()
-        .map(|&v| {
-            topology
-                .outgoing(v)
-                .iter()
-                .map(|&h| {
-                    let [a, b, c] = triangles[(h / 3) as usize].map(|k| positions[k as usize]);
-                    (b - a).cross(c - a)
-                })
-                .sum()
-        })
-        .collect();
+    let mut position_in_ring = ring_positions(&ring, n);
+    let dividing = dividing_edges(&topology, triangles, &position_in_ring);
+    let normals = boundary_normals(&topology, triangles, positions, &ring);
     let Some(corner_at) = choose_corners(positions, &ring, &normals, &dividing) else {
         return topo_err(
             "no four distinct boundary vertices can be the square's corners".to_owned(),
@@ -405,35 +199,8 @@ pub fn parameterise_disc(
     for (k, &v) in ring.iter().enumerate() {
         position_in_ring[v as usize] = k as u32;
     }
-    // The boundary on the square by arc length along each side.
     let mut uv = vec![DVec2::splat(0.5); n];
-    let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
-    for m in 0..4 {
-        let (from, to) = (rel[m], if m == 3 { b } else { rel[m + 1] });
-        let mut lengths = vec![0.0];
-        for k in from..to {
-            let step =
-                (positions[ring[(k + 1) % b] as usize] - positions[ring[k] as usize]).length();
-            lengths.push(lengths[lengths.len() - 1] + step);
-        }
-        let total = lengths[lengths.len() - 1];
-        for k in from..to {
-            let t = if total > 0.0 {
-                lengths[k - from] / total
-            } else {
-                (k - from) as f64 / (to - from) as f64
-            };
-            let (a, c) = (square[m], square[(m + 1) % 4]);
-            // Exactly on the side: the coordinate the side fixes is copied, not interpolated.
-            let mut q = a + (c - a) * t;
-            if m % 2 == 0 {
-                q.y = a.y;
-            } else {
-                q.x = a.x;
-            }
-            uv[ring[k] as usize] = q;
-        }
-    }
+    boundary_on_square(positions, &ring, rel, &mut uv);
     let side_bits = |v: u32| {
         let k = position_in_ring[v as usize];
         if k == NONE { 0 } else { sides_of(k as usize, rel) }
@@ -444,64 +211,14 @@ pub fn parameterise_disc(
     let mut lap = Laplacian::new(&topology, triangles);
     lap.set_cotangent_weights(positions, triangles, None);
     let zero = vec![[0.0; 2]; n];
-    let mut x: Vec<[f64; 2]> = uv.iter().map(|p| p.to_array()).collect();
-    let offsets = vec![[IVec2::ZERO; 3]; triangles.len()];
-    let folds = |x: &[[f64; 2]]| {
-        let map = FlatMap {
-            uv: x.iter().map(|p| DVec2::from_array(*p)).collect(),
-            offsets: offsets.clone(),
-        };
-        flat::count_folds(triangles, &map, flat.as_deref())
-    };
-    let (harmonic_iterations, solved) = solve_until_embedded(
-        &lap,
-        Some(&fixed),
-        &zero,
-        &mut x,
-        cg,
-        lap.preconditioner(Some(&fixed), cg).as_ref(),
-        folds,
-    );
+    let (harmonic_iterations, solved, x, offsets) =
+        harmonic_map(&lap, &fixed, &uv, triangles, flat.as_deref(), cg);
     let mut residual = solved?.residual;
     let mut iterations = harmonic_iterations;
     let mut map = FlatMap { uv: x.iter().map(|p| DVec2::from_array(*p)).collect(), offsets };
-    let mut freedom: Vec<Freedom> = (0..n)
-        .map(|v| {
-            let k = position_in_ring[v];
-            if k == NONE {
-                return Freedom::Free;
-            }
-            let k = k as usize;
-            if rel.contains(&k) {
-                return Freedom::Fixed;
-            }
-            let bits = sides_of(k, rel);
-            let axis = if bits & 0b0101 != 0 { 0 } else { 1 };
-            Freedom::Slide { axis, a: ring[(k + b - 1) % b], b: ring[(k + 1) % b] }
-        })
-        .collect();
+    let mut freedom = freedoms(&position_in_ring, &ring, rel);
     if let Some(sides) = &flat_sides {
-        // What an edge cut off lies on its side: exactly there, and it stays (held in the
-        // relaxation's solves too).
-        for (f, t) in triangles.iter().enumerate() {
-            if sides[f] == 0 {
-                continue;
-            }
-            for &v in t {
-                freedom[v as usize] = Freedom::Fixed;
-                fixed[v as usize] = true;
-                if position_in_ring[v as usize] == NONE {
-                    let q = &mut map.uv[v as usize];
-                    *q = q.clamp(DVec2::ZERO, DVec2::ONE);
-                    match sides[f].trailing_zeros() {
-                        0 => q.y = 0.0,
-                        1 => q.x = 1.0,
-                        2 => q.y = 1.0,
-                        _ => q.x = 0.0,
-                    }
-                }
-            }
-        }
+        hold_cut_off(triangles, sides, &position_in_ring, &mut freedom, &mut fixed, &mut map);
     }
     let (harmonic, _) = flat::quality(positions, triangles, &map, flat.as_deref());
     if harmonic.folded_triangles > 0 {
@@ -545,6 +262,211 @@ pub fn parameterise_disc(
             solve_residual: residual,
         },
     })
+}
+
+/// Each ring vertex's position in `ring` ([`NONE`] for the interior), over `n` vertices.
+fn ring_positions(ring: &[u32], n: usize) -> Vec<u32> {
+    let mut position_in_ring = vec![NONE; n];
+    for (k, &v) in ring.iter().enumerate() {
+        position_in_ring[v as usize] = k as u32;
+    }
+    position_in_ring
+}
+
+/// The harmonic stage of [`parameterise_disc`]: the interior solved with the vertices `fixed`
+/// held, from `uv`, until the map folds nothing off the cut-off triangles `flat`; the
+/// iterations, the solve's outcome, the coordinates and the (zero) corner offsets.
+#[expect(clippy::type_complexity, reason = "a private tuple of the stage's results")]
+fn harmonic_map(
+    lap: &Laplacian,
+    fixed: &[bool],
+    uv: &[DVec2],
+    triangles: &[[u32; 3]],
+    flat: Option<&[bool]>,
+    cg: CgOptions,
+) -> (usize, Result<Embedded, Error>, Vec<[f64; 2]>, Vec<[IVec2; 3]>) {
+    let zero = vec![[0.0; 2]; uv.len()];
+    let mut x: Vec<[f64; 2]> = uv.iter().map(|p| p.to_array()).collect();
+    let offsets = vec![[IVec2::ZERO; 3]; triangles.len()];
+    let folds = |x: &[[f64; 2]]| {
+        let map = FlatMap {
+            uv: x.iter().map(|p| DVec2::from_array(*p)).collect(),
+            offsets: offsets.clone(),
+        };
+        flat::count_folds(triangles, &map, flat)
+    };
+    let (harmonic_iterations, solved) = solve_until_embedded(
+        lap,
+        Some(fixed),
+        &zero,
+        &mut x,
+        cg,
+        lap.preconditioner(Some(fixed), cg).as_ref(),
+        folds,
+    );
+    (harmonic_iterations, solved, x, offsets)
+}
+
+/// The first stage of [`parameterise_disc`]: the mesh's one boundary loop as a ring of
+/// vertices, or an error naming why the mesh is not a disc with at least 4 boundary vertices.
+fn boundary_ring(topology: &Topology, triangles: &[[u32; 3]]) -> Result<Vec<u32>, Error> {
+    let topo_err = |what: String| Err(Error::Topology { what });
+    if topology.boundary.is_empty() {
+        return topo_err(
+            "the mesh is closed (no boundary edge); a disc has one boundary loop".to_owned(),
+        );
+    }
+    let loops = topology.boundary_loops(triangles);
+    if loops.len() != 1 {
+        return topo_err(format!(
+            "the mesh has {} boundary loops; a disc has exactly one",
+            loops.len()
+        ));
+    }
+    let chi = topology.euler_characteristic();
+    if chi != 1 {
+        return topo_err(format!(
+            "the mesh is not a disc: χ = V − E + F = {chi} with one boundary loop (genus {}), a disc has χ = 1",
+            (1 - chi) as f64 / 2.0
+        ));
+    }
+    let ring: Vec<u32> = loops[0].iter().map(|&h| tail(triangles, h)).collect();
+    let b = ring.len();
+    if b < 4 {
+        return topo_err(format!(
+            "the boundary has {b} vertices; the square's four corners need at least 4"
+        ));
+    }
+    Ok(ring)
+}
+
+/// Interior edges with both ends on the boundary, as pairs of positions in the ring.
+fn dividing_edges(
+    topology: &Topology,
+    triangles: &[[u32; 3]],
+    position_in_ring: &[u32],
+) -> Vec<(usize, usize)> {
+    (0..topology.twin.len() as u32)
+        .filter(|&h| {
+            let t = topology.twin[h as usize];
+            t != NONE
+                && h < t
+                && position_in_ring[tail(triangles, h) as usize] != NONE
+                && position_in_ring[head(triangles, h) as usize] != NONE
+        })
+        .map(|h| {
+            (
+                position_in_ring[tail(triangles, h) as usize] as usize,
+                position_in_ring[head(triangles, h) as usize] as usize,
+            )
+        })
+        .collect()
+}
+
+/// The surface's normal at each boundary vertex (its triangles' normals, by area).
+fn boundary_normals(
+    topology: &Topology,
+    triangles: &[[u32; 3]],
+    positions: &[DVec3],
+    ring: &[u32],
+) -> Vec<DVec3> {
+    ring.iter()
+        .map(|&v| {
+            topology
+                .outgoing(v)
+                .iter()
+                .map(|&h| {
+                    let [a, b, c] = triangles[(h / 3) as usize].map(|k| positions[k as usize]);
+                    (b - a).cross(c - a)
+                })
+                .sum()
+        })
+        .collect()
+}
+
+/// The boundary on the square by arc length along each side (corner m of the square at ring
+/// position `rel[m]`), into `uv`.
+fn boundary_on_square(positions: &[DVec3], ring: &[u32], rel: [usize; 4], uv: &mut [DVec2]) {
+    let b = ring.len();
+    let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+    for m in 0..4 {
+        let (from, to) = (rel[m], if m == 3 { b } else { rel[m + 1] });
+        let mut lengths = vec![0.0];
+        for k in from..to {
+            let step =
+                (positions[ring[(k + 1) % b] as usize] - positions[ring[k] as usize]).length();
+            lengths.push(lengths[lengths.len() - 1] + step);
+        }
+        let total = lengths[lengths.len() - 1];
+        for k in from..to {
+            let t = if total > 0.0 {
+                lengths[k - from] / total
+            } else {
+                (k - from) as f64 / (to - from) as f64
+            };
+            let (a, c) = (square[m], square[(m + 1) % 4]);
+            // Exactly on the side: the coordinate the side fixes is copied, not interpolated.
+            let mut q = a + (c - a) * t;
+            if m % 2 == 0 {
+                q.y = a.y;
+            } else {
+                q.x = a.x;
+            }
+            uv[ring[k] as usize] = q;
+        }
+    }
+}
+
+/// How each vertex may move in the relaxation: the corners fixed, the other boundary vertices
+/// sliding along their side, the interior free.
+fn freedoms(position_in_ring: &[u32], ring: &[u32], rel: [usize; 4]) -> Vec<Freedom> {
+    let b = ring.len();
+    (0..position_in_ring.len())
+        .map(|v| {
+            let k = position_in_ring[v];
+            if k == NONE {
+                return Freedom::Free;
+            }
+            let k = k as usize;
+            if rel.contains(&k) {
+                return Freedom::Fixed;
+            }
+            let bits = sides_of(k, rel);
+            let axis = if bits & 0b0101 != 0 { 0 } else { 1 };
+            Freedom::Slide { axis, a: ring[(k + b - 1) % b], b: ring[(k + 1) % b] }
+        })
+        .collect()
+}
+
+/// What an edge cut off lies on its side: exactly there, and it stays (held in the
+/// relaxation's solves too).
+fn hold_cut_off(
+    triangles: &[[u32; 3]],
+    sides: &[u8],
+    position_in_ring: &[u32],
+    freedom: &mut [Freedom],
+    fixed: &mut [bool],
+    map: &mut FlatMap,
+) {
+    for (f, t) in triangles.iter().enumerate() {
+        if sides[f] == 0 {
+            continue;
+        }
+        for &v in t {
+            freedom[v as usize] = Freedom::Fixed;
+            fixed[v as usize] = true;
+            if position_in_ring[v as usize] == NONE {
+                let q = &mut map.uv[v as usize];
+                *q = q.clamp(DVec2::ZERO, DVec2::ONE);
+                match sides[f].trailing_zeros() {
+                    0 => q.y = 0.0,
+                    1 => q.x = 1.0,
+                    2 => q.y = 1.0,
+                    _ => q.x = 0.0,
+                }
+            }
+        }
+    }
 }
 
 /// The triangles cut off by an interior edge joining two vertices of one side (they lie flat

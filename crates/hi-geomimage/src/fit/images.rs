@@ -1,0 +1,506 @@
+// SPDX-License-Identifier: MIT
+//! The geometry images of a scan's parts by each method (see the module documentation of
+//! `fit`): a mesh's parts parameterised, a point set's zero set parameterised and settled onto
+//! the points, or the rays of algorithm 2 and §5.8.
+
+use super::*;
+
+/// A part's image, and what is known of the part before its surface.
+pub(super) struct Sourced {
+    pub(super) name: String,
+    pub(super) domain: Domain,
+    pub(super) why: String,
+    pub(super) area_fraction: f64,
+    pub(super) genus: usize,
+    pub(super) boundary_loops: usize,
+    pub(super) repair: Repair,
+    pub(super) source: SourceImage,
+}
+
+/// The images of a scan's parts, and how they were made.
+pub(super) struct Sources {
+    pub(super) parts: Vec<Sourced>,
+    pub(super) dropped: Vec<DroppedPart>,
+    pub(super) method: Method,
+    pub(super) reason: String,
+    /// The points the images were made from (the scan's, or its summary).
+    pub(super) image_points: Vec<DVec3>,
+}
+
+/// The texels a part with `area_fraction` of the fitted parts' area gets of `texels`.
+fn share(texels: usize, area_fraction: f64, kept: f64) -> usize {
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a fraction of a count"
+    )]
+    let t = (texels as f64 * area_fraction / kept.max(f64::MIN_POSITIVE)).round() as usize;
+    t.max(1)
+}
+
+/// The user's image size, for the one part of a scan whose one part is a sphere.
+fn user_size(options: &FitOptions, planned: &[PlannedPart]) -> Option<(usize, usize)> {
+    match planned {
+        [only] if matches!(only.domain, Domain::Sphere(_)) => options.resolution,
+        _ => None,
+    }
+}
+
+/// A sentence on what the planned parts are: how many, what was dropped.
+fn parts_sentence(planned: &[PlannedPart], dropped: &[DroppedPart]) -> String {
+    let mut s = match planned.len() {
+        1 => String::new(),
+        n => format!("; {n} parts, each fitted on its own"),
+    };
+    if !dropped.is_empty() {
+        s.push_str(&format!(
+            "; {} {} left out",
+            dropped.len(),
+            if dropped.len() == 1 { "part" } else { "parts" }
+        ));
+    }
+    s
+}
+
+/// The images of a mesh's parts, each parameterised over its domain; `Ok(Err(why))` when the
+/// mesh cannot stand for the scan (its parts above the floor hold too little of its area, or
+/// none can be made a surface) and `force` is off.
+fn mesh_sources(
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    options: &FitOptions,
+    texels: usize,
+    force: bool,
+    clock: &mut Clock<'_>,
+) -> Result<Result<Sources, String>, Error> {
+    let parts: MeshParts = clock.run(StageKind::Parts, (0, 1), || mesh_parts(points, triangles))?;
+    let (planned, dropped) = clock.run(StageKind::Parts, (0, 1), || {
+        plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+    });
+    let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
+    if planned.is_empty() || (!force && kept < MIN_AREA_KEPT) {
+        let why = if planned.is_empty() {
+            match dropped.first() {
+                Some(d) => {
+                    format!("the scan's mesh gives no part to fit ({}: {})", d.name, d.reason)
+                }
+                None => "the scan's mesh gives no part to fit".to_owned(),
+            }
+        } else {
+            format!(
+                "the scan's mesh has {} parts and those above the floor hold only {:.1} % of its area",
+                parts.parts.len(),
+                100.0 * kept
+            )
+        };
+        if force {
+            return Err(Error::Topology { what: why });
+        }
+        return Ok(Err(why));
+    }
+    let n = planned.len();
+    let size = user_size(options, &planned);
+    let mut out = Vec::with_capacity(n);
+    for (k, part) in planned.iter().enumerate() {
+        let image = clock.run(StageKind::GeometryImage, (k, n), || {
+            part_image(part, share(texels, part.area_fraction, kept), size)
+        })?;
+        let mut repair = part.closed.repair;
+        repair.welded_points = parts.welded_points;
+        repair.dropped_triangles = parts.dropped_triangles;
+        repair.components = parts.parts.len();
+        out.push(Sourced {
+            name: part.name.clone(),
+            domain: part.domain,
+            why: part.why.clone(),
+            area_fraction: part.area_fraction,
+            genus: part.topology.genus,
+            boundary_loops: part.topology.loops.len(),
+            repair,
+            source: SourceImage::Mesh(MeshSource {
+                image: image.image,
+                repair,
+                area_kept: part.area_fraction,
+                quality: image.quality,
+                filled: image.filled,
+                filled_fraction: image.filled_fraction,
+            }),
+        });
+    }
+    let single = &planned[0];
+    let mut reason = match (n, single.domain) {
+        (1, Domain::Sphere(_)) => format!("the scan's mesh is one part: {}", single.why),
+        (1, _) => format!("the scan's mesh is one part, {}", single.why),
+        _ => "the scan's mesh is parameterised part by part".to_owned(),
+    };
+    reason.push_str(&parts_sentence(&planned, &dropped));
+    Ok(Ok(Sources {
+        parts: out,
+        dropped,
+        method: Method::Mesh,
+        reason,
+        image_points: points.to_vec(),
+    }))
+}
+
+/// The images of a point set's parts: the zero set of its signed distance split into parts,
+/// each parameterised over its domain, settled onto the points' patches and refined by moving
+/// least squares on the points themselves ([`MovingLeastSquares`]); the radial image wrapped
+/// where the zero set gives no part. A cloud larger than the images can hold is summarised
+/// first.
+fn point_sources(
+    points: &[DVec3],
+    normals: Option<&[DVec3]>,
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    texels: usize,
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "a count")]
+    let target = ((texels as f64 * SUMMARY_POINTS) as usize).max(SUMMARY_MIN);
+    let (reps, rep_normals) = if points.len() as f64 > SUMMARY_RATIO * target as f64 {
+        clock.run(StageKind::Summary, (0, 1), || -> Result<_, Error> {
+            let cell = cell_for_count(points, target)?;
+            let summary = summarise(points, normals, cell)?;
+            Ok((summary.points, summary.normals))
+        })?
+    } else {
+        (points.to_vec(), normals.map(<[DVec3]>::to_vec))
+    };
+    let sources = |median: bool, finer: &mut bool, clock: &mut Clock<'_>| {
+        let wanted = (rows, cols, texels, median);
+        point_sources_on(points, (&reps, rep_normals.as_deref()), options, wanted, finer, clock)
+    };
+    let mut finer = false;
+    let made = match sources(false, &mut finer, clock) {
+        // A grid finer than the median spacing's (for unevenly dense points) resolves thin
+        // parts, but its zero set may be too ragged to parameterise: then the median's, as for
+        // evenly dense points.
+        Err(_) if finer => sources(true, &mut finer, clock),
+        done => done,
+    };
+    made.map(|s| Sources { image_points: reps, ..s })
+}
+
+/// [`point_sources`] on the points `reps` (a summary of `points`, or the points themselves)
+/// with their normals; the zero set taken on the grid of [`PointSurface::zero_set_cell`], or
+/// of [`CELL`] median spacings when `median` (the last of `wanted` = (rows, cols, texels,
+/// median)). `finer` says whether the grid taken was finer than the median's. The sources'
+/// `image_points` are left empty for the caller.
+fn point_sources_on(
+    points: &[DVec3],
+    (reps, rep_normals): (&[DVec3], Option<&[DVec3]>),
+    options: &FitOptions,
+    (rows, cols, texels, median): (usize, usize, usize, bool),
+    finer: &mut bool,
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    let kept = |planned: &[PlannedPart]| planned.iter().map(|p| p.area_fraction).sum::<f64>();
+    let built = clock.run(StageKind::Parts, (0, 1), || -> Result<_, Error> {
+        let surface = PointSurface::try_new(reps, rep_normals, NEIGHBOURS)?;
+        let cell = if median { CELL * surface.spacing() } else { surface.zero_set_cell() };
+        *finer = cell < CELL * surface.spacing();
+        // A zero set whose parts cannot be made surfaces (tunnels beyond counting between the
+        // walls of a thin part, or a cloud too sparse for its grid) is taken again on a coarser
+        // grid.
+        let mut planned = Err(hi_scan::Error::Degenerate { what: "no zero set" });
+        let mut fragments = (0, 0);
+        for coarser in ZERO_SET_COARSER {
+            planned = surface.zero_set(coarser * cell).and_then(|(v, t)| mesh_parts(&v, &t)).map(
+                |mut parts| {
+                    fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
+                    plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+                },
+            );
+            if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {
+                break;
+            }
+        }
+        Ok((surface, planned, fragments))
+    })?;
+    let (mut surface, planned, fragments) = built;
+    let (planned, dropped) = match planned {
+        Ok((planned, dropped)) if kept(&planned) >= MIN_AREA_KEPT => (planned, dropped),
+        outcome => {
+            // No part of the zero set to parameterise: the rays, wrapped.
+            let why = match outcome {
+                Err(e) => format!("their zero set gave no surface ({e})"),
+                Ok((_, dropped)) => match dropped.first() {
+                    Some(d) => format!(
+                        "the parts of their zero set that could be fitted hold too little of it ({}: {})",
+                        d.name, d.reason
+                    ),
+                    None => "their zero set is empty".to_owned(),
+                },
+            };
+            return wrapped_source(reps, rep_normals, options, (rows, cols), &why, clock);
+        }
+    };
+    // Every patch faces out as the parts' surfaces do.
+    let (samples, outward) = parts::outward_samples(&planned);
+    surface.orient_to(&samples, &outward);
+    let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
+    let n = planned.len();
+    let size = user_size(options, &planned);
+    // The texels settled on the blend of the patches of their nearest points (of a summary,
+    // whose cells average the points, for a large cloud) are refined by a quadric fitted about
+    // each texel itself, to the points themselves.
+    let mls = MovingLeastSquares::try_new(points)?;
+    let mut out = Vec::with_capacity(n);
+    for (k, part) in planned.iter().enumerate() {
+        let image = clock.run(StageKind::GeometryImage, (k, n), || {
+            settled_part_image(part, &surface, reps, &mls, (texels, kept, size))
+        })?;
+        out.push(Sourced {
+            name: part.name.clone(),
+            domain: part.domain,
+            why: part.why.clone(),
+            area_fraction: part.area_fraction,
+            genus: part.topology.genus,
+            boundary_loops: part.topology.loops.len(),
+            repair: part.closed.repair,
+            source: SourceImage::ShrinkWrap(image),
+        });
+    }
+    let reason = zero_set_reason(points, reps, &planned, &dropped, fragments);
+    Ok(Sources {
+        parts: out,
+        dropped,
+        method: Method::ShrinkWrap,
+        reason,
+        image_points: Vec::new(),
+    })
+}
+
+/// [`point_sources_on`] where the zero set gives no part to parameterise: the rays from the
+/// centre shrink-wrapped onto the points, for the reason `why`.
+fn wrapped_source(
+    reps: &[DVec3],
+    rep_normals: Option<&[DVec3]>,
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    why: &str,
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    let wrap = ShrinkWrapOptions {
+        layout: options.layout,
+        rows,
+        cols,
+        centre: options.centre,
+        ..ShrinkWrapOptions::default()
+    };
+    let image =
+        clock.run(StageKind::GeometryImage, (0, 1), || shrink_wrap(reps, rep_normals, &wrap))?;
+    let reason = format!("the points shrink-wrapped from the rays: {why}");
+    Ok(Sources {
+        parts: vec![Sourced {
+            name: "part 1".to_owned(),
+            domain: Domain::Sphere(options.layout),
+            why: "rays from the centre, wrapped onto the points".to_owned(),
+            area_fraction: 1.0,
+            genus: 0,
+            boundary_loops: 0,
+            repair: Repair::default(),
+            source: SourceImage::ShrinkWrap(image),
+        }],
+        dropped: Vec::new(),
+        method: Method::ShrinkWrap,
+        reason,
+        image_points: Vec::new(),
+    })
+}
+
+/// The image of one part of a point set's zero set in [`point_sources_on`]: sampled from its
+/// parameterisation with its `share` of the texels (`texels`, the parts' area `kept`, the
+/// user's `size`), settled onto the patches of `surface` and refined by moving least squares.
+fn settled_part_image(
+    part: &PlannedPart,
+    surface: &PointSurface,
+    reps: &[DVec3],
+    mls: &MovingLeastSquares,
+    (texels, kept, size): (usize, f64, Option<(usize, usize)>),
+) -> Result<ShrinkWrapImage, Error> {
+    let image = part_image(part, share(texels, part.area_fraction, kept), size)?;
+    let (r, c) = (image.image.rows(), image.image.cols());
+    let mut settled = settle(
+        surface,
+        reps,
+        image.image.texels().to_vec(),
+        Some(&image.filled),
+        part.domain,
+        (r, c),
+        0,
+    );
+    crate::shrinkwrap::refine(
+        mls,
+        &mut settled.texels,
+        &settled.filled,
+        part.domain,
+        (r, c),
+        REFINE_BAND * surface.spacing(),
+    );
+    Ok(ShrinkWrapImage {
+        image: GeometryImage::try_new(r, c, settled.texels)?,
+        filled: settled.filled,
+        filled_fraction: settled.filled_fraction,
+        non_star_fraction: 0.0,
+        implicit_start: true,
+        reparameterised: true,
+        rms_move: settled.rms_move,
+        pulled: settled.pulled,
+    })
+}
+
+/// The report's sentence on how [`point_sources_on`] made the images: the zero set, its
+/// parts, a summary, what was left out, and the fragments (count, points) dropped.
+fn zero_set_reason(
+    points: &[DVec3],
+    reps: &[DVec3],
+    planned: &[PlannedPart],
+    dropped: &[DroppedPart],
+    fragments: (usize, usize),
+) -> String {
+    let n = planned.len();
+    let mut reason = format!(
+        "the points shrink-wrapped: the zero set of their signed distance{}",
+        if n == 1 { format!(", {}", planned[0].why) } else { " split into parts".to_owned() }
+    );
+    if reps.len() < points.len() {
+        reason.push_str(&format!(" (from a summary of {} points)", reps.len()));
+    }
+    reason.push_str(&parts_sentence(planned, dropped));
+    if fragments.0 > 0 {
+        reason.push_str(&format!(
+            "; {} {} of the zero set with fewer than {PART_MIN_VERTICES} points nearest to {} left out ({} points in all, measured against the nearest part)",
+            fragments.0,
+            if fragments.0 == 1 { "fragment" } else { "fragments" },
+            if fragments.0 == 1 { "it" } else { "each" },
+            fragments.1,
+        ));
+    }
+    reason
+}
+
+/// The one image of the ray methods (algorithm 2, §5.8) over the whole scan, its sparse mesh
+/// densified first.
+fn ray_sources(
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    let dense = if triangles.is_empty() {
+        points.to_vec()
+    } else {
+        hi_scan::sampling::densify(
+            &Scan { points: points.to_vec(), triangles: triangles.to_vec(), ..Scan::default() },
+            options.densify,
+        )
+    };
+    let rays = SphericalOptions {
+        layout: options.layout,
+        rows,
+        cols,
+        centre: options.centre,
+        ..SphericalOptions::default()
+    };
+    let source = clock.run(StageKind::GeometryImage, (0, 1), || -> Result<_, Error> {
+        Ok(match options.method {
+            Method::Contours => SourceImage::Contours(contour_image(&dense, &rays)?),
+            _ => SourceImage::Radial(spherical_image(&dense, &rays)?),
+        })
+    })?;
+    Ok(Sources {
+        parts: vec![Sourced {
+            name: "part 1".to_owned(),
+            domain: Domain::Sphere(options.layout),
+            why: "rays from the centre".to_owned(),
+            area_fraction: 1.0,
+            genus: 0,
+            boundary_loops: 0,
+            repair: Repair::default(),
+            source,
+        }],
+        dropped: Vec::new(),
+        method: options.method,
+        reason: format!("{} asked for", options.method.name()),
+        image_points: dense,
+    })
+}
+
+/// The images of the scan's parts by the method asked for (`Auto`: a mesh's parts if they can
+/// stand for it, else the points'); see the module documentation.
+pub(super) fn sources(
+    scan: &Scan,
+    (points, triangles): (&[DVec3], &[[u32; 3]]),
+    options: &FitOptions,
+    (rows, cols): (usize, usize),
+    clock: &mut Clock<'_>,
+) -> Result<Sources, Error> {
+    let texels = Domain::Sphere(options.layout).distinct_texels(rows, cols);
+    let normals = if triangles.is_empty() { scan.normals.as_deref() } else { None };
+    Ok(match options.method {
+        Method::Radial | Method::Contours => {
+            ray_sources(points, triangles, options, (rows, cols), clock)?
+        }
+        Method::Auto | Method::Mesh if !triangles.is_empty() => {
+            let force = options.method == Method::Mesh;
+            match mesh_sources(points, triangles, options, texels, force, clock)? {
+                Ok(sources) => sources,
+                Err(why) => {
+                    let mut s =
+                        point_sources(points, normals, options, (rows, cols), texels, clock)?;
+                    s.reason = format!("{why}; {}", s.reason);
+                    s
+                }
+            }
+        }
+        Method::Mesh => {
+            return Err(Error::Topology {
+                what: "the scan has no triangles to parameterise".to_owned(),
+            });
+        }
+        Method::Auto | Method::ShrinkWrap => {
+            let mut s = point_sources(points, normals, options, (rows, cols), texels, clock)?;
+            if triangles.is_empty() && options.method == Method::Auto {
+                s.reason = format!("the scan has no triangles; {}", s.reason);
+            }
+            s
+        }
+    })
+}
+
+/// Leaves out the parts whose images are mostly guesswork, naming them; an error if every
+/// part's is. (The texels a parameterisation puts on the caps of holes are the surface's
+/// choice, said so in the report, not missing data: only the rays' images are judged.)
+pub(super) fn leave_out_guesswork(
+    sources: &mut Sources,
+    max_hole_fraction: f64,
+) -> Result<(), Error> {
+    let guesswork = |p: &Sourced| {
+        let h = p.source.hole_fraction();
+        h >= 1.0 || (p.source.follows_outer_shell() && h > max_hole_fraction)
+    };
+    if sources.parts.iter().all(guesswork) {
+        let worst = sources.parts.iter().map(|p| p.source.hole_fraction()).fold(0.0, f64::max);
+        return Err(Error::MostlyHoles { fraction: worst });
+    }
+    let dropped = &mut sources.dropped;
+    sources.parts.retain(|p| {
+        let bad = guesswork(p);
+        if bad {
+            dropped.push(DroppedPart {
+                name: p.name.clone(),
+                vertices: 0,
+                area_fraction: p.area_fraction,
+                reason: format!(
+                    "{:.0} % of its image found no scan data",
+                    100.0 * p.source.hole_fraction()
+                ),
+            });
+        }
+        !bad
+    });
+    Ok(())
+}

@@ -1,0 +1,363 @@
+// SPDX-License-Identifier: MIT
+//! A spherical parameterisation of a closed genus-0 mesh, and the geometry image sampled from
+//! it (beyond §5.3: the thesis casts rays from a centre, which needs a star-shaped object; here
+//! any genus-0 surface works, as in Praun and Hoppe, "Spherical parametrization and
+//! remeshing", SIGGRAPH 2003).
+//!
+//! **The map.** Every vertex of a [`ClosedMesh`] gets a point on the unit sphere so that every
+//! triangle, taken as the flat triangle between its three sphere points, is wound
+//! counter-clockwise seen from outside (a·(b × c) > 0): the triangles tile the sphere once,
+//! with no fold. The piecewise-linear map from those triangles to the mesh's triangles is then
+//! one-to-one, and a texel that looks along direction d (any [`Layout`](crate::Layout)) holds
+//! the point of the mesh that d falls on. Texels hold x, y, z of the surface itself, not a distance along a
+//! ray, so ears, limbs and overhangs are sampled like everything else.
+//!
+//! **How.** As Praun and Hoppe do, coarse to fine:
+//! 1. the mesh is simplified to a tetrahedron by half-edge collapses (a vertex merged into a
+//!    neighbour, which keeps its position), in rounds that each remove an independent set of
+//!    vertices, cheapest first by the quadric error of Garland and Heckbert; a collapse must
+//!    keep the mesh a 2-manifold (the link condition: the edge's ends share exactly two
+//!    neighbours) and, while possible, not turn a triangle over;
+//! 2. the tetrahedron goes onto the sphere as the regular one;
+//! 3. the collapses are undone in reverse; each vertex that comes back is placed in the kernel
+//!    of its ring of neighbours (where all its triangles are wound correctly): at the deepest
+//!    point of the kernel (the centre of its largest inscribed circle), or, on the fine levels,
+//!    at its neighbours' centroid when that is in the kernel; the kernel is never empty next to
+//!    the vertex it had been merged into, where the last fallback puts it;
+//! 4. vertices are moved to lower the L² stretch of the map from the sphere to the surface
+//!    (Sander, Snyder, Gortler and Hoppe 2001), E = Σ A (σ₁² + σ₂²)/2 over the triangles,
+//!    A the triangle's area on the surface and σ the singular values of the map's Jacobian:
+//!    each vertex just placed (and, on the coarse levels, the one it split from), every vertex
+//!    each time the mesh has grown by half while it is coarse, and every vertex of the
+//!    finished map. Minimising E spreads the surface evenly over the sphere (no part
+//!    undersampled in the image). Each move is a Newton step on the sphere, halved until it
+//!    lowers E with every triangle of the vertex wound correctly; as the set of such positions
+//!    is convex (an intersection of hemispheres), the map stays one-to-one throughout. E is
+//!    made a barrier against every way a triangle can degenerate on the sphere, and a small
+//!    shape term keeps triangles that are slivers on the surface from becoming slivers on the
+//!    sphere (see `face_energy`). The vertices of each colour of a greedy colouring move in
+//!    parallel.
+//!
+//! **The image.** For each texel, the triangle containing its direction is found by walking
+//! across triangle edges from the texel before it, and the texel is the surface point at the
+//! barycentric coordinates of the direction's intersection with the triangle's plane (continuous
+//! across edges). Texels in triangles that closed a hole are flagged.
+
+//!
+//! **The code.** `simplify` holds the mesh hierarchy and the collapses (1), `splits` the base
+//! tetrahedron and the placement of each vertex split (2, 3), `relax` the stretch energy and
+//! the relaxation (4), and `sample` the walk across the map that samples the image.
+
+mod relax;
+mod sample;
+mod simplify;
+mod splits;
+
+use glam::DVec3;
+use hi_par::*;
+
+use crate::{Error, GeometryImage};
+use hi_scan::repair::ClosedMesh;
+
+use relax::{relax, relax_vertex};
+use sample::triangle_neighbours;
+use simplify::Hierarchy;
+use splits::{base, place};
+
+/// The settings of [`parameterise`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SphereParamOptions {
+    /// Relaxation sweeps over every vertex each time the mesh has grown by half during the
+    /// refinement, while it has at most [`SphereParamOptions::fine_vertices`]. Default 4.
+    pub sweeps: usize,
+    /// Sweeps over every vertex of the finished map. Default 1.
+    pub final_sweeps: usize,
+    /// Above this many vertices the refinement only places vertices and relaxes each once
+    /// (the coarse levels have shaped the map by then; the final sweeps adjust it locally).
+    /// Default 10 000.
+    pub fine_vertices: usize,
+}
+
+impl Default for SphereParamOptions {
+    fn default() -> Self {
+        Self { sweeps: 4, final_sweeps: 1, fine_vertices: 10_000 }
+    }
+}
+
+/// How good a spherical parameterisation is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ParamQuality {
+    /// Rounds of collapses from the mesh to the tetrahedron.
+    pub levels: usize,
+    /// Collapses that had to turn a triangle over on the surface (none was left otherwise).
+    pub forced_collapses: usize,
+    /// The L² stretch efficiency of Praun and Hoppe: (area on the sphere / area on the
+    /// surface) over E, scaled so that a map with the same stretch everywhere gives 1; in
+    /// (0, 1], higher is better.
+    pub stretch_efficiency: f64,
+    /// The ratio of the largest to the smallest (area on the sphere / area on the surface)
+    /// over the triangles with a surface area above a millionth of the mean: how much denser
+    /// the image samples one part of the surface than another.
+    pub area_ratio: f64,
+    /// Triangles wound the wrong way on the sphere (0 for a valid map).
+    pub folded_triangles: usize,
+}
+
+/// A spherical parameterisation: the mesh and one unit vector per vertex.
+#[derive(Clone, Debug)]
+pub struct SphereParam {
+    mesh: ClosedMesh,
+    sphere: Vec<DVec3>,
+    across: Vec<[u32; 3]>,
+    quality: ParamQuality,
+}
+
+/// A geometry image sampled from a [`SphereParam`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamImage {
+    /// The image: texel (i, j) is the surface point that direction
+    /// `layout.direction(i, j, rows, cols)` falls on.
+    pub image: GeometryImage,
+    /// Texels that fell on a triangle added to close a hole (row-major).
+    pub filled: Vec<bool>,
+    /// The fraction of the distinct texels (each direction once) that fell in a closed hole.
+    pub filled_fraction: f64,
+}
+
+/// Above this many vertices a round's splits are placed together, in parallel (below it, one
+/// at a time, each settled with the vertex it came from).
+const BATCH_ABOVE: usize = 2000;
+
+/// Parameterises a closed genus-0 mesh over the unit sphere; see the module documentation.
+///
+/// # Errors
+///
+/// [`Error::Topology`] if the mesh cannot be simplified to a tetrahedron or a vertex cannot be
+/// placed without folding the map (neither happens for a valid [`ClosedMesh`] in exact
+/// arithmetic; the error guards against rounding in extreme meshes); [`Error::InvalidOption`]
+/// for 0 final sweeps.
+pub fn parameterise(mesh: &ClosedMesh, options: &SphereParamOptions) -> Result<SphereParam, Error> {
+    let mut h = Hierarchy::new(mesh);
+    h.simplify()?;
+    let n = mesh.positions.len();
+    let mut sphere = vec![DVec3::ZERO; n];
+    base(&h, &mut sphere)?;
+    relax(&h, &mut sphere, options.sweeps.max(1) * 4);
+    let levels = h.level_starts.len();
+    let mut present = 4usize;
+    let mut last_relaxed = 4usize;
+    let collapses = std::mem::take(&mut h.collapses);
+    for level in (0..levels).rev() {
+        let start = h.level_starts[level];
+        let end = if level + 1 < levels { h.level_starts[level + 1] } else { collapses.len() };
+        if present > BATCH_ABOVE {
+            // A round's collapses were independent (no two of its vertices neighbours), so
+            // its splits can all be made first and their vertices placed and settled in
+            // parallel: each reads only its own ring, which no other vertex of the round is
+            // in. (One split at a time would also settle the vertex each came from; here those
+            // settle in the sweeps below.)
+            let fine = present > options.fine_vertices;
+            let batch = &collapses[start..end];
+            for &c in batch.iter().rev() {
+                h.split(c);
+            }
+            let placed: Vec<Option<DVec3>> = batch
+                .par_iter()
+                .with_min_len(64)
+                .map(|c| place(&h, &sphere, c.v, c.u, fine))
+                .collect();
+            for (c, x) in batch.iter().zip(placed) {
+                let Some(x) = x else {
+                    return Err(Error::Topology {
+                        what: "a vertex could not be placed on the sphere without a fold"
+                            .to_owned(),
+                    });
+                };
+                sphere[c.v as usize] = x;
+            }
+            for _ in 0..if fine { 1 } else { 3 } {
+                let settled: Vec<Option<(DVec3, f64)>> = batch
+                    .par_iter()
+                    .with_min_len(64)
+                    .map(|c| relax_vertex(&h, &sphere, c.v))
+                    .collect();
+                for (c, y) in batch.iter().zip(settled) {
+                    if let Some((y, _)) = y {
+                        sphere[c.v as usize] = y;
+                    }
+                }
+            }
+            present += batch.len();
+            if fine {
+                continue;
+            }
+        } else {
+            for &c in collapses[start..end].iter().rev() {
+                h.split(c);
+                let fine = present > options.fine_vertices;
+                let Some(x) = place(&h, &sphere, c.v, c.u, fine) else {
+                    return Err(Error::Topology {
+                        what: "a vertex could not be placed on the sphere without a fold"
+                            .to_owned(),
+                    });
+                };
+                sphere[c.v as usize] = x;
+                // Settle the new vertex and the one it came from at once, so that no triangle
+                // stays a sliver for the next splits to subdivide.
+                let (iters, which) = if fine { (1, 1) } else { (3, 2) };
+                for _ in 0..iters {
+                    for &w in &[c.v, c.u][..which] {
+                        if let Some((y, _)) = relax_vertex(&h, &sphere, w) {
+                            sphere[w as usize] = y;
+                        }
+                    }
+                }
+                present += 1;
+            }
+        }
+        if 2 * present >= 3 * last_relaxed {
+            let sweeps = if present > options.fine_vertices { 0 } else { options.sweeps };
+            relax(&h, &mut sphere, sweeps);
+            last_relaxed = present;
+        }
+    }
+    relax(&h, &mut sphere, options.final_sweeps);
+    let quality = measure(mesh, &sphere, levels, h.forced);
+    if quality.folded_triangles > 0 {
+        return Err(Error::Topology {
+            what: format!("the spherical map folds {} triangles over", quality.folded_triangles),
+        });
+    }
+    let across = triangle_neighbours(&mesh.triangles);
+    Ok(SphereParam { mesh: mesh.clone(), sphere, across, quality })
+}
+
+/// Stretch efficiency, area ratio and folds of a map.
+fn measure(mesh: &ClosedMesh, sphere: &[DVec3], levels: usize, forced: usize) -> ParamQuality {
+    let (mut e, mut area_s, mut area_p) = (0.0, 0.0, 0.0);
+    let mut folded = 0;
+    let mut ratios = Vec::with_capacity(mesh.triangles.len());
+    let mean_area = mesh.area() / mesh.triangles.len().max(1) as f64;
+    for t in &mesh.triangles {
+        let [a, b, c] = t.map(|k| sphere[k as usize]);
+        let [pa, pb, pc] = t.map(|k| mesh.positions[k as usize]);
+        let ap = 0.5 * (pb - pa).cross(pc - pa).length();
+        let n = (b - a).cross(c - a);
+        if n.dot(a + b + c) <= 0.0 || n.length_squared() == 0.0 {
+            folded += 1;
+            continue;
+        }
+        let as_ = 0.5 * n.length();
+        let l2 =
+            [(pb - pc).length_squared(), (pc - pa).length_squared(), (pa - pb).length_squared()];
+        // The stretch of the map from the flat triangle abc itself (|n| rather than the
+        // barrier's det).
+        let num =
+            l2[0] * (b - a).dot(c - a) + l2[1] * (c - b).dot(a - b) + l2[2] * (a - c).dot(b - c);
+        e += 0.5 * ap * num / n.length_squared();
+        area_s += as_;
+        area_p += ap;
+        if ap > 1e-6 * mean_area {
+            ratios.push(as_ / ap);
+        }
+    }
+    // A map with the same stretch everywhere has σ₁ = σ₂ = √(area_p / area_s), so E equals
+    // area_p · area_p / area_s; the efficiency is that over E.
+    let efficiency = if e > 0.0 { (area_p * area_p / area_s / e).min(1.0) } else { 0.0 };
+    let (lo, hi) =
+        ratios.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &r| (lo.min(r), hi.max(r)));
+    ParamQuality {
+        levels,
+        forced_collapses: forced,
+        stretch_efficiency: efficiency,
+        area_ratio: if lo > 0.0 { hi / lo } else { f64::INFINITY },
+        folded_triangles: folded,
+    }
+}
+
+impl SphereParam {
+    /// The mesh parameterised.
+    #[must_use]
+    pub const fn mesh(&self) -> &ClosedMesh {
+        &self.mesh
+    }
+
+    /// The point on the unit sphere of each vertex.
+    #[must_use]
+    pub fn sphere(&self) -> &[DVec3] {
+        &self.sphere
+    }
+
+    /// How good the map is.
+    #[must_use]
+    pub const fn quality(&self) -> ParamQuality {
+        self.quality
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::relax::{face_energy, face_energy_grad};
+    use super::*;
+
+    /// The analytic gradient and Hessian of a face's energy against central differences.
+    #[test]
+    fn face_energy_derivatives_match_differences() {
+        let a = DVec3::new(0.1, 0.05, 1.0).normalize();
+        let b = DVec3::new(0.4, 0.0, 1.0).normalize();
+        let c = DVec3::new(0.1, 0.35, 1.0).normalize();
+        let (area, l2, shape) = (0.7, [0.9, 1.3, 0.6], 0.2);
+        let (e, g, hess) = face_energy_grad(a, b, c, area, l2, shape);
+        assert!((e - face_energy(a, b, c, area, l2, shape)).abs() < 1e-12 * e, "energy");
+        let h = 1e-6;
+        for axis in [DVec3::X, DVec3::Y, DVec3::Z] {
+            let (ep, gp, _) = face_energy_grad(a + h * axis, b, c, area, l2, shape);
+            let (em, gm, _) = face_energy_grad(a - h * axis, b, c, area, l2, shape);
+            let dg = (ep - em) / (2.0 * h);
+            assert!(
+                (dg - g.dot(axis)).abs() < 1e-6 * g.length(),
+                "gradient along {axis}: {dg} vs {}",
+                g.dot(axis)
+            );
+            let dh = (gp - gm) / (2.0 * h);
+            let column = hess * axis;
+            assert!(
+                (dh - column).length() < 1e-5 * column.length().max(1.0),
+                "Hessian column {axis}: {dh} vs {column}"
+            );
+        }
+        // Wound the wrong way: infinite.
+        assert_eq!(face_energy(a, c, b, area, l2, shape), f64::INFINITY);
+    }
+
+    /// A map whose triangles keep the surface's shape and have areas in proportion has
+    /// stretch efficiency 1.
+    #[test]
+    fn uniform_stretch_has_efficiency_one() {
+        // The regular octahedron on the unit sphere is its own map.
+        let p = [DVec3::X, DVec3::Y, DVec3::Z, DVec3::NEG_X, DVec3::NEG_Y, DVec3::NEG_Z];
+        let t = vec![
+            [0, 1, 2],
+            [1, 3, 2],
+            [3, 4, 2],
+            [4, 0, 2],
+            [1, 0, 5],
+            [3, 1, 5],
+            [4, 3, 5],
+            [0, 4, 5],
+        ];
+        let mesh = ClosedMesh {
+            positions: p.iter().map(|x| *x * 3.0).collect(),
+            triangles: t,
+            scan_vertex: (0..6).collect(),
+            filled: vec![false; 8],
+            repair: hi_scan::repair::Repair::default(),
+        };
+        let q = measure(&mesh, &p, 0, 0);
+        assert!((q.stretch_efficiency - 1.0).abs() < 1e-12, "{q:?}");
+        assert!((q.area_ratio - 1.0).abs() < 1e-12, "{q:?}");
+        assert_eq!(q.folded_triangles, 0);
+    }
+}

@@ -1,0 +1,486 @@
+// SPDX-License-Identifier: MIT
+//! Step 7 of the repair: the shortest loops that do not separate the surface, found block by
+//! block (Erickson and Whittlesey 2005), and the handles cut along them.
+
+use glam::DVec3;
+use hi_par::*;
+
+use super::holes::{boundary_loops, fill_hole};
+use super::{ClosedMesh, Repair, edge_key};
+
+/// The length of the shortest loop found on the closed mesh `mesh` that does not separate it
+/// (the loop [`close_part`](super::close_part) would cut first, found the same way), or
+/// `None` for a surface of genus 0. A handle's loop as short as a few edges is a tunnel
+/// between two sheets that nearly touch, not a handle of the object.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::{Closing, close_part, mesh_parts, shortest_handle};
+///
+/// // A torus of tube radius 0.25 about a circle of radius 1, 48 × 16 quads: the shortest
+/// // loop goes round the tube, 2π · 0.25 long (a little less on the polygon).
+/// let (nu, nv) = (48u32, 16u32);
+/// let at = |i: u32, j: u32| {
+///     let (a, b) = (std::f64::consts::TAU * f64::from(i % nu) / f64::from(nu), std::f64::consts::TAU * f64::from(j % nv) / f64::from(nv));
+///     DVec3::new((1.0 + 0.25 * b.cos()) * a.cos(), (1.0 + 0.25 * b.cos()) * a.sin(), 0.25 * b.sin())
+/// };
+/// let points: Vec<DVec3> = (0..nu * nv).map(|k| at(k / nv, k % nv)).collect();
+/// let id = |i: u32, j: u32| (i % nu) * nv + j % nv;
+/// let triangles: Vec<[u32; 3]> = (0..nu)
+///     .flat_map(|i| (0..nv).flat_map(move |j| [[id(i, j), id(i + 1, j), id(i + 1, j + 1)], [id(i, j), id(i + 1, j + 1), id(i, j + 1)]]))
+///     .collect();
+/// let torus = close_part(&mesh_parts(&points, &triangles).unwrap().parts[0], Closing::Torus).unwrap();
+/// let length = shortest_handle(&torus).unwrap();
+/// assert!((length / (std::f64::consts::TAU * 0.25) - 1.0).abs() < 0.03, "{length}");
+/// ```
+#[must_use]
+pub fn shortest_handle(mesh: &ClosedMesh) -> Option<f64> {
+    HANDLE_BLOCKS
+        .iter()
+        .chain(&[f64::INFINITY])
+        .flat_map(|&side| handle_loops(&mesh.triangles, &mesh.positions, side))
+        .map(|(length, _)| length)
+        .min_by(f64::total_cmp)
+}
+
+/// The sides of the blocks in which [`close_mesh`](super::close_mesh) looks for loops that
+/// cut handles (then over the whole mesh), in mean edge lengths of the mesh.
+pub const HANDLE_BLOCKS: [f64; 3] = [8.0, 32.0, 128.0];
+
+/// At most this many handles are cut.
+pub const MAX_HANDLES: usize = 32;
+
+/// Roots tried per block: the first vertex of the block, then a vertex of the best loop so far.
+const HANDLE_ROOTS: usize = 3;
+
+/// V − E + F of a triangle mesh with `boundary_edges` edges on one triangle (every other edge
+/// on two).
+pub(super) fn euler_characteristic(vertices: usize, faces: usize, boundary_edges: i64) -> i64 {
+    let (v, f) = (vertices as i64, faces as i64);
+    v - (3 * f + boundary_edges) / 2 + f
+}
+
+/// Step 7 of [`close_mesh`](super::close_mesh) on a closed, consistently oriented mesh: while
+/// its genus is above 0, cuts the shortest non-separating loops found ([`handle_loops`], in
+/// blocks of every size of [`HANDLE_BLOCKS`] and over the whole mesh; several at once when
+/// they are disjoint and do not separate the surface together, [`independent_loops`]) and
+/// closes both sides of each cut.
+pub(super) fn cut_handles(
+    faces: &mut Vec<[u32; 3]>,
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    filled: &mut Vec<bool>,
+    chi_wanted: i64,
+    repair: &mut Repair,
+) {
+    let kept_open: Vec<Vec<u32>> = boundary_loops(faces, positions.len())
+        .into_iter()
+        .map(|mut lp| {
+            lp.sort_unstable();
+            lp
+        })
+        .collect();
+    let open = kept_open.iter().map(Vec::len).sum::<usize>() as i64;
+    while repair.handles_cut < MAX_HANDLES {
+        let chi = euler_characteristic(positions.len(), faces.len(), open);
+        if chi >= chi_wanted {
+            return;
+        }
+        // Every block's loop at every size of block (a loop may fit a block of one grid and
+        // not the next, and the roots differ), shortest first; as many of them cut at once as
+        // are disjoint and, together, do not separate the surface.
+        let mut found: Vec<(f64, Vec<u32>)> = HANDLE_BLOCKS
+            .iter()
+            .chain(&[f64::INFINITY])
+            .flat_map(|&side| handle_loops(faces, positions, side))
+            .collect();
+        found.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let wanted = usize::try_from((chi_wanted - chi) / 2)
+            .unwrap_or(0)
+            .min(MAX_HANDLES - repair.handles_cut)
+            .max(1);
+        let loops = independent_loops(faces, positions.len(), found, wanted);
+        if loops.is_empty() {
+            return;
+        }
+        let mut cut = 0;
+        for lp in &loops {
+            if !cut_along(lp, faces, positions, scan_vertex) {
+                break;
+            }
+            cut += 1;
+        }
+        if cut == 0 {
+            return;
+        }
+        filled.resize(faces.len(), false);
+        // The two cuts are holes of their own; they are not the scan's, so not counted as such.
+        // A boundary kept open (a disc's) stays open.
+        for lp in boundary_loops(faces, positions.len()) {
+            let mut key = lp.clone();
+            key.sort_unstable();
+            if !kept_open.contains(&key) {
+                fill_hole(&lp, faces, positions, scan_vertex, filled);
+            }
+        }
+        if euler_characteristic(positions.len(), faces.len(), open) != chi + 2 * cut as i64 {
+            // Cannot happen for non-separating loops of a closed mesh; stop rather than loop.
+            return;
+        }
+        repair.handles_cut += cut;
+    }
+}
+
+/// Of the loops `found` (shortest first), at most `wanted` that share no vertex and that,
+/// cut together, leave the faces of the closed mesh `faces` (over `vertices` vertices)
+/// connected: each would lower the genus by one (the greedy choice of a shortest system of
+/// loops, Erickson and Whittlesey 2005). The first loop is always taken: it does not
+/// separate the surface on its own.
+pub(super) fn independent_loops(
+    faces: &[[u32; 3]],
+    vertices: usize,
+    found: Vec<(f64, Vec<u32>)>,
+    wanted: usize,
+) -> Vec<Vec<u32>> {
+    // Pairs of faces across each edge, keyed by the edge.
+    let mut sides: Vec<(u64, u32)> = faces
+        .iter()
+        .enumerate()
+        .flat_map(|(f, t)| {
+            let f = u32::try_from(f).unwrap_or(u32::MAX);
+            (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f))
+        })
+        .collect();
+    sides.par_sort_unstable();
+    let pairs: Vec<(u64, u32, u32)> = sides
+        .chunk_by(|a, b| a.0 == b.0)
+        .filter(|pair| pair.len() == 2)
+        .map(|pair| (pair[0].0, pair[0].1, pair[1].1))
+        .collect();
+    let mut used = vec![false; vertices];
+    let mut barrier: Vec<u64> = Vec::new();
+    let mut chosen: Vec<Vec<u32>> = Vec::new();
+    for (_, lp) in found {
+        if chosen.len() >= wanted {
+            break;
+        }
+        if lp.iter().any(|&v| used.get(v as usize).is_none_or(|&u| u)) {
+            continue;
+        }
+        let m = lp.len();
+        let mut trial = barrier.clone();
+        trial.extend((0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])));
+        trial.sort_unstable();
+        if chosen.is_empty() || faces_connected(faces.len(), &pairs, &trial) {
+            for &v in &lp {
+                used[v as usize] = true;
+            }
+            chosen.push(lp);
+            barrier = trial;
+        }
+    }
+    chosen
+}
+
+/// Whether `n` faces joined across the edges of `pairs` (edge, face, face) but the sorted
+/// `barrier` edges form one piece.
+pub(super) fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u64]) -> bool {
+    let mut parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let mut pieces = n;
+    for &(key, f, g) in pairs {
+        if barrier.binary_search(&key).is_ok() {
+            continue;
+        }
+        let (rf, rg) = (find(&mut parent, f), find(&mut parent, g));
+        if rf != rg {
+            parent[rf as usize] = rg;
+            pieces -= 1;
+        }
+    }
+    pieces <= 1
+}
+
+/// The half-edges of `faces` sorted by (from, to): half-edge 3f + k runs from corner k of face
+/// f to corner k + 1.
+pub(super) fn directed_edges(faces: &[[u32; 3]]) -> Vec<(u64, u32)> {
+    let mut half: Vec<(u64, u32)> = Vec::with_capacity(3 * faces.len());
+    for (f, t) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let h = u32::try_from(3 * f + k).unwrap_or(u32::MAX);
+            half.push(((u64::from(t[k]) << 32) | u64::from(t[(k + 1) % 3]), h));
+        }
+    }
+    half.par_sort_unstable();
+    half
+}
+
+/// The face holding the half-edge a → b.
+fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
+    let key = (u64::from(a) << 32) | u64::from(b);
+    half.binary_search_by_key(&key, |&(k, _)| k).ok().map(|i| half[i].1 as usize / 3)
+}
+
+/// The shortest non-separating loop of a closed mesh found within each block of `blocks` mean
+/// edge lengths (see the module documentation; infinite for the whole mesh), on both grids of
+/// blocks: each loop's length and vertices in order; none when no block holds one.
+fn handle_loops(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Vec<(f64, Vec<u32>)> {
+    let at = |k: u32| positions[k as usize];
+    let mean_edge = faces
+        .iter()
+        .map(|t| {
+            at(t[0]).distance(at(t[1])) + at(t[1]).distance(at(t[2])) + at(t[2]).distance(at(t[0]))
+        })
+        .sum::<f64>()
+        / (3 * faces.len()).max(1) as f64;
+    let side = blocks * mean_edge;
+    if !(side > 0.0 && mean_edge.is_finite()) {
+        return Vec::new();
+    }
+    let lo = positions.iter().fold(DVec3::INFINITY, |a, p| a.min(*p));
+    let mut all: Vec<(f64, Vec<u32>)> = Vec::new();
+    for offset in [0.0, 0.5] {
+        if blocks.is_infinite() && offset > 0.0 {
+            // One block either way.
+            break;
+        }
+        // Faces by block, blocks in a fixed order.
+        let mut keyed: Vec<([i64; 3], u32)> = faces
+            .iter()
+            .enumerate()
+            .map(|(f, t)| {
+                let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
+                // (One block, 0, for an infinite side.)
+                #[expect(clippy::cast_possible_truncation, reason = "a block index")]
+                let key = ((c - lo) / side + offset).floor().to_array().map(|x| x as i64);
+                (key, u32::try_from(f).unwrap_or(u32::MAX))
+            })
+            .collect();
+        keyed.par_sort_unstable();
+        let blocks: Vec<&[([i64; 3], u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
+        let found: Vec<(f64, Vec<u32>)> = blocks
+            .par_iter()
+            .filter_map(|block| {
+                let block: Vec<u32> = block.iter().map(|&(_, f)| f).collect();
+                block_loop(faces, positions, &block)
+            })
+            .collect();
+        all.extend(found);
+    }
+    all
+}
+
+/// The shortest loop found in the faces `block` of a closed mesh that does not separate them:
+/// its length and vertices. A few roots are tried ([`HANDLE_ROOTS`]).
+fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<(f64, Vec<u32>)> {
+    use std::collections::HashMap;
+    // Local vertices and undirected edges of the block, with the faces on each.
+    let mut local: HashMap<u32, u32> = HashMap::new();
+    let mut verts: Vec<u32> = Vec::new();
+    let mut id = |v: u32, verts: &mut Vec<u32>| {
+        *local.entry(v).or_insert_with(|| {
+            verts.push(v);
+            u32::try_from(verts.len() - 1).unwrap_or(u32::MAX)
+        })
+    };
+    let mut edges: Vec<(u64, u32)> = Vec::with_capacity(3 * block.len());
+    for (i, &f) in block.iter().enumerate() {
+        let t = faces[f as usize].map(|v| id(v, &mut verts));
+        for k in 0..3 {
+            edges.push((edge_key(t[k], t[(k + 1) % 3]), u32::try_from(i).unwrap_or(u32::MAX)));
+        }
+    }
+    edges.sort_unstable();
+    // (a, b, face, other face or None on the block's border)
+    let mut list: Vec<(u32, u32, u32, Option<u32>)> = Vec::new();
+    for pair in edges.chunk_by(|x, y| x.0 == y.0) {
+        let key = pair[0].0;
+        let (a, b) = ((key >> 32) as u32, key as u32);
+        list.push((a, b, pair[0].1, pair.get(1).map(|x| x.1)));
+    }
+    let n = verts.len();
+    let mut adjacency: Vec<Vec<(u32, f64)>> = vec![Vec::new(); n];
+    for &(a, b, _, _) in &list {
+        let w =
+            positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize]);
+        adjacency[a as usize].push((b, w));
+        adjacency[b as usize].push((a, w));
+    }
+    let mut best: Option<(f64, Vec<u32>)> = None;
+    let mut root = 0u32;
+    for _ in 0..HANDLE_ROOTS {
+        let Some((length, lp)) = loop_through(root, &adjacency, &list, block.len()) else {
+            break;
+        };
+        let improved = best.as_ref().is_none_or(|(b, _)| length < *b - 1e-12 * b.abs());
+        if improved {
+            // Next, a root across the loop from this one.
+            root = lp[lp.len() / 2];
+            best = Some((length, lp));
+        } else {
+            break;
+        }
+    }
+    best.map(|(length, lp)| (length, lp.iter().map(|&v| verts[v as usize]).collect()))
+}
+
+/// The shortest non-separating loop through the shortest-path tree from `root` (Erickson and
+/// Whittlesey's greedy step): Dijkstra from the root, then the faces joined across the
+/// non-tree edges, longest loop first; the shortest edge whose faces are already joined closes
+/// the loop returned (length and local vertices, from one end of the edge up the tree and down
+/// to the other). `None` when every loop of the tree separates the faces.
+fn loop_through(
+    root: u32,
+    adjacency: &[Vec<(u32, f64)>],
+    edges: &[(u32, u32, u32, Option<u32>)],
+    n_faces: usize,
+) -> Option<(f64, Vec<u32>)> {
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+    let n = adjacency.len();
+    let mut dist = vec![f64::INFINITY; n];
+    let mut parent = vec![u32::MAX; n];
+    let mut heap = BinaryHeap::new();
+    dist[root as usize] = 0.0;
+    heap.push((Reverse(OrderedDistance(0.0)), root));
+    while let Some((Reverse(OrderedDistance(d)), v)) = heap.pop() {
+        if d > dist[v as usize] {
+            continue;
+        }
+        for &(w, len) in &adjacency[v as usize] {
+            let nd = d + len;
+            if nd < dist[w as usize] {
+                dist[w as usize] = nd;
+                parent[w as usize] = v;
+                heap.push((Reverse(OrderedDistance(nd)), w));
+            }
+        }
+    }
+    let tree = |a: u32, b: u32| parent[a as usize] == b || parent[b as usize] == a;
+    // Interior non-tree edges reachable from the root, by the length of their loop.
+    let mut candidates: Vec<(f64, u32, u32, u32, u32)> = edges
+        .iter()
+        .filter_map(|&(a, b, f, g)| {
+            let g = g?;
+            let (da, db) = (dist[a as usize], dist[b as usize]);
+            if tree(a, b) || !da.is_finite() || !db.is_finite() {
+                return None;
+            }
+            let w = adjacency[a as usize].iter().find(|x| x.0 == b).map_or(0.0, |x| x.1);
+            Some((da + db + w, a, b, f, g))
+        })
+        .collect();
+    candidates.sort_unstable_by(|x, y| y.0.total_cmp(&x.0));
+    let mut parent_face: Vec<u32> = (0..u32::try_from(n_faces).unwrap_or(u32::MAX)).collect();
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let mut shortest: Option<(f64, u32, u32)> = None;
+    for &(length, a, b, f, g) in &candidates {
+        let (rf, rg) = (find(&mut parent_face, f), find(&mut parent_face, g));
+        if rf == rg {
+            // Closes a cycle of faces: the loop of a, b does not separate them.
+            if shortest.is_none_or(|s| length < s.0) {
+                shortest = Some((length, a, b));
+            }
+        } else {
+            parent_face[rf as usize] = rg;
+        }
+    }
+    let (length, a, b) = shortest?;
+    // Up from a and from b to their lowest common ancestor.
+    let up = |mut v: u32| {
+        let mut path = vec![v];
+        while parent[v as usize] != u32::MAX {
+            v = parent[v as usize];
+            path.push(v);
+        }
+        path
+    };
+    let (pa, pb) = (up(a), up(b));
+    let mut common = 0;
+    while common < pa.len().min(pb.len()) && pa[pa.len() - 1 - common] == pb[pb.len() - 1 - common]
+    {
+        common += 1;
+    }
+    // pa[..=pa.len() − common] runs a → ancestor; pb the same for b; the loop is
+    // a → ancestor → b → a.
+    let mut lp: Vec<u32> = pa[..=pa.len() - common].to_vec();
+    lp.extend(pb[..pb.len() - common].iter().rev());
+    (lp.len() >= 3).then_some((length, lp))
+}
+
+/// An `f64` distance ordered for the heap (distances are finite and non-negative).
+#[derive(Clone, Copy, PartialEq)]
+struct OrderedDistance(f64);
+
+impl Eq for OrderedDistance {}
+
+impl PartialOrd for OrderedDistance {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for OrderedDistance {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.total_cmp(&other.0)
+    }
+}
+
+/// Cuts a closed, consistently oriented mesh along the simple loop `lp`: each vertex of the
+/// loop gets a copy, which the triangles on the loop's right side take, so the loop becomes two
+/// boundary loops. `false` (and nothing changed) if a fan around a loop vertex does not close.
+fn cut_along(
+    lp: &[u32],
+    faces: &mut [[u32; 3]],
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+) -> bool {
+    let half = directed_edges(faces);
+    let m = lp.len();
+    let mut changes: Vec<(usize, usize)> = Vec::new(); // (face, corner) taking the copy of lp[i]
+    let mut owners: Vec<usize> = Vec::new(); // loop index of each change
+    for i in 0..m {
+        let (prev, v, next) = (lp[(i + m - 1) % m], lp[i], lp[(i + 1) % m]);
+        // Around v from the face right of v → next to the face right of prev → v: from the
+        // face with half-edge next → v, each next face holds the half-edge (outgoing
+        // neighbour) → v, until the face with the half-edge v → prev.
+        let Some(mut f) = face_of(&half, next, v) else { return false };
+        let mut steps = 0;
+        loop {
+            let t = faces[f];
+            let Some(c) = t.iter().position(|&x| x == v) else { return false };
+            changes.push((f, c));
+            owners.push(i);
+            let out = t[(c + 1) % 3];
+            if out == prev {
+                break;
+            }
+            steps += 1;
+            let Some(g) = face_of(&half, out, v).filter(|_| steps < 4096) else { return false };
+            f = g;
+        }
+    }
+    let first = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+    for &v in lp {
+        positions.push(positions[v as usize]);
+        scan_vertex.push(scan_vertex[v as usize]);
+    }
+    for (&(f, c), &i) in changes.iter().zip(&owners) {
+        faces[f][c] = first + u32::try_from(i).unwrap_or(u32::MAX);
+    }
+    true
+}

@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: MIT
+//! Steps 5 and 6 of the repair: pinched vertices split into one vertex per fan, and holes
+//! found and closed by faired rings of triangles.
+
+use glam::DVec3;
+
+use super::handles::directed_edges;
+use super::{ADDED_VERTEX, Repair};
+
+/// Splits every vertex whose triangles form several fans (joined through edges at the
+/// vertex) into one vertex per fan.
+pub(super) fn split_fans(
+    faces: &mut [[u32; 3]],
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    repair: &mut Repair,
+) {
+    let n = positions.len();
+    // Corners of each vertex: (face, corner).
+    let mut start = vec![0usize; n + 1];
+    for t in faces.iter() {
+        for &k in t {
+            start[k as usize + 1] += 1;
+        }
+    }
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut corners = vec![(0u32, 0u8); start[n]];
+    for (f, t) in faces.iter().enumerate() {
+        for (c, &k) in t.iter().enumerate() {
+            corners[fill[k as usize]] = (u32::try_from(f).unwrap_or(u32::MAX), c as u8);
+            fill[k as usize] += 1;
+        }
+    }
+    for v in 0..n {
+        let mine = &corners[start[v]..start[v + 1]];
+        if mine.len() < 2 {
+            continue;
+        }
+        // Union the corners whose faces share an edge at v: face f's corner c has the
+        // neighbours t[c + 1] and t[c + 2].
+        let mut parent: Vec<usize> = (0..mine.len()).collect();
+        fn find(p: &mut [usize], mut x: usize) -> usize {
+            while p[x] != x {
+                p[x] = p[p[x]];
+                x = p[x];
+            }
+            x
+        }
+        let mut by_other: Vec<(u32, usize)> = Vec::with_capacity(2 * mine.len());
+        for (i, &(f, c)) in mine.iter().enumerate() {
+            let t = faces[f as usize];
+            by_other.push((t[(c as usize + 1) % 3], i));
+            by_other.push((t[(c as usize + 2) % 3], i));
+        }
+        by_other.sort_unstable();
+        for w in by_other.windows(2) {
+            if w[0].0 == w[1].0 {
+                let (a, b) = (find(&mut parent, w[0].1), find(&mut parent, w[1].1));
+                parent[a] = b;
+            }
+        }
+        let roots: Vec<usize> = (0..mine.len()).map(|i| find(&mut parent, i)).collect();
+        let first = roots[0];
+        let mut copies: Vec<(usize, u32)> = Vec::new();
+        for (i, &r) in roots.iter().enumerate() {
+            if r == first {
+                continue;
+            }
+            let index = match copies.iter().find(|(root, _)| *root == r) {
+                Some(&(_, k)) => k,
+                None => {
+                    let k = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+                    positions.push(positions[v]);
+                    scan_vertex.push(scan_vertex[v]);
+                    copies.push((r, k));
+                    repair.split_vertices += 1;
+                    k
+                }
+            };
+            let (f, c) = mine[i];
+            faces[f as usize][c as usize] = index;
+        }
+    }
+}
+
+/// The boundary loops of `faces` (over `n` vertices, pinched vertices split), each in the order
+/// the triangles run along it: a boundary edge a → b has no b → a.
+pub(super) fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
+    let directed: Vec<u64> = directed_edges(faces).into_iter().map(|(key, _)| key).collect();
+    let has =
+        |a: u32, b: u32| directed.binary_search(&((u64::from(a) << 32) | u64::from(b))).is_ok();
+    // After the fans are split, each boundary vertex starts exactly one boundary edge.
+    let mut next = vec![u32::MAX; n];
+    for &e in &directed {
+        let (a, b) = ((e >> 32) as u32, e as u32);
+        if !has(b, a) {
+            next[a as usize] = b;
+        }
+    }
+    let mut done = vec![false; n];
+    let mut loops = Vec::new();
+    for start in 0..n {
+        if next[start] == u32::MAX || done[start] {
+            continue;
+        }
+        let mut lp = Vec::new();
+        let mut v = start;
+        while !done[v] && next[v] != u32::MAX {
+            done[v] = true;
+            lp.push(v as u32);
+            v = next[v] as usize;
+        }
+        if v == start && lp.len() >= 3 {
+            loops.push(lp);
+        }
+        // Else not a closed loop (cannot happen for a split mesh); left alone.
+    }
+    loops
+}
+
+/// The most conjugate-gradient steps of a cap's fairing ([`fill_hole`]): enough for caps of
+/// thousands of vertices (the steps it takes grow with the cap's radius in edges squared).
+const FAIRING_ITERATIONS: usize = 4000;
+
+/// Closes the boundary loop `lp` (in the order the mesh's triangles run along it) by rings of
+/// new vertices shrinking towards its centroid, one ring per mean edge length of the loop's
+/// radius, then a fan around the centroid, with triangles about the size of the mesh's. The new
+/// vertices are moved first to the discrete membrane (each the mean of its neighbours, by
+/// Gauss–Seidel sweeps, the loop fixed: as flat as its border allows), then to the thin plate
+/// the surface around it continues into: the umbrella operator applied twice vanishes at
+/// every new vertex (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about it
+/// fixed), so the cap leaves the rim along the surface's own tangent plane, with no crease for
+/// the harmonic surface to ring on.
+pub(super) fn fill_hole(
+    lp: &[u32],
+    faces: &mut Vec<[u32; 3]>,
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    filled: &mut Vec<bool>,
+) {
+    let m = lp.len();
+    let at = |k: u32, positions: &[DVec3]| positions[k as usize];
+    let centre = lp.iter().map(|&k| at(k, positions)).sum::<DVec3>() / m as f64;
+    let edge =
+        (0..m).map(|i| at(lp[i], positions).distance(at(lp[(i + 1) % m], positions))).sum::<f64>()
+            / m as f64;
+    let radius = lp.iter().map(|&k| at(k, positions).distance(centre)).sum::<f64>() / m as f64;
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "clamped to 0..=64"
+    )]
+    let rings = if edge > 0.0 { (radius / edge).round().clamp(0.0, 64.0) as usize } else { 0 };
+    let first_new = positions.len();
+    let mut outer: Vec<u32> = lp.to_vec();
+    for k in 1..=rings {
+        let t = k as f64 / (rings + 1) as f64;
+        let inner: Vec<u32> = outer
+            .iter()
+            .enumerate()
+            .map(|(i, _)| {
+                let index = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+                positions.push(at(lp[i], positions).lerp(centre, t));
+                scan_vertex.push(ADDED_VERTEX);
+                index
+            })
+            .collect();
+        for i in 0..m {
+            let j = (i + 1) % m;
+            faces.push([outer[j], outer[i], inner[i]]);
+            faces.push([outer[j], inner[i], inner[j]]);
+            filled.extend([true, true]);
+        }
+        outer = inner;
+    }
+    let c = u32::try_from(positions.len()).unwrap_or(u32::MAX);
+    positions.push(centre);
+    scan_vertex.push(ADDED_VERTEX);
+    for i in 0..m {
+        faces.push([outer[(i + 1) % m], outer[i], c]);
+        filled.push(true);
+    }
+    // The membrane: the new vertices' neighbours, then Gauss–Seidel sweeps.
+    let free = positions.len() - first_new;
+    if free <= 1 {
+        return;
+    }
+    let mut neighbours: Vec<Vec<u32>> = vec![Vec::new(); free];
+    let added = faces.len() - (2 * rings * m + m);
+    for t in &faces[added..] {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            for (x, y) in [(a, b), (b, a)] {
+                if x as usize >= first_new && !neighbours[x as usize - first_new].contains(&y) {
+                    neighbours[x as usize - first_new].push(y);
+                }
+            }
+        }
+    }
+    let sweeps = (4 * (rings + 1) * (rings + 1)).clamp(20, 2000);
+    for _ in 0..sweeps {
+        for (i, list) in neighbours.iter().enumerate() {
+            let mean =
+                list.iter().map(|&k| positions[k as usize]).sum::<DVec3>() / list.len() as f64;
+            positions[first_new + i] = mean;
+        }
+    }
+    fair(lp, faces, positions, first_new, &neighbours, FAIRING_ITERATIONS);
+}
+
+/// The thin-plate fairing of a hole's cap (see [`fill_hole`]): the cap's new vertices (from
+/// `first_new`, with their `neighbours`) placed where the umbrella operator
+/// U(v) = mean of v's neighbours − v vanishes, in the least-squares sense, at every vertex of
+/// the cap and of the loop `lp` (the loop and the rest of the mesh fixed), by conjugate
+/// gradients on the normal equations (CGLS, three coordinates at once, from the membrane the
+/// caller placed them on), at most `iterations` steps.
+fn fair(
+    lp: &[u32],
+    faces: &[[u32; 3]],
+    positions: &mut [DVec3],
+    first_new: usize,
+    neighbours: &[Vec<u32>],
+    iterations: usize,
+) {
+    // The loop's vertices' neighbours, on the scan's side and the cap's.
+    let mut around_loop: std::collections::HashMap<u32, Vec<u32>> =
+        lp.iter().map(|&v| (v, Vec::new())).collect();
+    for t in faces {
+        for k in 0..3 {
+            if let Some(list) = around_loop.get_mut(&t[k]) {
+                for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
+                    if !list.contains(&other) {
+                        list.push(other);
+                    }
+                }
+            }
+        }
+    }
+    let free = neighbours.len();
+    // One row per vertex of the loop and the cap: U(v) as coefficients of the free vertices
+    // (cap vertex c at column c − first_new), and its fixed part.
+    let rows: Vec<(Vec<(usize, f64)>, DVec3)> = lp
+        .iter()
+        .map(|&v| (v, around_loop.get(&v).map_or(&[][..], Vec::as_slice)))
+        .chain(
+            neighbours
+                .iter()
+                .enumerate()
+                .map(|(i, ring)| ((first_new + i) as u32, ring.as_slice())),
+        )
+        .filter(|(_, ring)| !ring.is_empty())
+        .map(|(v, ring)| {
+            let w = 1.0 / ring.len() as f64;
+            let mut coefficients = Vec::with_capacity(ring.len() + 1);
+            let mut fixed = DVec3::ZERO;
+            for (k, c) in ring.iter().map(|&k| (k, w)).chain([(v, -1.0)]) {
+                if k as usize >= first_new {
+                    coefficients.push((k as usize - first_new, c));
+                } else {
+                    fixed += positions[k as usize] * c;
+                }
+            }
+            (coefficients, fixed)
+        })
+        .collect();
+    let apply = |x: &[DVec3]| -> Vec<DVec3> {
+        rows.iter().map(|(c, _)| c.iter().map(|&(k, w)| x[k] * w).sum()).collect()
+    };
+    let apply_t = |r: &[DVec3]| -> Vec<DVec3> {
+        let mut out = vec![DVec3::ZERO; free];
+        for ((c, _), ri) in rows.iter().zip(r) {
+            for &(k, w) in c {
+                out[k] += *ri * w;
+            }
+        }
+        out
+    };
+    let dot = |a: &[DVec3], b: &[DVec3]| -> DVec3 { a.iter().zip(b).map(|(x, y)| *x * *y).sum() };
+    let mut x: Vec<DVec3> = positions[first_new..first_new + free].to_vec();
+    // r = b − A x with b = −fixed.
+    let ax = apply(&x);
+    let mut r: Vec<DVec3> = rows.iter().zip(&ax).map(|((_, f), a)| -*f - *a).collect();
+    let mut s = apply_t(&r);
+    let mut p = s.clone();
+    let mut gamma = dot(&s, &s);
+    let start = gamma.max_element();
+    for _ in 0..iterations {
+        if gamma.max_element() <= 1e-24 * start.max(f64::MIN_POSITIVE) {
+            break;
+        }
+        let q = apply(&p);
+        let qq = dot(&q, &q);
+        let alpha = DVec3::select(qq.cmpgt(DVec3::ZERO), gamma / qq, DVec3::ZERO);
+        for (xi, pi) in x.iter_mut().zip(&p) {
+            *xi += alpha * *pi;
+        }
+        for (ri, qi) in r.iter_mut().zip(&q) {
+            *ri -= alpha * *qi;
+        }
+        s = apply_t(&r);
+        let next = dot(&s, &s);
+        let beta = DVec3::select(gamma.cmpgt(DVec3::ZERO), next / gamma, DVec3::ZERO);
+        for (pi, si) in p.iter_mut().zip(&s) {
+            *pi = *si + beta * *pi;
+        }
+        gamma = next;
+    }
+    if x.iter().all(|v| v.is_finite()) {
+        positions[first_new..first_new + free].copy_from_slice(&x);
+    }
+}

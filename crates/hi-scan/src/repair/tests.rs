@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+use super::handles::{faces_connected, independent_loops};
+use super::*;
+
+/// A torus of `major × minor` quads (two triangles each), radii `big` and `small`.
+fn torus(major: usize, minor: usize, big: f64, small: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let tau = std::f64::consts::TAU;
+    let mut p = Vec::new();
+    for i in 0..major {
+        for j in 0..minor {
+            let (u, v) = (tau * i as f64 / major as f64, tau * j as f64 / minor as f64);
+            let ring = big + small * v.cos();
+            p.push(DVec3::new(ring * u.cos(), ring * u.sin(), small * v.sin()));
+        }
+    }
+    let id = |i: usize, j: usize| ((i % major) * minor + j % minor) as u32;
+    let mut t = Vec::new();
+    for i in 0..major {
+        for j in 0..minor {
+            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            t.push([a, b, c]);
+            t.push([a, c, d]);
+        }
+    }
+    (p, t)
+}
+
+/// Every undirected edge is used by exactly two triangles, once in each direction.
+fn closed_and_oriented(triangles: &[[u32; 3]]) -> bool {
+    let mut directed: Vec<(u32, u32)> =
+        triangles.iter().flat_map(|t| (0..3).map(move |k| (t[k], t[(k + 1) % 3]))).collect();
+    directed.sort_unstable();
+    let unique = directed.windows(2).all(|w| w[0] != w[1]);
+    unique && directed.iter().all(|&(a, b)| directed.binary_search(&(b, a)).is_ok())
+}
+
+/// Checks that `closed` is a closed, oriented surface of genus 0 (counted from its edges)
+/// with one handle cut, whose volume is within `tolerance` of `volume`.
+fn check_cut(closed: &ClosedMesh, points: &[DVec3], volume: f64, tolerance: f64) {
+    assert_eq!(closed.repair.handles_cut, 1);
+    assert_eq!(closed.repair.holes, 0, "the cuts are not the scan's holes");
+    assert!(closed_and_oriented(&closed.triangles));
+    let mut edges: Vec<(u32, u32)> = closed
+        .triangles
+        .iter()
+        .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    let chi = closed.positions.len() as i64 - edges.len() as i64 + closed.triangles.len() as i64;
+    assert_eq!(chi, 2);
+    // The caps lie on each other: the volume is the torus's.
+    assert!(
+        (closed.volume() - volume).abs() < tolerance * volume,
+        "{} against {volume}",
+        closed.volume()
+    );
+    // The torus's own vertices are all still there, where they were.
+    assert!(points.iter().all(|x| closed.positions.contains(x)));
+}
+
+#[test]
+fn handles_are_cut_along_short_loops_and_the_shape_kept() {
+    // A coarse torus (8 × 4 quads) lies within one block of eight mean edge lengths.
+    let (p, t) = torus(8, 4, 1.0, 0.5);
+    let polygon = close_mesh(&p, &t).expect("cut");
+    check_cut(&polygon, &p, 2.0 * std::f64::consts::PI.powi(2) * 0.25, 0.5);
+    // A ring: a thin tube (six edges round) around a wide hole (forty edges). It is cut
+    // across its tube (a loop of six edges, so twelve vertices on the two cuts), not along
+    // it.
+    let (p, t) = torus(40, 6, 1.0, 0.15);
+    let ring = close_mesh(&p, &t).expect("cut");
+    check_cut(&ring, &p, 2.0 * std::f64::consts::PI.powi(2) * 0.15 * 0.15, 0.2);
+    let on_cuts = ring.scan_vertex.iter().filter(|&&k| k != ADDED_VERTEX).count() - p.len();
+    assert_eq!(on_cuts, 6, "one copy of each vertex of the cut");
+}
+
+/// The boundary of a union of unit voxels (`filled(x, y, z)` on `0..n[0]` × …), two
+/// triangles per face between a filled voxel and an empty one, wound outward.
+fn voxel_surface(
+    n: [i32; 3],
+    filled: impl Fn(i32, i32, i32) -> bool,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let inside =
+        |c: [i32; 3]| (0..3).all(|k| (0..n[k]).contains(&c[k])) && filled(c[0], c[1], c[2]);
+    let mut index = std::collections::HashMap::new();
+    let mut p: Vec<DVec3> = Vec::new();
+    let mut id = |c: [i32; 3]| {
+        *index.entry(c).or_insert_with(|| {
+            p.push(DVec3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2])));
+            (p.len() - 1) as u32
+        })
+    };
+    let mut t = Vec::new();
+    for x in -1..=n[0] {
+        for y in -1..=n[1] {
+            for z in -1..=n[2] {
+                let c = [x, y, z];
+                if !inside(c) {
+                    continue;
+                }
+                for axis in 0..3 {
+                    for dir in [-1, 1] {
+                        let mut o = c;
+                        o[axis] += dir;
+                        if inside(o) {
+                            continue;
+                        }
+                        // The face's corners, counter-clockwise seen from outside.
+                        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+                        let mut base = c;
+                        base[axis] += i32::from(dir > 0);
+                        let corner = |du: i32, dv: i32| {
+                            let mut q = base;
+                            q[u] += du;
+                            q[v] += dv;
+                            q
+                        };
+                        let mut quad = [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)];
+                        if dir < 0 {
+                            quad.reverse();
+                        }
+                        let q = quad.map(&mut id);
+                        t.push([q[0], q[1], q[2]]);
+                        t.push([q[0], q[2], q[3]]);
+                    }
+                }
+            }
+        }
+    }
+    (p, t)
+}
+
+#[test]
+fn three_handles_are_cut_and_the_surface_stays_whole() {
+    // A plate of 7 × 3 × 1 voxels with three square holes through it: genus 3, volume 18.
+    let (p, t) = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
+    assert!(closed_and_oriented(&t));
+    let chi = |p: usize, t: &[[u32; 3]]| {
+        let mut edges: Vec<u64> =
+            t.iter().flat_map(|f| (0..3).map(move |k| edge_key(f[k], f[(k + 1) % 3]))).collect();
+        edges.sort_unstable();
+        edges.dedup();
+        p as i64 - edges.len() as i64 + t.len() as i64
+    };
+    assert_eq!(chi(p.len(), &t), 2 - 2 * 3, "genus 3");
+    let closed = close_mesh(&p, &t).expect("cut");
+    assert_eq!(closed.repair.handles_cut, 3);
+    assert!(closed_and_oriented(&closed.triangles));
+    assert_eq!(chi(closed.positions.len(), &closed.triangles), 2);
+    // One piece: its faces joined across their edges.
+    let mut sides: Vec<(u64, u32)> = closed
+        .triangles
+        .iter()
+        .enumerate()
+        .flat_map(|(f, t)| (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f as u32)))
+        .collect();
+    sides.sort_unstable();
+    let pairs: Vec<(u64, u32, u32)> =
+        sides.chunk_by(|a, b| a.0 == b.0).map(|w| (w[0].0, w[0].1, w[1].1)).collect();
+    assert!(faces_connected(closed.triangles.len(), &pairs, &[]));
+    // The caps of each cut lie on each other: the plate's volume is kept (to 5 %: the
+    // caps are faired to the plate's sides about them and bulge a little).
+    assert!((closed.volume() - 18.0).abs() < 0.9, "{}", closed.volume());
+}
+
+#[test]
+fn loops_around_the_same_handle_are_not_cut_together() {
+    // Two meridians of a torus share no vertex, but cut together they split it in two;
+    // a meridian and a parallel share a vertex. Only the first loop is taken.
+    let (p, t) = torus(8, 4, 1.0, 0.5);
+    let id = |i: u32, j: u32| (i % 8) * 4 + j % 4;
+    let meridian = |i: u32| (0..4).map(|j| id(i, j)).collect::<Vec<u32>>();
+    let parallel: Vec<u32> = (0..8).map(|i| id(i, 0)).collect();
+    let found = vec![(1.0, meridian(0)), (1.0, meridian(4)), (2.0, parallel)];
+    let chosen = independent_loops(&t, p.len(), found, 3);
+    assert_eq!(chosen, vec![meridian(0)]);
+    // With no loop in the way, the second meridian alone would do.
+    let chosen = independent_loops(&t, p.len(), vec![(1.0, meridian(4))], 3);
+    assert_eq!(chosen, vec![meridian(4)]);
+}
