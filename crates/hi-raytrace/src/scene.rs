@@ -39,7 +39,7 @@ impl Geometry {
 /// and the diffuse and specular weights.
 ///
 /// Its `serde` form (feature `serde`) is `{"color", "diffuse", "specular", "shininess"}`, each
-/// optional, with the colour in sRGB (see [`crate::srgb`]).
+/// optional, with the colour in sRGB (see `hi_raytrace::srgb`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
     /// Colour (linear RGB) of meshes without vertex colours; Bézier patches and harmonic surfaces
