@@ -53,13 +53,19 @@ pub(crate) enum Command {
     Render(RenderArgs),
 }
 
-/// How `hi render` draws a harmonic grid.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+/// How `hi render` draws a harmonic grid (`--method` and a scene file's `"method"`).
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, ValueEnum, serde::Deserialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
 pub(crate) enum RenderMethod {
     /// C1 Hermite Bézier patches within 1e-4 of the grid's size, Newton on the patches.
     Bezier,
-    /// The surface itself by interval Newton (Krawczyk).
-    Interval,
+    /// The surface itself by interval Newton (the Krawczyk operator); `interval` is a
+    /// deprecated alias.
+    #[value(alias = "interval")]
+    #[serde(alias = "interval")]
+    Krawczyk,
     /// The surface itself by interval bisection.
     Bisection,
     /// A 256×256 triangle mesh of the surface.
@@ -78,7 +84,7 @@ pub(crate) struct RenderArgs {
     /// With --quick: how a harmonic grid is drawn.
     #[arg(long, value_enum, default_value = "bezier")]
     pub(crate) method: RenderMethod,
-    /// With --quick: colour a harmonic grid (interval, bisection, mesh) by this curvature.
+    /// With --quick: colour a harmonic grid (krawczyk, bisection, mesh) by this curvature.
     #[arg(long, value_enum, value_name = "CURVATURE")]
     pub(crate) curvature: Option<ColorBy>,
     /// With --curvature: the colours (coolwarm keeps the sign).
@@ -652,7 +658,10 @@ pub(crate) struct SurfaceExampleArgs {
 }
 
 /// The curvature that colours a mesh.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, ValueEnum, serde::Deserialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
 pub(crate) enum ColorBy {
     /// Gaussian curvature K.
     Gaussian,
@@ -661,7 +670,10 @@ pub(crate) enum ColorBy {
 }
 
 /// The colours of a curvature map.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum, serde::Deserialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "lowercase")]
 pub(crate) enum PaletteName {
     /// The thesis's (§5.9): |value| from blue (0) to purple (the largest).
     #[default]

@@ -246,33 +246,37 @@ Example: hi curve nonuniform --input pts.json --t 0,0.5 --variant nodes --params
 
 /// The scene format and output of `hi render`.
 pub(crate) const RENDER_HELP: &str = "\
-Scene (JSON; file names relative to the scene file):
+Scene (JSON; file names relative to the scene file; schema: docs/schemas/scene.schema.json):
   {\"camera\": {\"eye\": [x, y, z], \"target\": [x, y, z], \"up\": [0, 0, 1], \"fov\": 40},
    \"image\": {\"width\": 512, \"height\": 512, \"spp\": 4},
    \"background\": [r, g, b], \"ambient\": [r, g, b],
    \"lights\": [{\"type\": \"directional\", \"direction\": [x, y, z], \"intensity\": 1},
               {\"type\": \"point\", \"position\": [x, y, z], \"intensity\": [r, g, b]}],
-   \"objects\": [{\"type\": \"harmonic\", \"file\": \"torus.json\", \"method\": \"interval\"},
-               {\"type\": \"mesh\", \"file\": \"head.glb\", \"color\": [r, g, b]},
+   \"objects\": [{\"type\": \"harmonic\", \"file\": \"torus.json\", \"method\": \"krawczyk\"},
+               {\"type\": \"mesh\", \"file\": \"head.glb\", \"material\": {\"color\": [r, g, b]}},
                {\"type\": \"bezier\", \"file\": \"patches.json\"}]}
+  camera, lights, material: the serde forms of hi-raytrace's Camera, Light and Material.
   camera: fov is the vertical field of view in degrees (default 40); up defaults to [0, 0, 1];
     without a camera the scene is framed from the front, above and to the side.
-  Colours are sRGB in [0, 1]; intensities linear (a number or [r, g, b]); the direction of a
-    directional light points towards the light; point lights fall off with the squared distance.
-  harmonic: a grid file (as 'hi surface example' writes) drawn by \"method\": interval (interval
-    Newton, the default), bisection (interval bisection), bezier (C1 Hermite patches) or mesh
-    (256x256 quads); \"curvature\": \"gaussian\" or \"mean\" colours it by K or H, and
-    \"palette\": \"thesis\" (|value|, blue to purple, the default), \"viridis\" (|value|) or
-    \"coolwarm\" (the signed value, blue through grey at 0 to red).
+  Colours are sRGB in [0, 1]; intensities linear (a number or [r, g, b], default 1); the
+    direction of a directional light points towards the light; point lights fall off with the
+    squared distance. Without \"lights\", a key and a fill light; [] for none.
+  harmonic: a grid file (as 'hi surface example' writes) drawn by \"method\": krawczyk (interval
+    Newton, the default; 'interval' is a deprecated alias), bisection (interval bisection),
+    bezier (C1 Hermite patches) or mesh (256x256 quads); \"curvature\": \"gaussian\" or \"mean\"
+    colours it by K or H, and \"palette\": \"thesis\" (|value|, blue to purple, the default),
+    \"viridis\" (|value|) or \"coolwarm\" (the signed value, blue through grey at 0 to red).
   mesh: .obj, .gltf or .glb (vertex colours are used if the file has them).
   bezier: the patches file of 'hi surface bezier -o patches.json', one colour per patch.
-  Every object may have \"color\" (sRGB) and \"specular\" (0 to 1).
+  Every object may have a \"material\": {\"color\" (sRGB), \"diffuse\", \"specular\",
+    \"shininess\"}; its colour, when given, also paints a Bezier or uncoloured harmonic object.
+  A bad field is named by its path: scene.json: objects[1].material.color: ...
 --quick FILE frames one grid, patches or mesh file by itself (--method picks how a grid file
-  is drawn: bezier, the default, interval, bisection or mesh).
+  is drawn: bezier, the default, krawczyk, bisection or mesh).
 Output: the PNG in OUT (sRGB, anti-aliased by SPP samples per pixel in a fixed pattern: the same
   bytes on every run); stdout gets {\"files\": [OUT], \"width\": W, \"height\": H, \"spp\": S,
   \"rays\": {\"camera\", \"shadow\", \"hits\"}, \"seconds\": T}. A progress bar is shown on a terminal.
-Example: hi surface example torus -o torus.json && hi render --quick torus.json --method interval -o torus.png";
+Example: hi surface example torus -o torus.json && hi render --quick torus.json --method krawczyk -o torus.png";
 
 /// The output of `hi bezier basis`.
 pub(crate) const BEZIER_BASIS_HELP: &str =

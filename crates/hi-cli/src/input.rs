@@ -10,12 +10,26 @@
 //!
 //! Slices (`hi surface bspline-fit`): `{"slices": [[[x, y, z], ...], ...]}` or the bare array
 //! of slices, each a list of 3-D points, of any lengths.
+//!
+//! Patches (`hi render`): the file of `hi surface bezier`, `{"patches": [{"control": [[[x, y,
+//! z], ...], ...], ...}, ...], ...}`, each patch's control rows handed to
+//! [`BezierPatch::try_new`].
+//!
+//! Each is read by `serde` (the shapes below, whose JSON schemas are in `docs/schemas/`) and
+//! handed to the libraries' checked constructors; an error names where it is (`point 3,
+//! coordinate 1: …`, `row 2, point 0 has 2 coordinates …`).
 
 use std::io::Read;
 use std::path::Path;
 
+use std::fmt;
+use std::marker::PhantomData;
+
 use glam::{DVec2, DVec3};
+use hi_bezier::BezierPatch;
 use hi_surface::HarmonicSurface;
+use serde::Deserialize;
+use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde_json::Value;
 
 use crate::error::Failure;
@@ -98,55 +112,174 @@ pub(crate) fn read_slices(path: &Path) -> Result<(String, Vec<Vec<DVec3>>), Fail
     Ok((name, slices))
 }
 
+/// The coordinates of a point as given: a number (a 1-D point) or an array of numbers (their
+/// count is checked by the caller, who knows which point it is).
+#[derive(Debug)]
+struct Coords(Vec<f64>);
+
+impl<'de> Deserialize<'de> for Coords {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct CoordsVisitor;
+        impl<'de> Visitor<'de> for CoordsVisitor {
+            type Value = Coords;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number or an array of 1 to 3 numbers")
+            }
+            fn visit_f64<E: de::Error>(self, x: f64) -> Result<Coords, E> {
+                Ok(Coords(vec![x]))
+            }
+            fn visit_i64<E: de::Error>(self, x: i64) -> Result<Coords, E> {
+                Ok(Coords(vec![x as f64]))
+            }
+            fn visit_u64<E: de::Error>(self, x: u64) -> Result<Coords, E> {
+                Ok(Coords(vec![x as f64]))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Coords, A::Error> {
+                let mut c = Vec::with_capacity(3);
+                while let Some(Number(x)) = seq.next_element()? {
+                    if !x.is_finite() {
+                        return Err(de::Error::custom(format!("{x}: coordinates must be finite")));
+                    }
+                    c.push(x);
+                }
+                Ok(Coords(c))
+            }
+        }
+        deserializer.deserialize_any(CoordsVisitor)
+    }
+}
+
+/// A coordinate: a JSON number.
+struct Number(f64);
+
+impl<'de> Deserialize<'de> for Number {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct NumberVisitor;
+        impl Visitor<'_> for NumberVisitor {
+            type Value = Number;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number")
+            }
+            fn visit_f64<E: de::Error>(self, x: f64) -> Result<Number, E> {
+                Ok(Number(x))
+            }
+            fn visit_i64<E: de::Error>(self, x: i64) -> Result<Number, E> {
+                Ok(Number(x as f64))
+            }
+            fn visit_u64<E: de::Error>(self, x: u64) -> Result<Number, E> {
+                Ok(Number(x as f64))
+            }
+        }
+        deserializer.deserialize_f64(NumberVisitor)
+    }
+}
+
+/// A list of items given bare (`[...]`) or as the object `{"KEY": [...]}` with that key only.
+struct Listed<T> {
+    key: &'static str,
+    item: &'static str,
+    marker: PhantomData<T>,
+}
+
+impl<'de, T: Deserialize<'de>> DeserializeSeed<'de> for Listed<T> {
+    type Value = Vec<T>;
+    fn deserialize<D: Deserializer<'de>>(self, deserializer: D) -> Result<Vec<T>, D::Error> {
+        deserializer.deserialize_any(self)
+    }
+}
+
+impl<'de, T: Deserialize<'de>> Visitor<'de> for Listed<T> {
+    type Value = Vec<T>;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "an array of {}s or an object {{\"{}\": [...]}}", self.item, self.key)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<T>, A::Error> {
+        let mut items = Vec::new();
+        while let Some(item) = seq.next_element()? {
+            items.push(item);
+        }
+        Ok(items)
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Vec<T>, A::Error> {
+        let mut items = None;
+        while let Some(key) = map.next_key::<String>()? {
+            if key != self.key || items.is_some() {
+                return Err(de::Error::custom(format!(
+                    "unknown key \"{key}\": the object must have the key \"{}\" only",
+                    self.key
+                )));
+            }
+            items = Some(map.next_value::<Vec<T>>()?);
+        }
+        items.ok_or_else(|| de::Error::custom(format!("the object has no key \"{}\"", self.key)))
+    }
+}
+
+/// Reads `text` by `seed`; an error names where it is, each array index by the word in
+/// `names` for its depth (`row 2, point 0, coordinate 1: …`).
+fn read_json<'de, S: DeserializeSeed<'de>>(
+    text: &'de str,
+    seed: S,
+    names: &[&str],
+) -> Result<S::Value, String> {
+    let mut json = serde_json::Deserializer::from_str(text);
+    let mut track = serde_path_to_error::Track::new();
+    let value = seed
+        .deserialize(serde_path_to_error::Deserializer::new(&mut json, &mut track))
+        .and_then(|value| json.end().map(|()| value));
+    value.map_err(|e| {
+        let path = track.path();
+        let at = place(&path, names);
+        let message = json_error(&e);
+        if at.is_empty() { message } else { format!("{at}: {message}") }
+    })
+}
+
+/// The path of a value in words: array indices named by depth, object keys quoted.
+fn place(path: &serde_path_to_error::Path, names: &[&str]) -> String {
+    use serde_path_to_error::Segment;
+    let segments: Vec<&Segment> = path.iter().collect();
+    let mut depth = 0;
+    let mut words = Vec::new();
+    for (i, segment) in segments.iter().enumerate() {
+        match segment {
+            Segment::Seq { index } => {
+                let name = names.get(depth).copied().unwrap_or("item");
+                words.push(format!("{name} {index}"));
+                depth += 1;
+            }
+            Segment::Map { key } if depth > 0 || i + 1 == segments.len() => {
+                words.push(format!("\"{key}\""));
+            }
+            Segment::Map { .. } => {}
+            Segment::Enum { variant } => words.push(variant.clone()),
+            Segment::Unknown => words.push("?".to_owned()),
+        }
+    }
+    words.join(", ")
+}
+
 /// Parses `{"KEY": [[p, ...], ...]}` or the bare array of lists of 3-D points; `row` names a
 /// list in messages.
-fn parse_nested(text: &str, key: &str, row: &str) -> Result<Vec<Vec<DVec3>>, String> {
-    let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e))?;
-    let rows = match value {
-        Value::Array(rows) => rows,
-        Value::Object(mut map) => {
-            if let Some(other) = map.keys().find(|k| *k != key) {
-                return Err(format!(
-                    "unknown key \"{other}\": the object must have the key \"{key}\" only"
-                ));
-            }
-            match map.remove(key) {
-                Some(Value::Array(rows)) => rows,
-                Some(other) => {
-                    return Err(format!(
-                        "\"{key}\" must be an array of {row}s, found {}",
-                        kind(&other)
-                    ));
-                }
-                None => return Err(format!("the object has no key \"{key}\"")),
-            }
-        }
-        other => {
-            return Err(format!(
-                "expected an array of {row}s of points or an object {{\"{key}\": [...]}}, found {}",
-                kind(&other)
-            ));
-        }
-    };
-    rows.iter()
+fn parse_nested(
+    text: &str,
+    key: &'static str,
+    row: &'static str,
+) -> Result<Vec<Vec<DVec3>>, String> {
+    let seed = Listed::<Vec<Coords>> { key, item: row, marker: PhantomData };
+    let rows = read_json(text, seed, &[row, "point", "coordinate"])?;
+    rows.into_iter()
         .enumerate()
-        .map(|(j, list)| {
-            let Value::Array(points) = list else {
-                return Err(format!("{row} {j} must be an array of points, found {}", kind(list)));
-            };
+        .map(|(j, points)| {
             points
-                .iter()
+                .into_iter()
                 .enumerate()
-                .map(|(k, point)| {
-                    let c = coordinates(k, point).map_err(|e| format!("{row} {j}: {e}"))?;
-                    if c.len() == 3 {
-                        Ok(DVec3::new(c[0], c[1], c[2]))
-                    } else {
-                        Err(format!(
-                            "{row} {j}, point {k} has {} coordinates: surface points must have 3",
-                            c.len()
-                        ))
-                    }
+                .map(|(k, Coords(c))| match c[..] {
+                    [x, y, z] => Ok(DVec3::new(x, y, z)),
+                    _ => Err(format!(
+                        "{row} {j}, point {k} has {} coordinates: surface points must have 3",
+                        c.len()
+                    )),
                 })
                 .collect()
         })
@@ -159,104 +292,75 @@ fn parse_nested(text: &str, key: &str, row: &str) -> Result<Vec<Vec<DVec3>>, Str
 ///
 /// A message naming the problem (without the file name).
 pub fn parse_points(text: &str) -> Result<Points, String> {
-    let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e))?;
-    let items = match value {
-        Value::Array(items) => items,
-        Value::Object(mut map) => {
-            if let Some(key) = map.keys().find(|k| *k != "points") {
-                return Err(format!(
-                    "unknown key \"{key}\": the object must have the key \"points\" only"
-                ));
-            }
-            match map.remove("points") {
-                Some(Value::Array(items)) => items,
-                Some(other) => {
-                    return Err(format!("\"points\" must be an array, found {}", kind(&other)));
-                }
-                None => return Err("the object has no key \"points\"".to_owned()),
-            }
-        }
-        other => {
-            return Err(format!(
-                "expected an array of points or an object {{\"points\": [...]}}, found {}",
-                kind(&other)
-            ));
-        }
-    };
-    if items.is_empty() {
+    let seed = Listed::<Coords> { key: "points", item: "point", marker: PhantomData };
+    let rows = read_json(text, seed, &["point", "coordinate"])?;
+    let Some(first) = rows.first() else {
         return Err("no points given: at least one point is needed".to_owned());
+    };
+    if let Some((i, Coords(c))) =
+        rows.iter().enumerate().find(|(_, c)| !(1..=3).contains(&c.0.len()))
+    {
+        return Err(format!("point {i} has {} coordinates: points must have 1, 2 or 3", c.len()));
     }
-    let rows = items
-        .iter()
-        .enumerate()
-        .map(|(i, item)| coordinates(i, item))
-        .collect::<Result<Vec<_>, _>>()?;
-    let dim = rows[0].len();
-    if let Some((i, row)) = rows.iter().enumerate().find(|(_, row)| row.len() != dim) {
-        return Err(format!("point {i} has {} coordinates, point 0 has {dim}", row.len()));
+    let dim = first.0.len();
+    if let Some((i, row)) = rows.iter().enumerate().find(|(_, row)| row.0.len() != dim) {
+        return Err(format!("point {i} has {} coordinates, point 0 has {dim}", row.0.len()));
     }
     Ok(match dim {
-        1 => Points::One(rows.iter().map(|r| r[0]).collect()),
-        2 => Points::Two(rows.iter().map(|r| DVec2::new(r[0], r[1])).collect()),
-        _ => Points::Three(rows.iter().map(|r| DVec3::new(r[0], r[1], r[2])).collect()),
+        1 => Points::One(rows.iter().map(|r| r.0[0]).collect()),
+        2 => Points::Two(rows.iter().map(|r| DVec2::new(r.0[0], r.0[1])).collect()),
+        _ => Points::Three(rows.iter().map(|r| DVec3::new(r.0[0], r.0[1], r.0[2])).collect()),
     })
 }
 
-/// The coordinates of point `index`: 1 to 3 finite numbers.
-fn coordinates(index: usize, item: &Value) -> Result<Vec<f64>, String> {
-    let values: &[Value] = match item {
-        Value::Number(_) => std::slice::from_ref(item),
-        Value::Array(values) => values,
-        other => {
-            return Err(format!(
-                "point {index} must be a number or an array of 1 to 3 numbers, found {}",
-                kind(other)
-            ));
-        }
-    };
-    if !(1..=3).contains(&values.len()) {
-        return Err(format!(
-            "point {index} has {} coordinates: points must have 1, 2 or 3",
-            values.len()
-        ));
-    }
-    values
-        .iter()
+/// The patches file of `hi surface bezier` (its other keys, the breaks and the report, are
+/// not needed to draw the patches).
+#[derive(Deserialize, schemars::JsonSchema)]
+pub(crate) struct PatchesFile {
+    /// The patches.
+    patches: Vec<PatchIn>,
+}
+
+/// One patch: its control points, rows along u (its other keys, the window and degrees, are
+/// not needed).
+#[derive(Deserialize, schemars::JsonSchema)]
+struct PatchIn {
+    /// The control points [x, y, z], rows along u, all rows of one length.
+    control: Vec<Vec<[f64; 3]>>,
+}
+
+/// The Bézier patches of a `hi surface bezier` patches file, each through
+/// [`BezierPatch::try_new`].
+///
+/// # Errors
+///
+/// A message naming the patch (`patches[2].control[0][1]: …`) and the problem.
+pub(crate) fn parse_patches(value: Value) -> Result<Vec<BezierPatch<DVec3>>, String> {
+    let file: PatchesFile = serde_path_to_error::deserialize(value)
+        .map_err(|e| format!("{}: {}", e.path(), e.inner()))?;
+    file.patches
+        .into_iter()
         .enumerate()
-        .map(|(c, v)| match v.as_f64() {
-            Some(x) if x.is_finite() => Ok(x),
-            Some(x) => {
-                Err(format!("point {index}, coordinate {c} is {x}: coordinates must be finite"))
-            }
-            None => {
-                Err(format!("point {index}, coordinate {c} must be a number, found {}", kind(v)))
-            }
+        .map(|(i, p)| {
+            let rows = p.control.into_iter().map(|r| r.into_iter().map(DVec3::from).collect());
+            BezierPatch::try_new(rows.collect()).map_err(|e| format!("patches[{i}]: {e}"))
         })
         .collect()
 }
 
-/// What a JSON value is, in words.
-fn kind(value: &Value) -> &'static str {
-    match value {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
-}
-
-/// A one-line message for a JSON syntax error, explaining overflowing numbers.
+/// A one-line message for a JSON error, explaining overflowing numbers.
 fn json_error(e: &serde_json::Error) -> String {
     let message = e.to_string();
+    let syntax = e.is_syntax() || e.is_eof();
     if message.starts_with("number out of range") {
         format!(
             "invalid JSON: {message} (a number too large for a double, which would be infinite: \
              coordinates must be finite)"
         )
-    } else {
+    } else if syntax {
         format!("invalid JSON: {message}")
+    } else {
+        message
     }
 }
 
@@ -334,8 +438,13 @@ mod tests {
         assert!(err("[[]]").contains("0 coordinates"), "dimension 0");
         assert!(err("[1e999]").contains("number out of range"), "overflow");
         assert!(err(r#"{"pts": []}"#).contains("unknown key \"pts\""), "unknown key");
-        assert!(err(r#"[["a"]]"#).contains("a string"), "string coordinate");
-        assert!(err("7").contains("found a number"), "scalar");
+        assert_eq!(
+            err(r#"[[1], ["a"]]"#),
+            "point 1, coordinate 0: invalid type: string \"a\", expected a number at line 1 column 10"
+        );
+        assert!(err("7").starts_with("invalid type: integer `7`, expected an array"), "scalar");
+        assert!(err(r#"{"points": 7}"#).starts_with("\"points\": invalid type"), "not a list");
+        assert!(err("[1, 2] x").starts_with("invalid JSON: trailing characters"), "trailing");
     }
 
     #[test]
@@ -349,7 +458,10 @@ mod tests {
             "row 0, point 1 has 2 coordinates: surface points must have 3"
         );
         assert!(err("[[1,2,3]]").contains("row 0, point 0"), "rows of points");
-        assert!(err("[[[0,0,0]], 1]").contains("row 1 must be an array"), "a number as a row");
+        assert!(
+            err("[[[0,0,0]], 1]").starts_with("row 1: invalid type: integer"),
+            "a number as a row"
+        );
         assert!(err(r#"{"points": []}"#).contains("unknown key"), "wrong key");
         assert!(err("[[[0, 0, 1e999]]]").contains("number out of range"), "overflow");
     }

@@ -32,6 +32,8 @@ mod error;
 mod help;
 mod input;
 mod output;
+#[cfg(test)]
+mod schemas;
 
 use std::io::{self, BufWriter};
 use std::process::ExitCode;

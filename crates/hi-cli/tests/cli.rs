@@ -766,12 +766,16 @@ fn bad_input_files() {
     bad_on("{\"points\": []}", &eval, "no points given");
     bad_on("[[1,2,3,4]]", &eval, "point 0 has 4 coordinates");
     bad_on("[[0,0],[]]", &eval, "point 1 has 0 coordinates");
-    bad_on("[[1,2],[\"3\",4]]", &eval, "point 1, coordinate 0 must be a number, found a string");
-    bad_on("[[1,2],null]", &eval, "point 1 must be a number or an array");
-    bad_on("[[1,2],[[3],4]]", &eval, "found an array");
+    bad_on(
+        "[[1,2],[\"3\",4]]",
+        &eval,
+        "point 1, coordinate 0: invalid type: string \"3\", expected a number",
+    );
+    bad_on("[[1,2],null]", &eval, "point 1: invalid type: null, expected a number or an array");
+    bad_on("[[1,2],[[3],4]]", &eval, "point 1, coordinate 0: invalid type: sequence");
     bad_on("{\"point\": [[1,2]]}", &eval, "unknown key \"point\"");
     bad_on("{}", &eval, "no key \"points\"");
-    bad_on("{\"points\": 3}", &eval, "\"points\" must be an array");
+    bad_on("{\"points\": 3}", &eval, "\"points\": invalid type: integer `3`, expected a sequence");
     bad_on("3", &eval, "expected an array of points");
     bad_on("[1, [2, 3]]", &eval, "point 1 has 2 coordinates, point 0 has 1");
 

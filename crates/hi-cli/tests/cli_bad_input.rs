@@ -34,7 +34,11 @@ fn curve_commands_name_bad_points() {
         bad_on("[]", command, "no points given");
         bad_on(r#"{"points": []}"#, command, "no points given");
         bad_on("[[1, 2], [3]]", command, "point 1 has 1 coordinates, point 0 has 2");
-        bad_on(r#"[[1, "NaN"], [0, 1]]"#, command, "must be a number, found a string");
+        bad_on(
+            r#"[[1, "NaN"], [0, 1]]"#,
+            command,
+            "point 0, coordinate 1: invalid type: string \"NaN\", expected a number",
+        );
         bad_on("[[1, 2], [1e999, 0]]", command, "would be infinite");
         bad_on("[[1, 2, 3, 4]]", command, "point 0 has 4 coordinates");
         bad_on(r#"{"points": [[0, 0]], "extra": 1}"#, command, "unknown key");
@@ -123,7 +127,7 @@ fn surface_commands_name_bad_grids() {
         bad_on("[[[0, 0, 0], [1, 0, 0]], [[0, 1, 0]]]", command, "must be rectangular");
         bad_on("[[[0, 0], [1, 0]], [[0, 1], [1, 1]]]", command, "surface points must have 3");
         bad_on("[[[0, 0, 0], [1e999, 0, 0]]]", command, "would be infinite");
-        bad_on(r#"[[[0, 0, "x"]]]"#, command, "must be a number");
+        bad_on(r#"[[[0, 0, "x"]]]"#, command, "row 0, point 0, coordinate 2: invalid type: string");
         bad_on("[[0, 1], [2, 3]]", command, "surface points must have 3");
     }
     // Slices for the B-spline surface fit of §4.4.

@@ -26,7 +26,8 @@ fn torus_grid() -> TempFile {
 #[test]
 fn quick_renders_have_the_requested_size_and_are_reproducible() {
     let grid = torus_grid();
-    for method in ["bezier", "interval", "bisection", "mesh"] {
+    // `interval`: the deprecated alias of `krawczyk`.
+    for method in ["bezier", "krawczyk", "interval", "bisection", "mesh"] {
         let png = TempFile::path_with("png");
         let out = ok(&[
             "render",
@@ -89,8 +90,8 @@ fn a_scene_file_renders() {
             "background": [0.1, 0.1, 0.2],
             "lights": [{{"type": "directional", "direction": [1, -1, 2], "intensity": 0.9}},
                        {{"type": "point", "position": [4, -4, 6], "intensity": [20, 20, 20]}}],
-            "objects": [{{"type": "harmonic", "file": "{}", "method": "interval", "curvature": "gaussian"}},
-                        {{"type": "mesh", "file": "{}", "color": [0.9, 0.5, 0.2]}},
+            "objects": [{{"type": "harmonic", "file": "{}", "method": "krawczyk", "curvature": "gaussian"}},
+                        {{"type": "mesh", "file": "{}", "material": {{"color": [0.9, 0.5, 0.2], "specular": 0.1}}}},
                         {{"type": "bezier", "file": "{}"}}]}}"#,
         grid.path(),
         mesh.path(),
@@ -130,6 +131,27 @@ fn bad_input_exits_2_with_one_line() {
         grid.path()
     ));
     bad(&["render", scene.path(), "-o", png.path()], "parallel");
+    // A bad field, named by its path.
+    let scene = TempFile::new(&format!(
+        r#"{{"objects": [{{"type": "harmonic", "file": "{0}"}},
+                        {{"type": "harmonic", "file": "{0}", "material": {{"color": [0, 1.5, 0]}}}}]}}"#,
+        grid.path()
+    ));
+    bad(
+        &["render", scene.path(), "-o", png.path()],
+        "objects[1].material.color: colour [0, 1.5, 0]",
+    );
+    let scene = TempFile::new(&format!(
+        r#"{{"camera": {{"eye": [0, 0, 5], "forward": [0, 0, -1], "fov_y": 0.7}},
+            "objects": [{{"type": "harmonic", "file": "{}"}}]}}"#,
+        grid.path()
+    ));
+    bad(&["render", scene.path(), "-o", png.path()], "camera.forward: unknown field `forward`");
+    let scene = TempFile::new(&format!(
+        r#"{{"objects": [{{"type": "harmonic", "file": "{}", "method": "newton"}}]}}"#,
+        grid.path()
+    ));
+    bad(&["render", scene.path(), "-o", png.path()], "objects[0].method: unknown variant `newton`");
     // Zero size.
     bad(&["render", "--quick", grid.path(), "--width", "0", "-o", png.path()], "no pixels");
     bad(&["render", "--quick", grid.path(), "--height", "0", "-o", png.path()], "no pixels");

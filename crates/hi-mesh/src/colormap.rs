@@ -373,7 +373,14 @@ fn mix(a: [f32; 3], b: [f32; 3], t: f64) -> [f32; 3] {
     a.lerp(b, t.clamp(0.0, 1.0)).as_vec3().to_array()
 }
 
-/// The sRGB transfer function, decoded: an sRGB component in [0, 1] → linear light.
+/// The sRGB transfer function, decoded: an sRGB component in [0, 1] → linear light;
+/// the inverse of [`linear_to_srgb`].
+///
+/// ```
+/// // ((0.5 + 0.055) / 1.055)^2.4 = 0.21404114
+/// assert!((hi_mesh::srgb_to_linear(0.5) - 0.214_041_14).abs() < 1e-7);
+/// assert!((hi_mesh::linear_to_srgb(hi_mesh::srgb_to_linear(0.5)) - 0.5).abs() < 1e-6);
+/// ```
 #[must_use]
 pub fn srgb_to_linear(c: f32) -> f32 {
     let c = f64::from(c);
@@ -422,5 +429,22 @@ mod tests {
         }
         assert_eq!(srgb_to_linear(0.0), 0.0, "black");
         assert_eq!(srgb_to_linear(1.0), 1.0, "white");
+    }
+
+    /// Known values of the sRGB transfer function (IEC 61966-2-1), from its two pieces by hand:
+    /// ((0.5 + 0.055)/1.055)^2.4 = 0.2140411405, 0.04/12.92 = 0.0030959752 (the linear piece),
+    /// 1.055·0.18^(1/2.4) − 0.055 = 0.4613561295 (18 % grey), 1.055·0.5^(1/2.4) − 0.055 =
+    /// 0.7353569831.
+    #[test]
+    fn srgb_known_values() {
+        let close = |a: f32, b: f64| (f64::from(a) - b).abs() < 1e-7;
+        assert!(close(srgb_to_linear(0.5), 0.214_041_140_5), "sRGB 0.5");
+        assert!(close(srgb_to_linear(0.04), 0.003_095_975_2), "sRGB 0.04");
+        assert!(close(linear_to_srgb(0.18), 0.461_356_129_5), "linear 0.18");
+        assert!(close(linear_to_srgb(0.5), 0.735_356_983_1), "linear 0.5");
+        let rgb = srgb_to_linear_rgb([0.5, 0.04, 1.0]);
+        assert!(close(rgb[0], 0.214_041_140_5) && close(rgb[1], 0.003_095_975_2), "{rgb:?}");
+        let back = linear_to_srgb_rgb(rgb);
+        assert!(back.iter().zip([0.5, 0.04, 1.0]).all(|(a, b)| close(*a, b)), "{back:?}");
     }
 }

@@ -35,7 +35,8 @@
 //! |---|---|---|
 //! | `parallel` | yes | image tiles rendered on all cores (rayon), and `hi-surface`'s parallel grids; without it one thread draws the same image |
 //! | `png` | yes | PNG output: `Rendering::png_bytes`, `Rendering::write_png` (the `image` crate) |
-//! | `serde` | no | `Serialize` and `Deserialize` for cameras (`{"eye", "forward", "up", "fov_y"}`, read back through [`Camera::try_new`]), lights, materials, options, rays, hits and ray counts; objects and scenes (which hold their BVHs) have no `serde` form |
+//! | `serde` | no | `Serialize` and `Deserialize` for cameras, lights, materials, options, rays, hits and ray counts, in the form of `hi render`'s scene file: a camera is `{"eye", "target", "up", "fov"}` (field of view in degrees, `up` +Z by default), colours are sRGB in [0, 1] (`srgb`), lights `{"type": "directional" or "point", …}`; read back through the checked constructors; objects and scenes (which hold their BVHs) have no `serde` form |
+//! | `schemars` | no | JSON schemas (`schemars::JsonSchema`) of the `serde` forms of cameras, lights and materials |
 
 mod bezier;
 mod bvh;
@@ -61,6 +62,8 @@ pub use render::{
     ADAPTIVE_SPREAD, MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderOptions, Rendering, render,
 };
 pub use scene::{Geometry, Light, Material, Scene, SceneObject};
+#[cfg(feature = "serde")]
+pub use serde_impls::{DEFAULT_FOV_DEGREES, srgb};
 
 /// The example of this crate's README, run as a doctest so that it stays true.
 #[doc = include_str!("../README.md")]

@@ -37,8 +37,10 @@ impl Geometry {
 
 /// How a surface reflects light (Blinn–Phong): the colour of a mesh without vertex colours,
 /// and the diffuse and specular weights.
+///
+/// Its `serde` form (feature `serde`) is `{"color", "diffuse", "specular", "shininess"}`, each
+/// optional, with the colour in sRGB (see `hi_raytrace::srgb`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Material {
     /// Colour (linear RGB) of meshes without vertex colours; Bézier patches and harmonic surfaces
     /// carry their own colours.
@@ -76,9 +78,10 @@ impl SceneObject {
 }
 
 /// A light source; intensities are linear RGB.
+///
+/// Its `serde` form (feature `serde`) is `{"type": "directional", "direction", "intensity"}` or
+/// `{"type": "point", "position", "intensity"}`, the intensity a number (grey) or `[r, g, b]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Light {
     /// Light from a direction (the sun).
     Directional {
@@ -140,6 +143,34 @@ fn check_color(what: &'static str, c: [f32; 3]) -> Result<(), Error> {
     }
 }
 
+/// `Ok` if the material's colour and weights are finite and non-negative.
+pub(crate) fn check_material(m: &Material) -> Result<(), Error> {
+    check_color("material colour", m.color)?;
+    check_color("material weights", [m.diffuse, m.specular, m.shininess])
+}
+
+/// `Ok` if the light's position or (non-zero) direction and its intensity are finite, the
+/// intensity non-negative.
+pub(crate) fn check_light(light: &Light) -> Result<(), Error> {
+    match *light {
+        Light::Directional { direction, intensity } => {
+            check_finite("light direction", direction)?;
+            if direction.length_squared() == 0.0 {
+                return Err(Error::InvalidValue {
+                    what: "length of light direction",
+                    value: 0.0,
+                    expected: "a non-zero vector",
+                });
+            }
+            check_color("light intensity", intensity)
+        }
+        Light::Point { position, intensity } => {
+            check_finite("light position", position)?;
+            check_color("light intensity", intensity)
+        }
+    }
+}
+
 impl Scene {
     /// A scene of `objects` lit by `lights` in front of `background` (linear RGB).
     ///
@@ -157,28 +188,10 @@ impl Scene {
         }
         check_color("background colour", background)?;
         for o in &objects {
-            let m = &o.material;
-            check_color("material colour", m.color)?;
-            check_color("material weights", [m.diffuse, m.specular, m.shininess])?;
+            check_material(&o.material)?;
         }
         for l in &lights {
-            match *l {
-                Light::Directional { direction, intensity } => {
-                    check_finite("light direction", direction)?;
-                    if direction.length_squared() == 0.0 {
-                        return Err(Error::InvalidValue {
-                            what: "length of light direction",
-                            value: 0.0,
-                            expected: "a non-zero vector",
-                        });
-                    }
-                    check_color("light intensity", intensity)?;
-                }
-                Light::Point { position, intensity } => {
-                    check_finite("light position", position)?;
-                    check_color("light intensity", intensity)?;
-                }
-            }
+            check_light(l)?;
         }
         Ok(Scene { objects, lights, background, ambient: DEFAULT_AMBIENT })
     }

@@ -11,6 +11,10 @@ mod fit_sections;
 mod nonuniform;
 mod render;
 mod resample;
+mod scene_file;
+
+#[cfg(test)]
+pub(crate) use scene_file::SceneFile;
 mod rotate;
 mod sample;
 mod subdivide;

@@ -11,36 +11,24 @@
 //!
 //! Every output is a value whose type derives `Serialize`: each command's own output struct,
 //! embedding the libraries' report types (their `serde` feature), so a field's name is the
-//! name of the field it prints. [`to_json()`] turns it into a [`Json`] tree, which
-//! [`write_json`] prints by the rules above.
+//! name of the field it prints. [`json()`] writes it by `serde_json` (keys in the order of the
+//! fields) through [`Spelled`](finite::Spelled), which spells out the non-finite numbers, into
+//! a [`Json`], which [`write_json`] prints, compact or indented.
 
 use std::io::{self, Write};
 
 use hi_curve::ControlPoint;
-use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
+use serde::ser::{Serialize, SerializeMap, Serializer};
+use serde_json::value::RawValue;
 
-mod to_json;
+mod finite;
 
-pub(crate) use to_json::to_json;
+use finite::Spelled;
 
-/// A JSON value as `hi` prints it.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) enum Json {
-    /// `null`: a value that is undefined (a singular point).
-    Null,
-    /// A number; non-finite ones are printed as strings (see the module documentation).
-    Number(f64),
-    /// A whole number, printed without a decimal point.
-    Integer(i128),
-    /// `true` or `false`.
-    Bool(bool),
-    /// A string.
-    String(String),
-    /// An array.
-    Array(Vec<Json>),
-    /// An object, with its keys in the order given.
-    Object(Vec<(String, Json)>),
-}
+/// A JSON value as `hi` prints it: its compact text, written by the rules above (it may be
+/// embedded in another output, and is written as it is).
+#[derive(Clone, Debug)]
+pub(crate) struct Json(Box<RawValue>);
 
 /// A point as the array of its coordinates (a 1-D point is `[x]`), for output structs.
 #[derive(Clone, Copy, Debug)]
@@ -134,39 +122,14 @@ impl<T: Serialize> Serialize for Derivatives<T> {
 /// keyed by something other than a string or number): a bug in the output struct, reported
 /// rather than panicking.
 pub(crate) fn json<T: Serialize + ?Sized>(value: &T) -> Result<Json, crate::error::Failure> {
-    to_json(value).map_err(|e| crate::error::Failure::Output(io::Error::other(e.to_string())))
+    serde_json::value::to_raw_value(&Spelled(value))
+        .map(Json)
+        .map_err(|e| crate::error::Failure::Output(io::Error::other(e.to_string())))
 }
 
 impl Serialize for Json {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        match self {
-            Json::Null => serializer.serialize_unit(),
-            Json::Number(x) if x.is_finite() => serializer.serialize_f64(*x),
-            Json::Number(x) if x.is_nan() => serializer.serialize_str("NaN"),
-            Json::Number(x) if *x > 0.0 => serializer.serialize_str("Infinity"),
-            Json::Number(_) => serializer.serialize_str("-Infinity"),
-            Json::Integer(n) => match (u64::try_from(*n), i64::try_from(*n)) {
-                (Ok(n), _) => serializer.serialize_u64(n),
-                (_, Ok(n)) => serializer.serialize_i64(n),
-                _ => serializer.serialize_i128(*n),
-            },
-            Json::String(text) => serializer.serialize_str(text),
-            Json::Bool(b) => serializer.serialize_bool(*b),
-            Json::Array(items) => {
-                let mut seq = serializer.serialize_seq(Some(items.len()))?;
-                for item in items {
-                    seq.serialize_element(item)?;
-                }
-                seq.end()
-            }
-            Json::Object(fields) => {
-                let mut map = serializer.serialize_map(Some(fields.len()))?;
-                for (key, value) in fields {
-                    map.serialize_entry(key, value)?;
-                }
-                map.end()
-            }
-        }
+        self.0.serialize(serializer)
     }
 }
 
@@ -177,9 +140,13 @@ impl Serialize for Json {
 /// Any I/O error of `out`.
 pub(crate) fn write_json(out: &mut impl Write, json: &Json, pretty: bool) -> io::Result<()> {
     if pretty {
-        serde_json::to_writer_pretty(&mut *out, json)?;
+        // Read back and written indented, in the same order; every number reads back to the
+        // double it was written from, and is written again the same.
+        let mut from = serde_json::Deserializer::from_str(json.0.get());
+        let mut to = serde_json::Serializer::pretty(&mut *out);
+        serde_transcode::transcode(&mut from, &mut to)?;
     } else {
-        serde_json::to_writer(&mut *out, json)?;
+        out.write_all(json.0.get().as_bytes())?;
     }
     out.write_all(b"\n")?;
     out.flush()
@@ -187,11 +154,13 @@ pub(crate) fn write_json(out: &mut impl Write, json: &Json, pretty: bool) -> io:
 
 #[cfg(test)]
 mod tests {
+    use std::collections::BTreeMap;
+
     use super::*;
 
-    fn text(json: &Json) -> String {
+    fn text(json: &Json, pretty: bool) -> String {
         let mut out = Vec::new();
-        write_json(&mut out, json, false).unwrap();
+        write_json(&mut out, json, pretty).unwrap();
         String::from_utf8(out).unwrap()
     }
 
@@ -203,20 +172,72 @@ mod tests {
             b: Vec<f64>,
             a: Vec<Option<f64>>,
             n: Vec<i64>,
+            f: [f32; 2],
         }
         let values = Values {
             b: vec![0.1, -0.0, 1e300, f64::INFINITY, f64::NEG_INFINITY, f64::NAN],
             a: vec![None, Some(1.0)],
             n: vec![-3, 0, i64::MAX],
+            f: [0.1, f32::NAN],
         };
-        assert_eq!(
-            text(&to_json(&values).unwrap()),
-            "{\"b\":[0.1,-0.0,1e+300,\"Infinity\",\"-Infinity\",\"NaN\"],\"a\":[null,1.0],\"n\":[-3,0,9223372036854775807]}\n"
-        );
+        let compact = "{\"b\":[0.1,-0.0,1e+300,\"Infinity\",\"-Infinity\",\"NaN\"],\"a\":[null,1.0],\"n\":[-3,0,9223372036854775807],\"f\":[0.1,\"NaN\"]}";
+        assert_eq!(text(&json(&values).unwrap(), false), format!("{compact}\n"));
+        // Indented: the same values (serde_json's own pretty form of the same text).
+        let pretty = text(&json(&values).unwrap(), true);
+        let reread: serde_json::Value = serde_json::from_str(&pretty).unwrap();
+        assert_eq!(reread, serde_json::from_str::<serde_json::Value>(compact).unwrap());
+        assert!(pretty.starts_with("{\n  \"b\": [\n    0.1,\n    -0.0,"), "{pretty}");
         let points = [1.5, -2.0];
         assert_eq!(
-            text(&to_json(&PointsOutput { points: PointList(&points) }).unwrap()),
+            text(&json(&PointsOutput { points: PointList(&points) }).unwrap(), false),
             "{\"points\":[[1.5],[-2.0]]}\n"
         );
+    }
+
+    #[derive(serde::Serialize)]
+    #[serde(rename_all = "snake_case")]
+    enum Shape {
+        Unit,
+        Newtype(f64),
+        Tuple(u8, i32),
+        Struct { side: f32 },
+    }
+
+    #[derive(serde::Serialize)]
+    struct Report {
+        b: Vec<Shape>,
+        a: Option<f64>,
+        counts: (usize, i64),
+        keys: BTreeMap<u32, bool>,
+        infinite: f64,
+        inner: Option<Json>,
+    }
+
+    #[test]
+    fn the_output_is_serde_jsons_with_non_finite_numbers_spelled() {
+        let report = Report {
+            b: vec![
+                Shape::Unit,
+                Shape::Newtype(f64::NAN),
+                Shape::Tuple(1, -2),
+                Shape::Struct { side: 0.25 },
+            ],
+            a: None,
+            counts: (3, -4),
+            keys: BTreeMap::from([(7, true)]),
+            infinite: f64::NEG_INFINITY,
+            inner: Some(json(&[f64::INFINITY]).unwrap()),
+        };
+        let ours = text(&json(&report).unwrap(), false);
+        assert_eq!(
+            ours,
+            "{\"b\":[\"unit\",{\"newtype\":\"NaN\"},{\"tuple\":[1,-2]},{\"struct\":{\"side\":0.25}}],\"a\":null,\"counts\":[3,-4],\"keys\":{\"7\":true},\"infinite\":\"-Infinity\",\"inner\":[\"Infinity\"]}\n"
+        );
+        // serde_json writes the same text, except that it turns NaN and ±∞ into null.
+        let theirs = serde_json::to_string(&report).unwrap();
+        let nulled = ours.trim_end().replace("\"-Infinity\"", "null").replace("\"NaN\"", "null");
+        assert_eq!(nulled, theirs);
+        let map = BTreeMap::from([(vec![1u8], 1.0)]);
+        assert!(json(&map).is_err(), "a map keyed by a sequence has no JSON form");
     }
 }
