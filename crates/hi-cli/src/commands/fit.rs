@@ -274,26 +274,9 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
     if !args.bezier && (args.tolerance.is_some() || args.bezier_scheme.is_some()) {
         return Err(Failure::input("--tolerance and --bezier-scheme apply with --bezier only"));
     }
-    let layout = match args.param {
-        ParamName::Sphere => Layout::Sphere,
-        ParamName::Octahedron => Layout::Octahedron,
-        ParamName::FlatOctahedron => Layout::FlatOctahedron,
-        ParamName::Sections if args.bezier => {
-            return Err(Failure::input(
-                "--bezier applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
-            ));
-        }
-        ParamName::Sections if args.method != MethodName::Auto => {
-            return Err(Failure::input(
-                "--method applies to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
-            ));
-        }
-        ParamName::Sections if args.closed || args.open => {
-            return Err(Failure::input(
-                "--closed and --open apply to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)",
-            ));
-        }
-        ParamName::Sections => return super::fit_sections::run(args),
+    let layout = match layout(args)? {
+        Some(layout) => layout,
+        None => return super::fit_sections::run(args),
     };
     if args.slices.is_some() {
         return Err(Failure::input("--slices applies to --param sections only"));
@@ -329,44 +312,10 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         bezier_report = Some(report);
         files
     } else if as_grid {
-        let grid = match &fitted.parts[..] {
-            [only] => grid_json(&only.surface.rows())?,
-            parts => {
-                let named: Vec<(String, Json)> = fitted
-                    .report
-                    .parts
-                    .iter()
-                    .zip(parts)
-                    .map(|(r, p)| Ok((r.name.clone(), grid_json(&p.surface.rows())?)))
-                    .collect::<Result<_, Failure>>()?;
-                json(&serde_json::json!({
-                    "parts": named.into_iter().map(|(name, grid)| serde_json::json!({"name": name, "grid": grid})).collect::<Vec<_>>()
-                }))?
-            }
-        };
-        write_file(&args.output, &grid, false)?;
+        write_file(&args.output, &grids_json(&fitted)?, false)?;
         vec![args.output.clone()]
     } else {
-        // The meshes the error was measured on, or the same made now.
-        let mut meshes = Vec::with_capacity(fitted.parts.len());
-        for (k, part) in fitted.parts.iter_mut().enumerate() {
-            let mesh = match part.mesh.take() {
-                Some(m) => m.mesh,
-                None => {
-                    let share = fitted.report.parts.get(k).map_or(1.0, |r| r.area_fraction);
-                    let per_texel = mesh_oversample(&part.surface, share);
-                    let per_texel = if part.domain == Domain::Sphere(Layout::Octahedron) {
-                        per_texel.next_multiple_of(2)
-                    } else {
-                        per_texel
-                    };
-                    layout_mesh(&part.surface, part.domain, per_texel)
-                        .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?
-                        .mesh
-                }
-            };
-            meshes.push(mesh);
-        }
+        let meshes = part_meshes(&mut fitted, &args.scan)?;
         save_parts(&fitted, &meshes, &args.output)?
     };
     let summary = summary(args, &fitted, &files, bezier_report)?;
@@ -374,6 +323,68 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         write_file(path, &summary, true)?;
     }
     Ok(summary)
+}
+
+/// The layout of `--param`, or `None` for `--param sections` (algorithm 1, no geometry image),
+/// after checking that no option of the other kind is given.
+fn layout(args: &FitArgs) -> Result<Option<Layout>, Failure> {
+    let only_images = |what: &str| {
+        Err(Failure::input(format!(
+            "{what} to the geometry-image layouts (--param sphere, octahedron or flat-octahedron)"
+        )))
+    };
+    match args.param {
+        ParamName::Sphere => Ok(Some(Layout::Sphere)),
+        ParamName::Octahedron => Ok(Some(Layout::Octahedron)),
+        ParamName::FlatOctahedron => Ok(Some(Layout::FlatOctahedron)),
+        ParamName::Sections if args.bezier => only_images("--bezier applies"),
+        ParamName::Sections if args.method != MethodName::Auto => only_images("--method applies"),
+        ParamName::Sections if args.closed || args.open => only_images("--closed and --open apply"),
+        ParamName::Sections => Ok(None),
+    }
+}
+
+/// The grid of the one part's surface, or `{"parts": [{"name", "grid"}, …]}` for several.
+fn grids_json(fitted: &Fit) -> Result<Json, Failure> {
+    Ok(match &fitted.parts[..] {
+        [only] => grid_json(&only.surface.rows())?,
+        parts => {
+            let named: Vec<(String, Json)> = fitted
+                .report
+                .parts
+                .iter()
+                .zip(parts)
+                .map(|(r, p)| Ok((r.name.clone(), grid_json(&p.surface.rows())?)))
+                .collect::<Result<_, Failure>>()?;
+            json(&serde_json::json!({
+                "parts": named.into_iter().map(|(name, grid)| serde_json::json!({"name": name, "grid": grid})).collect::<Vec<_>>()
+            }))?
+        }
+    })
+}
+
+/// Each part's mesh: the one its error was measured on, or the same made now.
+fn part_meshes(fitted: &mut Fit, scan: &Path) -> Result<Vec<TriangleMesh>, Failure> {
+    let mut meshes = Vec::with_capacity(fitted.parts.len());
+    for (k, part) in fitted.parts.iter_mut().enumerate() {
+        let mesh = match part.mesh.take() {
+            Some(m) => m.mesh,
+            None => {
+                let share = fitted.report.parts.get(k).map_or(1.0, |r| r.area_fraction);
+                let per_texel = mesh_oversample(&part.surface, share);
+                let per_texel = if part.domain == Domain::Sphere(Layout::Octahedron) {
+                    per_texel.next_multiple_of(2)
+                } else {
+                    per_texel
+                };
+                layout_mesh(&part.surface, part.domain, per_texel)
+                    .map_err(|e| Failure::input(format!("{}: {e}", scan.display())))?
+                    .mesh
+            }
+        };
+        meshes.push(mesh);
+    }
+    Ok(meshes)
 }
 
 /// Writes one mesh per part: the one mesh as it is, or several as one scene of named meshes.
