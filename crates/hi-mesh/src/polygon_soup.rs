@@ -90,13 +90,20 @@ fn point<'a>(
     Ok(DVec3::from_array(xyz))
 }
 
-/// Checks that face index `k` is below `n`, as `u32`.
-fn index(format: &'static str, line: usize, k: usize, n: usize) -> Result<u32, Error> {
+/// Checks that face index `k` (0-based) is below `n`, as `u32`; an error names the index as the
+/// file writes it, `written`.
+fn index(
+    format: &'static str,
+    line: usize,
+    k: usize,
+    n: usize,
+    written: i64,
+) -> Result<u32, Error> {
     if k >= n {
         return Err(at(
             format,
             line,
-            format!("face index {k} is out of range (the file has {n} points)"),
+            format!("face index {written} is out of range (the file has {n} vertices)"),
         ));
     }
     u32::try_from(k).map_err(|_| at(format, line, "face index does not fit 32 bits"))
@@ -144,10 +151,11 @@ impl PolygonSoup {
             let mut f = Vec::with_capacity(face.len());
             for k in face {
                 // Positive indices were kept 1-based; negative ones were resolved on their line.
+                let written = k;
                 let k = usize::try_from(k - 1).map_err(|_| {
                     at(OBJ, n, "a relative face index points before the first vertex")
                 })?;
-                f.push(index(OBJ, n, k, total)?);
+                f.push(index(OBJ, n, k, total, written)?);
             }
             resolved.push(f);
         }
@@ -231,7 +239,8 @@ impl PolygonSoup {
                 let Some(t) = it.next() else {
                     return Err(at(OFF, m, format!("the face lists {j} of its {k} vertices")));
                 };
-                face.push(index(OFF, m, whole_number(OFF, m, t, "face vertex")?, vertices)?);
+                let k = whole_number(OFF, m, t, "face vertex")?;
+                face.push(index(OFF, m, k, vertices, i64::try_from(k).unwrap_or(i64::MAX))?);
             }
             faces.push(face);
         }

@@ -118,7 +118,7 @@ fn malformed_files_report_the_line() {
     let cases_obj = [
         ("v 0 0\n", 1, "expected 3 coordinates after `v`, found 2"),
         ("v 0 0 0\nv 1 0 zero\n", 2, "not a number"),
-        ("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n", 5, "face index 3 is out of range"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n", 5, "face index 4 is out of range"),
         ("v 0 0 0\nv 1 0 0\nf 1 2\n", 3, "at least 3 vertices, found 2"),
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", 4, "face index 0"),
         ("v 0 0 0\nf a b c\n", 2, "not a vertex index"),

@@ -58,7 +58,7 @@ fn obj_errors_name_the_line() {
     );
     assert_eq!(
         error(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", ScanFormat::Obj),
-        "OBJ, line 4: face index 3 is out of range (the file has 3 points)"
+        "OBJ, line 4: face index 4 is out of range (the file has 3 vertices)"
     );
     assert_eq!(
         error(b"v 0 0 0\nf 0 1 1\n", ScanFormat::Obj),
@@ -114,7 +114,7 @@ fn off_errors() {
     );
     assert_eq!(
         error(b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", ScanFormat::Off),
-        "OFF, line 6: face index 3 is out of range (the file has 3 points)"
+        "OFF, line 6: face index 3 is out of range (the file has 3 vertices)"
     );
     assert_eq!(
         error(b"OFF\n1 0 0\n0 0\n", ScanFormat::Off),
