@@ -70,6 +70,15 @@ impl Comparison {
             .collect()
     }
 
+    /// The least colour-scale extent of `quantity`: [`FLOOR`] of the curvature of the surface's
+    /// size (1/r² for K, 1/r for H), below which a value counts as flat.
+    fn floor(&self, quantity: CurvatureQuantity) -> f64 {
+        match quantity {
+            CurvatureQuantity::Gaussian => FLOOR / (self.scale * self.scale),
+            _ => FLOOR / self.scale,
+        }
+    }
+
     /// The colour-scale extent of `quantity` (see the module notes): the [`COVERAGE`] quantile
     /// of |values| over the parametric surface's *area* (each vertex weighted by a third of
     /// its triangles' area), so that what most of the picture shows sets the scale, not the
@@ -78,10 +87,7 @@ impl Comparison {
         let (mesh, _) = self.mesh(Side::Parametric);
         let a =
             area_quantile(&self.values(Side::Parametric, quantity), &vertex_areas(mesh), COVERAGE);
-        let floor = match quantity {
-            CurvatureQuantity::Gaussian => FLOOR / (self.scale * self.scale),
-            _ => FLOOR / self.scale,
-        };
+        let floor = self.floor(quantity);
         Ok(if a.is_finite() { a.max(floor) } else { floor })
     }
 
@@ -98,23 +104,20 @@ impl Comparison {
         let a = self.extent(quantity)?;
         let values = self.values(side, quantity);
         let areas = vertex_areas(&self.mesh(side).0);
-        let floor = match quantity {
-            CurvatureQuantity::Gaussian => FLOOR / (self.scale * self.scale),
-            _ => FLOOR / self.scale,
-        };
+        let floor = self.floor(quantity);
         if values.iter().all(|x| !x.is_finite() || x.abs() <= floor) {
             return Ok(None);
         }
-        let signed = |q: f64| {
-            let (v, w): (Vec<f64>, Vec<f64>) = values
-                .iter()
-                .zip(&areas)
-                .filter(|(x, _)| x.is_finite())
-                .map(|(x, w)| (x.clamp(-a, a), *w))
-                .unzip();
-            weighted_quantile(v, &w, q)
-        };
-        let (lo, hi) = (signed(0.02).min(0.0), signed(0.98).max(0.0));
+        let (v, w): (Vec<f64>, Vec<f64>) = values
+            .iter()
+            .zip(&areas)
+            .filter(|(x, _)| x.is_finite())
+            .map(|(x, w)| (x.clamp(-a, a), *w))
+            .unzip();
+        let (lo, hi) = (
+            weighted_quantile(v.clone(), &w, 0.02).min(0.0),
+            weighted_quantile(v, &w, 0.98).max(0.0),
+        );
         Ok(Some((hi - lo) / (2.0 * a)))
     }
 }
