@@ -250,6 +250,27 @@ impl TriangleMesh {
 }
 
 /// Whether `v` has length 1 to [`UNIT_TOLERANCE`] (false for NaN).
+/// Area-weighted vertex normals of `triangles` over `positions`: each vertex's normal is the
+/// normalised sum of the cross products of its triangles' edges, +z where that sum vanishes (an
+/// isolated or degenerate vertex). Triangles with a corner out of range are passed over.
+pub(crate) fn area_weighted_normals(
+    positions: &[DVec3],
+    triangles: impl IntoIterator<Item = [u32; 3]>,
+) -> Vec<DVec3> {
+    let mut normals = vec![DVec3::ZERO; positions.len()];
+    for t in triangles {
+        let corner = |k: u32| positions.get(k as usize).copied();
+        let (Some(a), Some(b), Some(c)) = (corner(t[0]), corner(t[1]), corner(t[2])) else {
+            continue;
+        };
+        let n = (b - a).cross(c - a);
+        for k in t {
+            normals[k as usize] += n;
+        }
+    }
+    normals.into_iter().map(|n| n.try_normalize().unwrap_or(DVec3::Z)).collect()
+}
+
 fn is_unit(v: DVec3) -> bool {
     (v.length() - 1.0).abs() <= UNIT_TOLERANCE
 }

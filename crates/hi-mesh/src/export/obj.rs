@@ -240,7 +240,10 @@ mod read {
                     .map(|p| DVec3::new(p[0].into(), p[1].into(), p[2].into())),
             );
         } else {
-            out.normals.extend(face_normals(&positions, &m.indices));
+            out.normals.extend(crate::triangle_mesh::area_weighted_normals(
+                &positions,
+                m.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]),
+            ));
         }
         out.positions.extend(positions);
         if with_uvs {
@@ -261,23 +264,5 @@ mod read {
             m.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]].map(|k| k.saturating_add(base))),
         );
         Ok(())
-    }
-
-    /// Area-weighted vertex normals of the triangles `indices` (three per triangle) over
-    /// `positions`: each vertex's normal is the normalised sum of the cross products of its
-    /// triangles' edges, +z where that sum vanishes (an isolated or degenerate vertex).
-    fn face_normals(positions: &[DVec3], indices: &[u32]) -> Vec<DVec3> {
-        let mut normals = vec![DVec3::ZERO; positions.len()];
-        for t in indices.chunks_exact(3) {
-            let corner = |k: u32| positions.get(k as usize).copied();
-            let (Some(a), Some(b), Some(c)) = (corner(t[0]), corner(t[1]), corner(t[2])) else {
-                continue;
-            };
-            let n = (b - a).cross(c - a);
-            for &k in t {
-                normals[k as usize] += n;
-            }
-        }
-        normals.into_iter().map(|n| n.try_normalize().unwrap_or(DVec3::Z)).collect()
     }
 }

@@ -466,15 +466,8 @@ impl PolyMesh {
                 triangles.push([face[0], face[i], face[i + 1]]);
             }
         }
-        let mut normals = vec![DVec3::ZERO; self.positions.len()];
-        for t in &triangles {
-            let [a, b, c] = t.map(|k| self.positions[k as usize]);
-            let n = (b - a).cross(c - a);
-            for &k in t {
-                normals[k as usize] += n;
-            }
-        }
-        let normals = normals.into_iter().map(|n| n.try_normalize().unwrap_or(DVec3::Z)).collect();
+        let normals =
+            crate::triangle_mesh::area_weighted_normals(&self.positions, triangles.iter().copied());
         let uvs = vec![glam::DVec2::ZERO; self.positions.len()];
         TriangleMesh::try_new(self.positions.clone(), normals, uvs, triangles)
     }
