@@ -16,7 +16,7 @@ use hi_surface::torus;
 use super::data;
 use super::glb::{flat_with_edges, glb, glb_with_edges};
 use super::plot::{
-    BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, render_row, sample,
+    BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, render_grid, sample,
 };
 use super::scans::{ensure_outward, head_scan};
 use super::subdivision::head_with;
@@ -266,14 +266,21 @@ fn stages_polygon() -> Vec<DVec2> {
     data::plane(&data::HEPTAGON)
 }
 
-/// Figures 4.6 and 4.7: the polygon and three steps of `step`, side by side.
+/// Size in pixels of a panel of figures 4.6 and 4.7: smaller than a plane plot on its own, so
+/// that the text stays legible when the two by two grid is printed at the width of a page.
+const STAGE_PANEL: (u32, u32) = (400, 370);
+
+/// Figures 4.6 and 4.7: the polygon and three steps of `step`, two by two (in one row the
+/// four panels would be too small to read on a page).
 fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
     let polygon = stages_polygon();
-    let mut plots = vec![Plot::plane("control polygon").polygon(&polygon, true).points(
-        &polygon,
-        Marker::point(INK),
-        None,
-    )];
+    let (w, h) = STAGE_PANEL;
+    let mut plots =
+        vec![Plot::plane("control polygon").sized(w, h).polygon(&polygon, true).points(
+            &polygon,
+            Marker::point(INK),
+            None,
+        )];
     let mut current = polygon.clone();
     for k in 1..=3 {
         current = step(&current);
@@ -281,6 +288,7 @@ fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
         closed.push(current[0]);
         plots.push(
             Plot::plane(&format!("{k} step{}", if k == 1 { "" } else { "s" }))
+                .sized(w, h)
                 .polygon(&polygon, true)
                 .curve(closed, Pen::solid(BLUE), None)
                 .points(&current, Marker::small(VERMILION), None)
@@ -288,7 +296,7 @@ fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
         );
     }
     let refs: Vec<&Plot> = plots.iter().collect();
-    render_row(title, &refs)
+    render_grid(title, &refs, 2)
 }
 
 /// One step of Chaikin's scheme on a closed polygon.

@@ -20,7 +20,7 @@ mod row;
 use glam::{DVec2, DVec3};
 use plotters::prelude::*;
 
-pub(crate) use row::render_row;
+pub(crate) use row::{render_grid, render_row};
 
 /// Drawing units per SVG pixel: coordinates are placed to 0.01 px.
 const SCALE: u32 = 100;
@@ -257,6 +257,8 @@ pub(crate) struct Plot {
     /// Tick positions on the y axis and their labels, instead of plotters' own (an axis whose
     /// values are transformed, such as a symmetric log).
     y_ticks: Option<Vec<(f64, String)>>,
+    /// Its size in pixels instead of the kind's own.
+    size: Option<(u32, u32)>,
 }
 
 impl Plot {
@@ -269,6 +271,7 @@ impl Plot {
             marks: Vec::new(),
             legend: None,
             y_ticks: None,
+            size: None,
         }
     }
 
@@ -296,6 +299,14 @@ impl Plot {
     /// Fixes the range of the y axis (otherwise it is fitted to the marks).
     pub(crate) fn y_range(mut self, lo: f64, hi: f64) -> Self {
         self.y_range = Some((lo, hi));
+        self
+    }
+
+    /// Draws the plot `width` × `height` pixels instead of its kind's size; the text keeps its
+    /// size, so a smaller plot has relatively larger text (panels of a grid that is printed
+    /// at the width of a page).
+    pub(crate) fn sized(mut self, width: u32, height: u32) -> Self {
+        self.size = Some((width, height));
         self
     }
 
@@ -499,6 +510,30 @@ mod tests {
         assert_eq!(dashes.len(), 4, "{dashes:?}");
         assert_eq!(dashes[1], vec![DVec2::new(3.0, 0.0), DVec2::new(5.0, 0.0)]);
         assert_eq!(dashes[3], vec![DVec2::new(9.0, 0.0), DVec2::new(10.0, 0.0)]);
+    }
+
+    #[test]
+    fn a_grid_stacks_rows_of_plots() {
+        let plot = |title: &str| {
+            Plot::plane(title).sized(400, 370).points(
+                &[DVec2::ZERO, DVec2::ONE],
+                Marker::point(INK),
+                None,
+            )
+        };
+        let plots = [plot("one"), plot("two"), plot("three")];
+        let refs: Vec<&Plot> = plots.iter().collect();
+        let svg =
+            String::from_utf8(render_grid("test", &refs, 2).expect("renders")).expect("utf-8");
+        // Two columns of 400 pixels; two rows (the second of one plot) of 370 and a title line
+        // of 24 each.
+        assert!(svg.starts_with("<svg width=\"800\" height=\"788\""), "{}", &svg[..60]);
+        for title in ["one", "two", "three"] {
+            assert!(svg.contains(&format!("\n{title}\n</text>")), "the sub-caption {title}");
+        }
+        let row = String::from_utf8(render_row("test", &refs).expect("renders")).expect("utf-8");
+        assert!(row.starts_with("<svg width=\"1200\" height=\"394\""), "{}", &row[..60]);
+        assert!(render_grid("test", &refs, 0).is_err(), "no columns");
     }
 
     #[test]
