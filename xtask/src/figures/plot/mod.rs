@@ -64,8 +64,11 @@ pub(crate) const SKY: RGBColor = RGBColor(86, 180, 233);
 pub(crate) const INK: RGBColor = RGBColor(30, 30, 30);
 /// Grey, for reference curves drawn behind the main one.
 pub(crate) const GREY: RGBColor = RGBColor(150, 150, 150);
-/// The colours of a family of curves (basis functions), in order.
-pub(crate) const PALETTE: [RGBColor; 6] = [BLUE, VERMILION, GREEN, ORANGE, PURPLE, SKY];
+/// Brown, the eighth colour of a family (Okabe–Ito's yellow is too faint on white).
+const BROWN: RGBColor = RGBColor(136, 85, 40);
+/// The colours of a family of curves (basis functions), in order: Okabe–Ito's six, then
+/// near-black and brown, so that up to eight curves on one plot each have their own.
+pub(crate) const PALETTE: [RGBColor; 8] = [BLUE, VERMILION, GREEN, ORANGE, PURPLE, SKY, INK, BROWN];
 
 /// Colour of the polygon through the data points.
 const POLYGON: RGBColor = RGBColor(170, 170, 170);
@@ -466,6 +469,18 @@ mod tests {
     use super::draw::{dash, tick_label};
     use super::row::panel_letter;
     use super::*;
+
+    #[test]
+    fn the_palette_has_eight_distinct_colours() {
+        // Figure 2.10 draws eight blending functions on one plot, each in its own colour.
+        assert_eq!(PALETTE.len(), 8);
+        for (i, a) in PALETTE.iter().enumerate() {
+            for b in &PALETTE[i + 1..] {
+                let d = [a.0.abs_diff(b.0), a.1.abs_diff(b.1), a.2.abs_diff(b.2)];
+                assert!(d.iter().map(|&c| u32::from(c)).sum::<u32>() > 60, "{a:?} and {b:?}");
+            }
+        }
+    }
 
     #[test]
     fn subscripts() {
