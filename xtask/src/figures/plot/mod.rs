@@ -127,6 +127,11 @@ impl Marker {
         Self { color, radius: 2.5, filled: true }
     }
 
+    /// A dot smaller still: one of thousands of points (a scan).
+    pub(crate) const fn dot(color: RGBColor) -> Self {
+        Self { color, radius: 1.6, filled: true }
+    }
+
     /// A ring: points shown for reference (the data before a change).
     pub(crate) const fn ring(color: RGBColor) -> Self {
         Self { color, radius: 5.0, filled: false }
