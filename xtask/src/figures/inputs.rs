@@ -9,9 +9,10 @@
 //!   (`mod.rs`) and, for a model or a render, of [`renders`](super::renders);
 //! - every file of each `hi-*` crate those files name (`hi_surface`), and of the `hi-*` crates
 //!   below it (from the manifests' `[dependencies]`), manifests included;
-//! - all of `fixtures/` if any of those files names it; `xtask/Cargo.toml`, the compiler's
-//!   version (`rustc -V`) and the packages `xtask` is built from with their versions
-//!   (`cargo tree`: a new dependency of another crate changes no figure's key).
+//! - all of `fixtures/` if any of those files names it; the compiler's version (`rustc -V`),
+//!   and the packages with their versions that `xtask` is built from, but the `hi-*` crates
+//!   the figure does not read and what only they bring in (`cargo tree --prune`): a new
+//!   dependency of another crate changes no figure's key.
 //!
 //! The key of a figure is the SHA-256 of all of them (names and bytes, in sorted order) with
 //! the figure's number. `docs/figures/inputs.json` records the keys of the files as they were
@@ -38,9 +39,12 @@ pub(crate) struct Inputs {
     digests: BTreeMap<String, [u8; 32]>,
     /// The text of the sources of `xtask/src`, by path relative to the root.
     sources: BTreeMap<String, String>,
-    /// The compiler's version line and the packages `xtask` is built from, with their
-    /// versions (`cargo tree`), one per line.
-    tools: String,
+    /// The compiler's version line.
+    rustc: String,
+    /// The packages `xtask` is built from (`cargo tree`), by line, unpruned.
+    tree: Vec<String>,
+    /// The packages a figure is built from, by the `hi-*` crates it reads.
+    packages: BTreeMap<BTreeSet<String>, String>,
 }
 
 impl Inputs {
@@ -54,8 +58,11 @@ impl Inputs {
             root: root.to_path_buf(),
             digests: BTreeMap::new(),
             sources: BTreeMap::new(),
-            tools: tools(root),
+            rustc: run(root, "RUSTC", "rustc", &["-V"]).trim().to_owned(),
+            tree: Vec::new(),
+            packages: BTreeMap::new(),
         };
+        inputs.tree = inputs.cargo_tree(&[]);
         for file in files_under(&root.join("xtask/src"))? {
             let text = std::fs::read_to_string(&file)
                 .with_context(|| format!("reading {}", file.display()))?;
@@ -88,9 +95,11 @@ impl Inputs {
     ///
     /// If a crate's folder or the fixtures cannot be listed.
     pub(crate) fn key(&mut self, figure: &Figure, module: &str) -> Result<String> {
-        let all = self.files(figure, module)?;
+        let (all, crates) = self.files(figure, module)?;
+        let packages = self.packages(crates);
         let mut hasher = Sha256::new();
-        hasher.update(format!("figure {}.{}\n{}\n", figure.number.0, figure.number.1, self.tools));
+        let (chapter, number) = figure.number;
+        hasher.update(format!("figure {chapter}.{number}\n{}\n{packages}\n", self.rustc));
         for rel in &all {
             let d = self.digest(rel);
             hasher.update(rel.as_bytes());
@@ -99,8 +108,47 @@ impl Inputs {
         Ok(hasher.finalize().iter().map(|b| format!("{b:02x}")).collect())
     }
 
-    /// The files `figure` (of the topic module `module`) is drawn from, relative to the root.
-    fn files(&self, figure: &Figure, module: &str) -> Result<BTreeSet<String>> {
+    /// The packages, with their versions, that a figure reading the `hi-*` crates `crates` is
+    /// built from: those of `xtask` but the `hi-*` crates it does not read and what only they
+    /// bring in (so that a dependency added for another crate changes no figure's key).
+    fn packages(&mut self, crates: BTreeSet<String>) -> String {
+        if let Some(p) = self.packages.get(&crates) {
+            return p.clone();
+        }
+        let unread: Vec<String> = self
+            .tree
+            .iter()
+            .filter_map(|l| l.split(' ').next())
+            .filter(|name| name.starts_with("hi-") && !crates.contains(*name))
+            .map(str::to_owned)
+            .collect::<BTreeSet<String>>()
+            .into_iter()
+            .collect();
+        let p = self.cargo_tree(&unread).join("\n");
+        self.packages.insert(crates, p.clone());
+        p
+    }
+
+    /// The lines of `cargo tree` for `xtask` with the packages `prune` left out, as
+    /// "name vX.Y.Z" (without a workspace crate's folder, which differs between clones),
+    /// sorted and without repeats.
+    fn cargo_tree(&self, prune: &[String]) -> Vec<String> {
+        let mut args = vec!["tree", "-p", "xtask", "-e", "normal,build", "--prefix", "none"];
+        for p in prune {
+            args.extend(["--prune", p.as_str()]);
+        }
+        let tree = run(&self.root, "CARGO", "cargo", &args);
+        let lines: BTreeSet<String> = tree
+            .lines()
+            .map(|l| l.split(" (").next().unwrap_or(l).trim().to_owned())
+            .filter(|l| !l.is_empty() && !l.starts_with("xtask "))
+            .collect();
+        lines.into_iter().collect()
+    }
+
+    /// The files `figure` (of the topic module `module`) is drawn from, relative to the root,
+    /// and the `hi-*` crates among them.
+    fn files(&self, figure: &Figure, module: &str) -> Result<(BTreeSet<String>, BTreeSet<String>)> {
         // The driver (`mod.rs`) is read but not followed: it names every module. It renders a
         // model's file, with a colour bar for a curvature picture.
         let mut modules = BTreeSet::from([module.to_owned()]);
@@ -111,7 +159,8 @@ impl Inputs {
         files.insert("xtask/src/figures/mod.rs".to_owned());
         let mut all: BTreeSet<String> = files.iter().cloned().collect();
         let text: String = files.iter().map(|f| self.sources[f].as_str()).collect();
-        for krate in crates_below(&self.root, &crates_named(&text))? {
+        let crates = crates_below(&self.root, &crates_named(&text))?;
+        for krate in &crates {
             let dir = self.root.join("crates").join(&krate);
             all.insert(format!("crates/{krate}/Cargo.toml"));
             for file in files_under(&dir.join("src"))? {
@@ -123,8 +172,7 @@ impl Inputs {
                 all.insert(self.relative(&file));
             }
         }
-        all.insert("xtask/Cargo.toml".to_owned());
-        Ok(all)
+        Ok((all, crates))
     }
 
     /// The source files of the figure modules in `start` and of every module they name, to a
@@ -249,31 +297,16 @@ fn files_under(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(out)
 }
 
-/// The version line of the compiler (`rustc -V`) and the packages `xtask` is built from, with
-/// their versions, sorted (`cargo tree`: the lock file's entries that reach the figures, and
-/// no others); "" for what cannot be run.
-fn tools(root: &Path) -> String {
-    let run = |program: &str, args: &[&str]| {
-        std::process::Command::new(program)
-            .args(args)
-            .current_dir(root)
-            .output()
-            .map(|o| String::from_utf8_lossy(&o.stdout).into_owned())
-            .unwrap_or_default()
-    };
-    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".to_owned());
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
-    let tree = run(&cargo, &["tree", "-p", "xtask", "-e", "normal,build", "--prefix", "none"]);
-    // "name vX.Y.Z", without what follows: " (*)" for a repeat and a workspace crate's folder
-    // (which differs from one clone to another).
-    let mut packages: Vec<&str> = tree
-        .lines()
-        .map(|l| l.split(" (").next().unwrap_or(l).trim())
-        .filter(|l| !l.is_empty())
-        .collect();
-    packages.sort_unstable();
-    packages.dedup();
-    format!("{}\n{}", run(&rustc, &["-V"]).trim(), packages.join("\n"))
+/// What `program` (or the one the environment variable `var` names, as cargo sets it) prints
+/// with `args` in `root`; "" if it cannot be run.
+fn run(root: &Path, var: &str, program: &str, args: &[&str]) -> String {
+    let program = std::env::var(var).unwrap_or_else(|_| program.to_owned());
+    std::process::Command::new(program)
+        .args(args)
+        .current_dir(root)
+        .output()
+        .map(|o| String::from_utf8_lossy(&o.stdout).into_owned())
+        .unwrap_or_default()
 }
 
 /// The keys recorded in the manifest `path` (none if it is missing or unreadable).
@@ -322,8 +355,13 @@ mod tests {
         };
         let (plot_module, plot) = find("2.10");
         let (model_module, model) = find("4.11");
-        let plot_files = inputs.files(&plot, plot_module).unwrap();
-        let model_files = inputs.files(&model, model_module).unwrap();
+        let (plot_files, plot_crates) = inputs.files(&plot, plot_module).unwrap();
+        let (model_files, _) = inputs.files(&model, model_module).unwrap();
+        let packages = inputs.packages(plot_crates);
+        assert!(packages.contains("\nplotters v"), "{packages}");
+        assert!(packages.contains("hi-curve v"), "{packages}");
+        assert!(!packages.contains("hi-raytrace v"), "{packages}");
+        assert!(!packages.contains("obvhs v"), "only the renderer brings in obvhs: {packages}");
         let under = |files: &BTreeSet<String>, dir: &str| files.iter().any(|f| f.starts_with(dir));
         assert!(under(&plot_files, "crates/hi-curve/src/"), "{plot_files:?}");
         assert!(!under(&plot_files, "crates/hi-raytrace/"), "{plot_files:?}");
