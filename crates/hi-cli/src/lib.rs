@@ -67,6 +67,11 @@ pub fn run() -> ExitCode {
             ExitCode::from(EXIT_OUTPUT)
         }
         Err(failure) => {
+            if let Failure::Batch { output: json, .. } = &failure {
+                // The batch's counts still go to stdout; a failure to print them changes nothing.
+                let out = &mut BufWriter::new(io::stdout().lock());
+                let _ = output::write_json(out, json, cli.pretty);
+            }
             eprintln!("{}", stderr_line(&failure.to_string()));
             failure.exit_code()
         }
