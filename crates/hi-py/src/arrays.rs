@@ -135,7 +135,14 @@ pub(crate) fn from_points<'py, P: ControlPoint>(
     py: Python<'py>,
     points: &[P],
 ) -> Bound<'py, PyArrayDyn<f64>> {
-    let flat: Vec<f64> = points.iter().flat_map(|p| (0..P::DIM).map(|i| p.coord(i))).collect();
+    // Filled in place at its final size: a collected `flat_map` has no size hint, and grew
+    // (and copied) a large result several times.
+    let mut flat: Vec<f64> = Vec::with_capacity(points.len() * P::DIM);
+    for p in points {
+        for i in 0..P::DIM {
+            flat.push(p.coord(i));
+        }
+    }
     let shape: Vec<usize> =
         if P::DIM == 1 { vec![points.len()] } else { vec![points.len(), P::DIM] };
     // The shape holds exactly the values made above.
