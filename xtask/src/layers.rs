@@ -2,7 +2,7 @@
 //! The layer rule of docs/architecture.md: a crate may depend only on crates below it.
 //!
 //! {hi-interval, hi-bezier, hi-par} → {hi-curve, hi-mesh} → {hi-surface, hi-compare, hi-scan} →
-//! {hi-geomimage, hi-raytrace} → hi-cli,
+//! {hi-geomimage, hi-raytrace} → hi-fit → {hi-cli, hi-py},
 //! with xtask on top. Every `[dependencies]`, `[dev-dependencies]` and
 //! `[build-dependencies]` table (and the same under `[target.'…']`) of every crate under
 //! `crates/`, of xtask, and of the fuzz crates under `crates/*/fuzz/` is read with a TOML
@@ -17,7 +17,7 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 
 /// Each crate and its layer; 0 is the foundation.
-pub(crate) const LAYERS: [(&str, u32); 12] = [
+pub(crate) const LAYERS: [(&str, u32); 14] = [
     ("hi-interval", 0),
     ("hi-par", 0),
     ("hi-bezier", 0),
@@ -28,8 +28,10 @@ pub(crate) const LAYERS: [(&str, u32); 12] = [
     ("hi-scan", 2),
     ("hi-geomimage", 3),
     ("hi-raytrace", 3),
-    ("hi-cli", 4),
-    ("xtask", 5),
+    ("hi-fit", 4),
+    ("hi-cli", 5),
+    ("hi-py", 5),
+    ("xtask", 6),
 ];
 
 fn layer_of(name: &str) -> Option<u32> {

@@ -187,17 +187,43 @@ pub(crate) enum OrderName {
     Nearest,
 }
 
+/// The output formats of `hi fit --out-dir`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub(crate) enum FormatName {
+    /// Binary glTF.
+    Glb,
+    /// glTF with its .bin.
+    Gltf,
+    /// Wavefront OBJ.
+    Obj,
+    /// The surfaces' grids, for 'hi surface'.
+    Json,
+}
+
 /// Options of `hi fit`.
 #[derive(Debug, Args)]
 pub(crate) struct FitArgs {
     /// The scan: .obj, .ply, .off, .stl, .xyz, .pts, .gltf or .glb (every mesh the scene places,
-    /// in world space).
-    #[arg(value_name = "SCAN")]
-    pub(crate) scan: PathBuf,
+    /// in world space); with --out-dir, any number of scans, folders of scans and quoted globs.
+    #[arg(value_name = "SCAN", required = true, num_args = 1..)]
+    pub(crate) scans: Vec<PathBuf>,
     /// The output: a mesh of each part's surface (.glb, .gltf, .obj; several parts as one scene
     /// of named meshes) or the surfaces' grids (.json, for 'hi surface').
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
-    pub(crate) output: PathBuf,
+    #[arg(short = 'o', long = "output", value_name = "OUT", required_unless_present = "out_dir")]
+    pub(crate) output: Option<PathBuf>,
+    /// Fit every scan into DIR/NAME.FORMAT, in parallel, and append one JSON line per scan to
+    /// DIR/summary.jsonl; scans already done there are skipped.
+    #[arg(long, value_name = "DIR", conflicts_with_all = ["output", "report", "bezier"])]
+    pub(crate) out_dir: Option<PathBuf>,
+    /// With --out-dir: the format of the outputs [default: glb].
+    #[arg(long, value_enum)]
+    pub(crate) format: Option<FormatName>,
+    /// With --out-dir: fit again the scans already done.
+    #[arg(long)]
+    pub(crate) force: bool,
+    /// With --out-dir: scans fitted at once [default: the number of cores].
+    #[arg(long, value_name = "N", value_parser = parse_whole)]
+    pub(crate) jobs: Option<usize>,
     /// The geometry image's layout (or algorithm 1's cross-sections).
     #[arg(long, value_enum, default_value = "flat-octahedron")]
     pub(crate) param: ParamName,

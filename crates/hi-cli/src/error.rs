@@ -18,6 +18,14 @@ pub(crate) enum Failure {
     Input(String),
     /// Writing the result to stdout failed.
     Output(io::Error),
+    /// Some scans of a batch (`hi fit --out-dir`) failed: the batch's output is still printed,
+    /// and the exit status is that of bad input.
+    Batch {
+        /// The batch's output, for stdout.
+        output: crate::output::Json,
+        /// How many scans failed.
+        failed: usize,
+    },
 }
 
 impl Failure {
@@ -29,7 +37,7 @@ impl Failure {
     /// The process exit code for this failure.
     pub(crate) fn exit_code(&self) -> ExitCode {
         match self {
-            Failure::Input(_) => ExitCode::from(EXIT_BAD_INPUT),
+            Failure::Input(_) | Failure::Batch { .. } => ExitCode::from(EXIT_BAD_INPUT),
             Failure::Output(_) => ExitCode::from(EXIT_OUTPUT),
         }
     }
@@ -40,6 +48,12 @@ impl fmt::Display for Failure {
         match self {
             Failure::Input(message) => f.write_str(message),
             Failure::Output(e) => write!(f, "cannot write the output: {e}"),
+            Failure::Batch { failed: 1, .. } => {
+                f.write_str("1 scan failed (its error is in summary.jsonl)")
+            }
+            Failure::Batch { failed, .. } => {
+                write!(f, "{failed} scans failed (their errors are in summary.jsonl)")
+            }
         }
     }
 }

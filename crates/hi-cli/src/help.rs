@@ -32,6 +32,7 @@ Curve commands: hi curve eval|sample|fairness|to-bezier|rotate|resample|subdivid
 Surface commands: hi surface eval|mesh|example|bspline-fit|bezier (see 'hi surface --help').
 Subdivision: hi subdivide --scheme SCHEME --steps K IN.(obj|off) -o OUT.(obj|off|gltf|glb).
 Fitting: hi fit SCAN -o OUT.(glb|gltf|obj|json) [--param sphere|octahedron|flat-octahedron|sections] ...
+         hi fit SCAN... --out-dir DIR [--format glb|gltf|obj|json] [--jobs N] [--force]
 Rendering (§5.6): hi render SCENE.json -o OUT.png, or hi render --quick FILE -o OUT.png.
 Bézier forms (§5.7): hi bezier basis --n N --scheme thesis-cubic|thesis-quintic;
   hi curve to-bezier --kind harmonic --scheme thesis-cubic|thesis-quintic|hermite|hermite-quintic.
@@ -134,13 +135,22 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   \"overshoot\", \"rotation\", \"deviation\", \"deviation_unaligned\"}, …], \"axis\",
   \"contour_points\", \"deviation\", \"deviation_unaligned\", \"sampling_scale\",
   \"surface_to_points\" and \"problems\": [\"section 3: …\", …] (each also printed as a warning).
+--out-dir DIR fits every SCAN (files, folders of scans, quoted globs) into DIR/NAME.FORMAT,
+  --jobs at a time (default: the number of cores), with one progress bar, and appends one line
+  per scan to DIR/summary.jsonl: {\"input\", \"output\", \"status\": \"ok\" | \"failed\", \"method\",
+  \"parts\", \"points\", \"both_ways\", \"files\", \"seconds\": {\"read\", \"fit\", \"write\", \"total\"},
+  \"warnings\": [...], \"error\"}. A scan that fails is recorded and the others go on; the exit
+  status is 2 if any failed. A scan already done (an \"ok\" line for the same input and output,
+  and the output there) is skipped; --force fits it again. Output: {\"out_dir\", \"summary\",
+  \"fitted\", \"skipped\", \"failed\", \"failures\": [...]}.
 --bezier writes the surface as Bézier patches (§5.7, see 'hi surface bezier --help'): .json
   patches, .obj free-form surfaces or a .glb/.gltf mesh with one colour per patch (the patches
   of one cover of the object), and adds \"bezier\": {\"scheme\", \"patches\", \"patches_once\",
   \"degree\", \"max_deviation\", \"rms_deviation\", \"bound\", \"max_normal_jump\", \"seconds\"}.
 Example: hi fit bunny.obj -o bunny.glb
          hi fit bunny.obj -o bunny.glb --method radial --param sphere --resolution 128x128 --smooth 0
-         hi fit scan.xyz -o fit.glb --param sections --slices 24 --axis y";
+         hi fit scan.xyz -o fit.glb --param sections --slices 24 --axis y
+         hi fit scans/ 'more/*.ply' --out-dir fitted";
 
 /// The output of `hi curve eval`.
 pub(crate) const EVAL_HELP: &str = curve_help!(

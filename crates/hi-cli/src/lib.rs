@@ -10,7 +10,8 @@
 //! hi surface eval|mesh|example|bezier|bspline-fit
 //!                     harmonic surfaces, meshes (OBJ, glTF, GLB), Bézier patches, B-spline fits
 //! hi subdivide        --scheme SCHEME --steps K IN.(obj|off) -o OUT: subdivision surfaces (§4.5)
-//! hi fit SCAN -o OUT  a harmonic surface fitted to a scan (§5.3, §5.4, §5.8)
+//! hi fit SCAN -o OUT  a harmonic surface fitted to a scan (§5.3, §5.4, §5.8); SCAN... --out-dir
+//!                     DIR fits many in parallel, one line each in DIR/summary.jsonl
 //! hi bezier basis     control values of σₖ on the pieces of a thesis scheme (§5.7)
 //! hi render           SCENE.json -o OUT.png, or --quick FILE -o OUT.png (§5.5, §5.6)
 //! ```
@@ -67,6 +68,11 @@ pub fn run() -> ExitCode {
             ExitCode::from(EXIT_OUTPUT)
         }
         Err(failure) => {
+            if let Failure::Batch { output: json, .. } = &failure {
+                // The batch's counts still go to stdout; a failure to print them changes nothing.
+                let out = &mut BufWriter::new(io::stdout().lock());
+                let _ = output::write_json(out, json, cli.pretty);
+            }
             eprintln!("{}", stderr_line(&failure.to_string()));
             failure.exit_code()
         }

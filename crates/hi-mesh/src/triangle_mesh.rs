@@ -54,6 +54,19 @@ pub struct TriangleMesh {
 }
 
 impl TriangleMesh {
+    /// A mesh of bare positions and triangles (a program's arrays), with area-weighted vertex
+    /// normals from its triangles (as the OBJ reader gives a file without normals) and every UV
+    /// at the origin.
+    ///
+    /// # Errors
+    ///
+    /// As [`TriangleMesh::try_new`]: no triangles, an index out of range, a non-finite position.
+    pub fn from_triangles(positions: Vec<DVec3>, triangles: Vec<[u32; 3]>) -> Result<Self, Error> {
+        let normals = area_weighted_normals(&positions, triangles.iter().copied());
+        let uvs = vec![DVec2::ZERO; positions.len()];
+        Self::try_new(positions, normals, uvs, triangles)
+    }
+
     /// A mesh from its parts, checked against the invariants of [`TriangleMesh`].
     ///
     /// # Errors

@@ -386,3 +386,16 @@ fn obj_meshes_agree_with_tobj() {
         assert!(max_dev < 1e-7, "{file}: corners differ from tobj's by {max_dev:e} (relative)");
     }
 }
+
+#[test]
+fn a_scan_from_arrays_is_checked_and_cleaned_as_a_file_is() {
+    let points = vec![DVec3::ZERO, DVec3::X, DVec3::new(f64::NAN, 0.0, 0.0), DVec3::Y];
+    let scan = Scan::from_arrays(points.clone(), &[[0, 1, 3], [0, 2, 3]]).expect("valid");
+    // The point with a NaN goes, with the triangle that uses it; the indices follow.
+    assert_eq!(scan.points.len(), 3, "{scan:?}");
+    assert_eq!((scan.dropped_points, scan.dropped_faces), (1, 1), "{scan:?}");
+    assert_eq!(scan.triangles, vec![[0, 1, 2]], "{scan:?}");
+    let e = Scan::from_arrays(points, &[[0, 1, 4]]).expect_err("index past the points");
+    assert!(e.to_string().contains("triangle 0 uses vertex 4, and there are 4 points"), "{e}");
+    assert!(Scan::from_arrays(Vec::new(), &[]).is_err(), "no point");
+}

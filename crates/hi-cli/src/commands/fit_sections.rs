@@ -3,16 +3,16 @@
 //! contour, insertion, rotation alignment, the reversed traversal), with its per-section
 //! diagnostics and the measured problems printed as warnings.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
+use hi_fit::DistancesOut;
 use hi_geomimage::Stage;
 use hi_geomimage::sections::{
     ContourOrder, SectionFit, SectionOptions, SliceAxis, SliceReport, fit_sections,
 };
 use hi_mesh::export::{self, MeshFormat};
-use hi_scan::distance::Distances;
 use hi_scan::scan::read_scan;
 use hi_surface::MeshOptions;
 use serde::Serialize;
@@ -31,14 +31,14 @@ use hi_surface::{ParamRange, ParamWindow};
 /// [`Failure::Input`] for an unreadable scan, options that `hi fit --param sections` does not
 /// take, an input algorithm 1 rejects (naming the section or point), an unknown output
 /// extension, or an output that cannot be written.
-pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
-    let ext = args.output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+pub(crate) fn run(args: &FitArgs, scan_path: &Path, output: &Path) -> Result<Json, Failure> {
+    let ext = output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     let as_grid = ext.as_deref() == Some("json");
     if !as_grid {
-        MeshFormat::try_from_path(&args.output)
+        MeshFormat::try_from_path(output)
             .map_err(|e| Failure::input(format!("-o: {e} (or .json for the surface's grid)")))?;
     }
-    check_writable(&args.output, "-o")?;
+    check_writable(output, "-o")?;
     if let Some(report) = &args.report {
         check_writable(report, "--report")?;
     }
@@ -55,8 +55,8 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
             )));
         }
     }
-    let scan = read_scan(&args.scan)
-        .map_err(|e| Failure::input(about_file(&args.scan, &e.to_string())))?;
+    let scan =
+        read_scan(scan_path).map_err(|e| Failure::input(about_file(scan_path, &e.to_string())))?;
     let options = SectionOptions {
         axis: match args.axis {
             AxisName::X => SliceAxis::X,
@@ -72,13 +72,13 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
         ..SectionOptions::default()
     };
     let fitted = fit_sections(&scan.points, &options)
-        .map_err(|e| Failure::input(format!("{}: {e}", args.scan.display())))?;
+        .map_err(|e| Failure::input(format!("{}: {e}", scan_path.display())))?;
     for problem in &fitted.report.problems {
         eprintln!("{}", stderr_line(&format!("warning: {problem}")));
     }
     let files: Vec<PathBuf> = if as_grid {
-        write_file(&args.output, &grid_json(&fitted.surface.rows())?, false)?;
-        vec![args.output.clone()]
+        write_file(output, &grid_json(&fitted.surface.rows())?, false)?;
+        vec![output.to_owned()]
     } else {
         let u = fitted.covering_window();
         let (m, n) = (fitted.surface.m(), fitted.surface.n());
@@ -89,42 +89,18 @@ pub(crate) fn run(args: &FitArgs) -> Result<Json, Failure> {
             ..MeshOptions::default()
         };
         let mesh = fitted.surface.to_mesh(&mesh_options)?;
-        export::save(&mesh, &args.output)?
+        export::save(&mesh, output)?
     };
-    let summary = summary(args, &fitted, scan.dropped_points, &files)?;
+    let summary = summary(scan_path, &fitted, scan.dropped_points, &files)?;
     if let Some(path) = &args.report {
         write_file(path, &summary, true)?;
     }
     Ok(summary)
 }
 
-/// A one-way distance as printed: the library's summary and the relative numbers.
-#[derive(Serialize)]
-pub(crate) struct DistancesOut {
-    mean: f64,
-    rms: f64,
-    max: f64,
-    diagonal: f64,
-    /// Mean, RMS and max divided by the diagonal.
-    relative: [f64; 3],
-}
-
-impl DistancesOut {
-    /// The printed form of `d`.
-    pub(crate) fn of(d: &Distances) -> Self {
-        DistancesOut {
-            mean: d.mean,
-            rms: d.rms,
-            max: d.max,
-            diagonal: d.diagonal,
-            relative: d.relative(),
-        }
-    }
-}
-
 /// The summary of a fit by algorithm 1 as JSON.
 fn summary(
-    args: &FitArgs,
+    scan_path: &Path,
     fitted: &SectionFit,
     dropped: usize,
     files: &[PathBuf],
@@ -150,7 +126,7 @@ fn summary(
         files: Vec<String>,
     }
     json(&Summary {
-        scan: args.scan.display().to_string(),
+        scan: scan_path.display().to_string(),
         points: r.points,
         dropped_points: dropped,
         axis: r.axis,

@@ -127,6 +127,13 @@ pub(crate) fn json<T: Serialize + ?Sized>(value: &T) -> Result<Json, crate::erro
         .map_err(|e| crate::error::Failure::Output(io::Error::other(e.to_string())))
 }
 
+impl Json {
+    /// The JSON text, to embed in another output.
+    pub(crate) fn into_raw(self) -> Box<RawValue> {
+        self.0
+    }
+}
+
 impl Serialize for Json {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         self.0.serialize(serializer)

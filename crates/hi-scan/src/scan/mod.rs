@@ -158,6 +158,36 @@ pub struct Scan {
 }
 
 impl Scan {
+    /// A scan from points and triangles held in memory (a program's arrays rather than a file),
+    /// treated as a file's are: points with a NaN or infinite coordinate dropped and counted,
+    /// with the triangles that use them. `triangles` may be empty (a point set).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Read`] naming the first triangle with an index past the points, and
+    /// [`Error::TooFewPoints`] when no point is given.
+    pub fn from_arrays(points: Vec<DVec3>, triangles: &[[u32; 3]]) -> Result<Self, Error> {
+        if points.is_empty() {
+            return Err(Error::TooFewPoints { found: 0, needed: 1 });
+        }
+        let n = points.len();
+        if let Some((t, bad)) = triangles
+            .iter()
+            .enumerate()
+            .find_map(|(t, tri)| tri.iter().find(|&&k| k as usize >= n).map(|&k| (t, k)))
+        {
+            return Err(Error::Read {
+                format: None,
+                location: Location::None,
+                message: format!(
+                    "triangle {t} uses vertex {bad}, and there are {n} points (indices from 0)"
+                ),
+            });
+        }
+        let faces: Vec<Vec<u32>> = triangles.iter().map(|t| t.to_vec()).collect();
+        Ok(Self::assemble(points, None, &faces))
+    }
+
     /// Builds a scan from raw points, normals and polygon faces (indices into `points`), dropping
     /// non-finite points and the faces that use them, and triangulating polygons as fans.
     ///
