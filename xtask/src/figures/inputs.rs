@@ -161,7 +161,7 @@ impl Inputs {
         let text: String = files.iter().map(|f| self.sources[f].as_str()).collect();
         let crates = crates_below(&self.root, &crates_named(&text))?;
         for krate in &crates {
-            let dir = self.root.join("crates").join(&krate);
+            let dir = self.root.join("crates").join(krate);
             all.insert(format!("crates/{krate}/Cargo.toml"));
             for file in files_under(&dir.join("src"))? {
                 all.insert(self.relative(&file));

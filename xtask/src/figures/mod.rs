@@ -681,7 +681,7 @@ fn keys(root: &Path) -> Result<BTreeMap<String, String>> {
 /// Prints the time the figures took, and the ten slowest.
 fn print_times(times: &[(String, std::time::Duration)], total: std::time::Duration) {
     let mut slowest: Vec<&(String, std::time::Duration)> = times.iter().collect();
-    slowest.sort_by(|a, b| b.1.cmp(&a.1));
+    slowest.sort_by_key(|t| std::cmp::Reverse(t.1));
     let list: Vec<String> = slowest
         .iter()
         .take(10)
