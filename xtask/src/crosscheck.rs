@@ -141,7 +141,7 @@ pub(crate) fn run(root: &Path) -> Result<()> {
 fn check_figures(root: &Path, tmp: &Path, bar: &ProgressBar, items: &mut Vec<Item>) -> Result<()> {
     bar.set_message("drawing the figures");
     // The renders are left out: `cargo xtask figures --check` compares them.
-    let generated = figures::generate(false, figures::Renders::Skip, &[])?;
+    let generated = figures::generate(false, figures::Renders::Skip, None)?;
     let stale = figures::stale_files(&root.join("docs/figures"), &generated)?;
     let outputs = &generated.files;
     let glbs: Vec<&(String, Vec<u8>)> =

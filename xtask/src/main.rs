@@ -49,8 +49,12 @@ enum Task {
         no_renders: bool,
         /// Draw only these figures (their numbers, e.g. `5.37,5.38`), leaving the others' files
         /// as they are; the index and the gallery are written whole.
-        #[arg(long, value_delimiter = ',', value_name = "FIGURES")]
+        #[arg(long, value_delimiter = ',', value_name = "FIGURES", conflicts_with = "all")]
         only: Vec<String>,
+        /// Draw every figure, even those whose inputs (sources, data, compiler) hash the same as
+        /// when their files were written (docs/figures/inputs.json), which are otherwise left.
+        #[arg(long)]
+        all: bool,
     },
     /// Time our code and the peer programs side by side in the same run, into
     /// docs/performance.md.
@@ -125,9 +129,16 @@ fn main() -> ExitCode {
 fn run(task: Task) -> Result<()> {
     let root = project_root();
     match task {
-        Task::Figures { check, no_renders, only } => {
+        Task::Figures { check, no_renders, only, all } => {
             let renders = if no_renders { figures::Renders::Skip } else { figures::Renders::Draw };
-            figures::run(&root, check, renders, &only)
+            let select = if all {
+                figures::Select::All
+            } else if only.is_empty() {
+                figures::Select::Changed
+            } else {
+                figures::Select::Only(only)
+            };
+            figures::run(&root, check, renders, &select)
         }
         Task::Bench { topic, small, only } => {
             let options = bench::Options {

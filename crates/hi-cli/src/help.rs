@@ -269,8 +269,9 @@ Scene (JSON; file names relative to the scene file; schema: docs/schemas/scene.s
   camera: fov is the vertical field of view in degrees (default 40); up defaults to [0, 0, 1];
     without a camera the scene is framed from the front, above and to the side.
   Colours are sRGB in [0, 1]; intensities linear (a number or [r, g, b], default 1); the
-    direction of a directional light points towards the light; point lights fall off with the
-    squared distance. Without \"lights\", a key and a fill light; [] for none.
+    direction of a directional light points towards the light; a \"fill\" light is a
+    directional light that casts no shadow; point lights fall off with the squared distance.
+    Without \"lights\", a key and a fill light; [] for none.
   harmonic: a grid file (as 'hi surface example' writes) drawn by \"method\": krawczyk (interval
     Newton, the default; 'interval' is a deprecated alias), bisection (interval bisection),
     bezier (C1 Hermite patches) or mesh (256x256 quads); \"curvature\": \"gaussian\" or \"mean\"

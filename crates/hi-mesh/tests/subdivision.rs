@@ -83,6 +83,8 @@ fn closed_shapes() -> Vec<(&'static str, PolyMesh)> {
         ("star", PolyMesh::star()),
         ("quad-star", PolyMesh::quad_star()),
         ("tri-quad-star", PolyMesh::quad_star().triangulated().expect("fan")),
+        ("sharp-star", PolyMesh::sharp_star()),
+        ("tri-sharp-star", PolyMesh::sharp_star().triangulated().expect("fan")),
     ]
 }
 
@@ -110,6 +112,28 @@ fn the_quad_star_is_the_cube_with_six_outward_frusta() {
     assert_eq!(tri.n_edges(), 60 + 30, "one diagonal per quad");
     // The cube's corners have valence 3 + 3 (three cube edges, three spike edges), the tops 3.
     assert_eq!((star.valence(0), star.valence(8)), (6, 3), "valences");
+}
+
+#[test]
+fn the_sharp_star_is_the_cube_with_six_spikes_of_two_frusta() {
+    let star = PolyMesh::sharp_star();
+    assert!(star.is_closed(), "closed");
+    // Cube [−1, 1]³ (volume 8) plus six spikes: a frustum of height 0.9 between squares of
+    // sides 2 and 0.9, and one of height 2.3 between sides 0.9 and 0.2; a frustum's volume is
+    // h/3·(A₁ + A₂ + √(A₁A₂)).
+    let neck = 0.9 / 3.0 * (4.0 + 0.81 + 1.8);
+    let point = 2.3 / 3.0 * (0.81 + 0.04 + 0.18);
+    let expected = 8.0 + 6.0 * (neck + point);
+    let vol = signed_volume(&star);
+    assert!((vol - expected).abs() < 1e-12, "volume {vol}, expected {expected}");
+    let tri = star.triangulated().expect("fan");
+    assert!((signed_volume(&tri) - expected).abs() < 1e-12, "the fan keeps the volume");
+    assert_eq!(tri.n_edges(), 108 + 54, "one diagonal per quad");
+    // The tips reach 4.2 from the centre along the axes, the cube's corners √3.
+    let reach = star.positions().iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
+    assert!((reach - 4.2).abs() < 1e-12, "reach {reach}");
+    // The cube's corners have valence 6, the necks 4, the tips 3.
+    assert_eq!((star.valence(0), star.valence(8), star.valence(12)), (6, 4, 3), "valences");
 }
 
 #[test]

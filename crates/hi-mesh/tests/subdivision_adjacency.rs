@@ -41,7 +41,7 @@ fn open_triangles() -> [PolyMesh; 2] {
 fn every_step_builds_the_mesh_the_general_builder_builds() {
     let closed_triangles =
         [PolyMesh::octahedron(), PolyMesh::star(), PolyMesh::triangulated_cube()];
-    let closed_polygons = [PolyMesh::cube(), PolyMesh::quad_star()];
+    let closed_polygons = [PolyMesh::cube(), PolyMesh::quad_star(), PolyMesh::sharp_star()];
     let mut checked = 0;
     for scheme in Scheme::ALL.into_iter().chain([Scheme::Loop(LoopWeights::Warren)]) {
         let mut inputs: Vec<PolyMesh> = closed_triangles.to_vec();
@@ -66,6 +66,6 @@ fn every_step_builds_the_mesh_the_general_builder_builds() {
         }
     }
     // Seven schemes on three closed triangle meshes; Loop's two on two open ones;
-    // Catmull-Clark on five more, Doo-Sabin on two.
-    assert_eq!(checked, 2 * (7 * 3 + 2 * 2 + 5 + 2));
+    // Catmull-Clark on six more, Doo-Sabin on three.
+    assert_eq!(checked, 2 * (7 * 3 + 2 * 2 + 6 + 3));
 }

@@ -79,12 +79,22 @@ impl SceneObject {
 
 /// A light source; intensities are linear RGB.
 ///
-/// Its `serde` form (feature `serde`) is `{"type": "directional", "direction", "intensity"}` or
-/// `{"type": "point", "position", "intensity"}`, the intensity a number (grey) or `[r, g, b]`.
+/// Its `serde` form (feature `serde`) is `{"type": "directional", "direction", "intensity"}`,
+/// `{"type": "fill", "direction", "intensity"}` or `{"type": "point", "position", "intensity"}`,
+/// the intensity a number (grey) or `[r, g, b]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Light {
     /// Light from a direction (the sun).
     Directional {
+        /// Direction towards the light (need not be unit length).
+        direction: DVec3,
+        /// Irradiance on a surface facing the light.
+        intensity: [f32; 3],
+    },
+    /// Light from a direction that casts no shadow: the fill light of a studio set-up, which
+    /// lightens the side the key light leaves dark without drawing a second shadow (one
+    /// light, one shadow). It sends no shadow rays.
+    Fill {
         /// Direction towards the light (need not be unit length).
         direction: DVec3,
         /// Irradiance on a surface facing the light.
@@ -153,7 +163,7 @@ pub(crate) fn check_material(m: &Material) -> Result<(), Error> {
 /// intensity non-negative.
 pub(crate) fn check_light(light: &Light) -> Result<(), Error> {
     match *light {
-        Light::Directional { direction, intensity } => {
+        Light::Directional { direction, intensity } | Light::Fill { direction, intensity } => {
             check_finite("light direction", direction)?;
             if direction.length_squared() == 0.0 {
                 return Err(Error::InvalidValue {
@@ -324,7 +334,8 @@ impl Scene {
         let mut blocked = false;
         for light in &self.lights {
             let (l, dist, intensity) = match *light {
-                Light::Directional { direction, intensity } => {
+                Light::Directional { direction, intensity }
+                | Light::Fill { direction, intensity } => {
                     (direction.normalize(), f64::INFINITY, intensity.map(f64::from))
                 }
                 Light::Point { position, intensity } => {
@@ -347,11 +358,13 @@ impl Scene {
             } else {
                 f64::INFINITY
             };
-            let shadow = Ray { origin, dir: l, t_min: 0.0, t_max };
-            n_shadow += 1;
-            if self.occluded(&shadow) {
-                blocked = true;
-                continue;
+            if !matches!(light, Light::Fill { .. }) {
+                let shadow = Ray { origin, dir: l, t_min: 0.0, t_max };
+                n_shadow += 1;
+                if self.occluded(&shadow) {
+                    blocked = true;
+                    continue;
+                }
             }
             let h = (l + view).normalize_or_zero();
             let spec = f64::from(material.specular)

@@ -228,6 +228,15 @@ enum LightForm {
         #[serde(default = "default_intensity")]
         intensity: Intensity,
     },
+    /// Light from a direction that casts no shadow (a fill light).
+    Fill {
+        /// Direction towards the light [x, y, z] (not zero).
+        #[cfg_attr(feature = "schemars", schemars(with = "[f64; 3]"))]
+        direction: DVec3,
+        /// Linear irradiance on a surface facing the light: a number or [r, g, b]; default 1.
+        #[serde(default = "default_intensity")]
+        intensity: Intensity,
+    },
     /// Light from a point, falling off with the squared distance.
     Point {
         /// Position of the light [x, y, z].
@@ -246,6 +255,9 @@ impl Serialize for Light {
             Light::Directional { direction, intensity } => {
                 LightForm::Directional { direction, intensity: Intensity::Rgb(intensity) }
             }
+            Light::Fill { direction, intensity } => {
+                LightForm::Fill { direction, intensity: Intensity::Rgb(intensity) }
+            }
             Light::Point { position, intensity } => {
                 LightForm::Point { position, intensity: Intensity::Rgb(intensity) }
             }
@@ -259,6 +271,9 @@ impl<'de> Deserialize<'de> for Light {
         let light = match LightForm::deserialize(deserializer)? {
             LightForm::Directional { direction, intensity } => {
                 Light::Directional { direction, intensity: intensity.rgb() }
+            }
+            LightForm::Fill { direction, intensity } => {
+                Light::Fill { direction, intensity: intensity.rgb() }
             }
             LightForm::Point { position, intensity } => {
                 Light::Point { position, intensity: intensity.rgb() }
@@ -366,8 +381,16 @@ mod tests {
         let white: Light =
             serde_json::from_str(r#"{"type":"directional","direction":[0,0,1]}"#).unwrap();
         assert_eq!(white, Light::Directional { direction: DVec3::Z, intensity: [1.0; 3] });
+        let fill: Light =
+            serde_json::from_str(r#"{"type":"fill","direction":[0,0,2],"intensity":0.3}"#).unwrap();
+        assert_eq!(fill, Light::Fill { direction: DVec3::new(0.0, 0.0, 2.0), intensity: [0.3; 3] });
+        assert_eq!(
+            serde_json::from_str::<Light>(&serde_json::to_string(&fill).unwrap()).unwrap(),
+            fill
+        );
         for bad in [
             r#"{"type":"directional","direction":[0,0,0]}"#,
+            r#"{"type":"fill","direction":[0,0,0]}"#,
             r#"{"type":"point","position":[0,0,0],"intensity":-1}"#,
             r#"{"type":"spot","position":[0,0,0]}"#,
         ] {

@@ -141,6 +141,42 @@ fn shadows_fall_where_they_should() {
     assert!(out.counts.shadowed > 0, "the small sphere shadows the large one");
 }
 
+/// A fill light lights as a directional one does and casts no shadow: alone with a convex
+/// sphere (which shadows nothing) the two give the same image; with a second sphere above it
+/// the directional light's shadow is there and the fill light's is not.
+#[test]
+fn a_fill_light_lights_without_shadows() {
+    let above = hi_surface::HarmonicSurface::new(
+        sphere(0.3)
+            .rows()
+            .into_iter()
+            .map(|r| r.into_iter().map(|p| p + DVec3::new(0.0, 0.0, 2.0)).collect())
+            .collect(),
+    );
+    let camera =
+        Camera::try_new(DVec3::new(0.0, -4.0, 4.0), DVec3::new(0.0, 0.0, 0.5), DVec3::Z, 0.9)
+            .unwrap();
+    let draw = |objects: Vec<SceneObject>, light: Light| {
+        let scene = Scene::try_new(objects, vec![light], [0.0; 3]).unwrap();
+        render(&scene, &camera, &small(40, 40, 1), None).unwrap()
+    };
+    let large = || SceneObject::new(harmonic(sphere(1.0), IntervalMethod::Krawczyk));
+    let fill = Light::Fill { direction: DVec3::Z, intensity: [1.0; 3] };
+    let alone_sun = draw(vec![large()], sun(DVec3::Z));
+    let alone_fill = draw(vec![large()], fill);
+    assert_eq!(alone_sun.pixels, alone_fill.pixels, "the same light where nothing is shadowed");
+    assert_eq!(alone_fill.counts.shadow, 0, "a fill light casts no shadow rays");
+    let pair =
+        || vec![large(), SceneObject::new(harmonic(above.clone(), IntervalMethod::Krawczyk))];
+    let (with_sun, with_fill) = (draw(pair(), sun(DVec3::Z)), draw(pair(), fill));
+    assert!(with_sun.counts.shadowed > 0, "the small sphere shadows the large one");
+    assert_eq!(with_fill.counts.shadowed, 0);
+    let brightness = |r: &hi_raytrace::Rendering| -> u64 {
+        r.pixels.iter().flatten().map(|&c| u64::from(c)).sum()
+    };
+    assert!(brightness(&with_fill) > brightness(&with_sun), "the shadow is lit");
+}
+
 #[test]
 fn curvature_colours_differ_across_the_torus() {
     let object = HarmonicObject::try_new(torus(2.0, 1.0), &HarmonicOptions::default())

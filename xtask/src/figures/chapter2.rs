@@ -635,11 +635,18 @@ fn helix(title: &str) -> Result<Vec<u8>> {
     let top = h.eval(1.0).z;
     let kappa = h.curvature(0.3).ok_or_else(|| anyhow::anyhow!("helix singular"))?;
     let tau = h.torsion(0.3).ok_or_else(|| anyhow::anyhow!("helix has no torsion"))?;
-    let axes = [(DVec3::X * 1.6, "x"), (DVec3::Y * 1.6, "y"), (DVec3::Z * (top + 0.5), "z")];
+    // The x and y axes reach past the helix (radius a = 1) so that their names stand clear of
+    // it, each written beyond its axis's end.
+    let axes = [(DVec3::X * 2.2, "x"), (DVec3::Y * 2.2, "y"), (DVec3::Z * (top + 0.5), "z")];
     let mut plot = Plot::projection(title);
     for (end, name) in axes {
-        plot =
-            plot.faint(vec![view(DVec3::ZERO), view(end)]).note(view(end), name, (8.0, 8.0), GREY);
+        let out = view(end).normalize_or_zero() * 11.0;
+        plot = plot.faint(vec![view(DVec3::ZERO), view(end)]).note(
+            view(end),
+            name,
+            (out.x, out.y),
+            GREY,
+        );
     }
     plot.curve(sample(0.0, 1.0, SAMPLES, |t| view(h.eval(t))), Pen::solid(BLUE), None)
         .note(

@@ -4,7 +4,7 @@
 //! survey of surfaces and subdivision (§4.2–§4.5): Bézier patches, a Bézier triangle, and
 //! Chaikin's and the 4-point scheme on a closed polygon.
 
-use anyhow::{Result, ensure};
+use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_bezier::{BezierCurve, BezierPatch, TriangularPatch};
 use hi_compare::corner_cutting::{DEFAULT_FOUR_POINT_WEIGHT, chaikin_step, four_point_step};
@@ -16,9 +16,9 @@ use hi_surface::torus;
 use super::data;
 use super::glb::{flat_with_edges, glb, glb_with_edges};
 use super::plot::{
-    BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, render_row, sample,
+    BLUE, GREY, INK, Legend, Marker, Oblique, Pen, Plot, VERMILION, names, render_grid, sample,
 };
-use super::scans::{ensure_outward, head_scan};
+use super::scans::ensure_outward;
 use super::subdivision::head_with;
 use super::{Figure, Format, Panel};
 
@@ -28,11 +28,13 @@ const SAMPLES: usize = 600;
 /// Samples per side of a patch in the meshes of figures 4.2 and 4.4.
 const PATCH_SAMPLES: usize = 24;
 
-/// Every how many scan points figure 1.3 keeps.
-const SCAN_STRIDE: usize = 20;
+/// Hoppe's point set of figure 1.3, in `fixtures/models`.
+const HOPPE_POINTS: &str = "cactus.pts";
 
-/// The view of the scan in figure 1.3: the face (+y) turned towards the viewer.
-const SCAN_VIEW: Oblique = Oblique { azimuth: 210.0, elevation: 15.0 };
+/// The view of Hoppe's cactus in figure 1.3: seen along x, its arms (along y, z up) across the
+/// picture, from a little above; the trunk and arms are about x = ½, so the nearer half of
+/// the points is the surface facing the viewer.
+const HOPPE_VIEW: Oblique = Oblique { azimuth: 90.0, elevation: 20.0 };
 
 /// The control points x₀ … x₃ of the cubic of figure 1.2 (the thesis labels four).
 const CUBIC: [[f64; 2]; 4] = [[0.0, 0.0], [0.9, 2.6], [3.3, 2.8], [4.2, 0.2]];
@@ -85,20 +87,30 @@ fn bezier_curve(title: &str) -> Result<Vec<u8>> {
         .render()
 }
 
-/// Figure 1.3: every [`SCAN_STRIDE`]-th point of the head's scan, projected; the nearer half
+/// Figure 1.3: Hoppe's cactus point set, every point projected; the half nearer the viewer
 /// dark, the farther half grey.
 fn point_set(title: &str) -> Result<Vec<u8>> {
-    let scan = head_scan(false)?;
-    let kept: Vec<DVec3> = scan.points.iter().step_by(SCAN_STRIDE).copied().collect();
-    ensure!(kept.len() >= 2000, "only {} points kept", kept.len());
-    let (sa, ca) = SCAN_VIEW.azimuth.to_radians().sin_cos();
-    let (near, far): (Vec<DVec3>, Vec<DVec3>) =
-        kept.iter().partition(|p| p.x * sa + p.y * ca < 0.0);
-    let project =
-        |points: &[DVec3]| -> Vec<DVec2> { points.iter().map(|&p| SCAN_VIEW.project(p)).collect() };
+    let path = crate::project_root().join("fixtures/models").join(HOPPE_POINTS);
+    let scan =
+        hi_scan::scan::read_scan(&path).with_context(|| format!("reading {HOPPE_POINTS}"))?;
+    ensure!(
+        scan.points.len() == 3318 && scan.triangles.is_empty(),
+        "{HOPPE_POINTS}: {} points and {} triangles, not Hoppe's 3 318 points alone",
+        scan.points.len(),
+        scan.triangles.len()
+    );
+    let (sa, ca) = HOPPE_VIEW.azimuth.to_radians().sin_cos();
+    let depth = |p: &DVec3| p.x * sa + p.y * ca;
+    let mut depths: Vec<f64> = scan.points.iter().map(depth).collect();
+    depths.sort_by(f64::total_cmp);
+    let middle = depths[depths.len() / 2];
+    let (near, far): (Vec<DVec3>, Vec<DVec3>) = scan.points.iter().partition(|p| depth(p) < middle);
+    let project = |points: &[DVec3]| -> Vec<DVec2> {
+        points.iter().map(|&p| HOPPE_VIEW.project(p)).collect()
+    };
     Plot::projection(title)
-        .points(&project(&far), Marker::small(GREY), Some("far side"))
-        .points(&project(&near), Marker::small(BLUE), Some("near side"))
+        .points(&project(&far), Marker::dot(GREY), Some("far half"))
+        .points(&project(&near), Marker::dot(BLUE), Some("near half"))
         .legend(Legend::LowerRight)
         .render()
 }
@@ -266,14 +278,21 @@ fn stages_polygon() -> Vec<DVec2> {
     data::plane(&data::HEPTAGON)
 }
 
-/// Figures 4.6 and 4.7: the polygon and three steps of `step`, side by side.
+/// Size in pixels of a panel of figures 4.6 and 4.7: smaller than a plane plot on its own, so
+/// that the text stays legible when the two by two grid is printed at the width of a page.
+const STAGE_PANEL: (u32, u32) = (400, 370);
+
+/// Figures 4.6 and 4.7: the polygon and three steps of `step`, two by two (in one row the
+/// four panels would be too small to read on a page).
 fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
     let polygon = stages_polygon();
-    let mut plots = vec![Plot::plane("control polygon").polygon(&polygon, true).points(
-        &polygon,
-        Marker::point(INK),
-        None,
-    )];
+    let (w, h) = STAGE_PANEL;
+    let mut plots =
+        vec![Plot::plane("control polygon").sized(w, h).polygon(&polygon, true).points(
+            &polygon,
+            Marker::point(INK),
+            None,
+        )];
     let mut current = polygon.clone();
     for k in 1..=3 {
         current = step(&current);
@@ -281,6 +300,7 @@ fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
         closed.push(current[0]);
         plots.push(
             Plot::plane(&format!("{k} step{}", if k == 1 { "" } else { "s" }))
+                .sized(w, h)
                 .polygon(&polygon, true)
                 .curve(closed, Pen::solid(BLUE), None)
                 .points(&current, Marker::small(VERMILION), None)
@@ -288,7 +308,7 @@ fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
         );
     }
     let refs: Vec<&Plot> = plots.iter().collect();
-    render_row(title, &refs)
+    render_grid(title, &refs, 2)
 }
 
 /// One step of Chaikin's scheme on a closed polygon.
@@ -327,10 +347,11 @@ pub(crate) const FIGURES: &[Figure] = &[
     Figure {
         number: (1, 3),
         caption: "An unorganised set of points provided by Hoppe [35]",
-        drawn: "Every 20th of the 60 000 points of the head's scan (3 000 points), projected orthographically, the \
-                half nearer the viewer blue and the farther half grey.",
-        data: "stand-in for Hoppe's point set (not available): the scan of figure 5.10 (points on the head \
-               stand-in, ±0.3% noise).",
+        drawn: "All 3 318 points of Hoppe's cactus, projected orthographically (its arms across the picture, seen \
+                a little from above), the half nearer the viewer blue and the farther half grey.",
+        data: "Hoppe's own point set: the cactus of Hoppe et al., \"Surface reconstruction from unorganized points\" \
+               (1992), `fixtures/models/cactus.pts` (MIT, from his Mesh-processing-library). The thesis does not say \
+               which of Hoppe's sets it shows; the mannequin and Spock scans it uses in chapter 5 are not available.",
         format: Format::Svg,
         views: &[],
         panels: &[Panel { suffix: "", title: "", draw: point_set }],

@@ -30,11 +30,13 @@
 //! add a [`Figure`] to that module's `FIGURES`; the files, the index page `README.md` and the
 //! check follow from the registry.
 //!
-//! Every file is a pure function of the code: `--check` regenerates everything in memory and
-//! fails, naming the files, if anything committed differs, is missing or is left over. The test
-//! `committed_figures_are_current` and `cargo xtask crosscheck` do the same for every file but
-//! the renders (1200×900, most of the work: minutes in a release build), whose presence they
-//! check; CI runs `--check` as well.
+//! Every file is a pure function of the code: `--check` regenerates in memory and fails, naming
+//! the files, if anything committed differs, is missing or is left over. Both draw only the
+//! figures whose inputs changed ([`inputs`]: the sources a figure can reach, its data and the
+//! compiler, hashed, against the keys recorded in `docs/figures/inputs.json`) or whose files are
+//! missing; `--all` draws every one. The test `committed_figures_are_current` and `cargo xtask
+//! crosscheck` regenerate every file but the renders (1200×900, most of the work: minutes in a
+//! release build), whose presence they check; CI runs `--check` as well.
 
 mod basis;
 mod bezier;
@@ -46,6 +48,7 @@ mod differences;
 mod fitting;
 pub(crate) mod glb;
 mod html;
+mod inputs;
 mod intro;
 mod masks;
 mod nonuniform;
@@ -201,27 +204,31 @@ impl Figure {
     }
 }
 
+/// The topic modules (by file or folder name) and their figures.
+fn modules() -> [(&'static str, &'static [Figure]); 16] {
+    [
+        ("basis", basis::FIGURES),
+        ("bezier", bezier::FIGURES),
+        ("bspline", bspline::FIGURES),
+        ("chapter2", chapter2::FIGURES),
+        ("curves", curves::FIGURES),
+        ("intro", intro::FIGURES),
+        ("masks", masks::FIGURES),
+        ("nonuniform", nonuniform::FIGURES),
+        ("polygons", polygons::FIGURES),
+        ("renders", renders::FIGURES),
+        ("scans", scans::FIGURES),
+        ("surfaces", surfaces::FIGURES),
+        ("subdivision", subdivision::FIGURES),
+        ("fitting", fitting::FIGURES),
+        ("sections", sections::FIGURES),
+        ("theorems", theorems::FIGURES),
+    ]
+}
+
 /// Every figure, in the thesis's order.
 fn registry() -> Vec<Figure> {
-    let mut all = [
-        basis::FIGURES,
-        bezier::FIGURES,
-        bspline::FIGURES,
-        chapter2::FIGURES,
-        curves::FIGURES,
-        intro::FIGURES,
-        masks::FIGURES,
-        nonuniform::FIGURES,
-        polygons::FIGURES,
-        renders::FIGURES,
-        scans::FIGURES,
-        surfaces::FIGURES,
-        subdivision::FIGURES,
-        fitting::FIGURES,
-        sections::FIGURES,
-        theorems::FIGURES,
-    ]
-    .concat();
+    let mut all: Vec<Figure> = modules().iter().flat_map(|(_, f)| f.iter().copied()).collect();
     all.sort_by_key(|f| f.number);
     all
 }
@@ -258,17 +265,25 @@ pub(crate) struct Generated {
     pub(crate) files: Vec<Output>,
     /// The renders not drawn.
     pub(crate) skipped: Vec<String>,
+    /// The time each figure (or table) took, by label.
+    pub(crate) times: Vec<(String, std::time::Duration)>,
 }
 
-/// Draws every figure (or those `only` names, when it names any: the others' files count as
+/// Draws every figure (or, with `Some`, those `only` names: the others' files count as
 /// skipped) and the index page, in memory, with a progress bar if `progress` and standard error
 /// is a terminal; the renders only with [`Renders::Draw`].
-pub(crate) fn generate(progress: bool, renders: Renders, only: &[String]) -> Result<Generated> {
+pub(crate) fn generate(
+    progress: bool,
+    renders: Renders,
+    only: Option<&[String]>,
+) -> Result<Generated> {
     let figures = registry();
-    if let Some(unknown) = only.iter().find(|o| !figures.iter().any(|f| f.label() == **o)) {
+    if let Some(unknown) =
+        only.unwrap_or_default().iter().find(|o| !figures.iter().any(|f| f.label() == **o))
+    {
         bail!("--only {unknown}: no such figure (figures are numbered as 1.3 or 5.37)");
     }
-    let chosen = |f: &Figure| only.is_empty() || only.iter().any(|o| *o == f.label());
+    let chosen = |f: &Figure| only.is_none_or(|only| only.iter().any(|o| *o == f.label()));
     let count: usize =
         figures.iter().filter(|f| chosen(f)).map(|f| f.panels.len() + f.views.len()).sum();
     let bar = if progress && std::io::stderr().is_terminal() {
@@ -280,7 +295,9 @@ pub(crate) fn generate(progress: bool, renders: Renders, only: &[String]) -> Res
     };
     let mut outputs = Vec::with_capacity(count + 1);
     let mut skipped = Vec::new();
+    let mut times = Vec::new();
     for figure in &figures {
+        let start = std::time::Instant::now();
         if !chosen(figure) {
             skipped.extend(figure.entries().into_iter().flat_map(|(_, file, shown, model)| {
                 if model { vec![file, shown] } else { vec![file] }
@@ -334,12 +351,15 @@ pub(crate) fn generate(progress: bool, renders: Renders, only: &[String]) -> Res
             }
             bar.inc(1);
         }
+        times.push((figure.label(), start.elapsed()));
     }
     let mut computed = Vec::new();
     for table in tables() {
+        let start = std::time::Instant::now();
         bar.set_message(format!("table {}", table.anchor));
         let body = (table.make)().with_context(|| format!("computing table {}", table.anchor))?;
         computed.push((table, body));
+        times.push((format!("table {}", table.anchor), start.elapsed()));
     }
     bar.finish_and_clear();
     outputs.push((INDEX.to_owned(), index(&figures, &computed).into_bytes()));
@@ -347,7 +367,7 @@ pub(crate) fn generate(progress: bool, renders: Renders, only: &[String]) -> Res
     outputs
         .push((html::GALLERY.to_owned(), html::gallery(&figures, &computed, &sizes).into_bytes()));
     outputs.push((html::VIEWER.to_owned(), html::VIEWER_PAGE.as_bytes().to_vec()));
-    Ok(Generated { files: outputs, skipped })
+    Ok(Generated { files: outputs, skipped, times })
 }
 
 /// The width and height of every image the gallery shows, from its bytes among `outputs`, or
@@ -547,9 +567,42 @@ fn orphans(dir: &Path, generated: &Generated) -> Result<Vec<String>> {
 ///
 /// If a figure fails to draw, a file cannot be read or written, or (with `check`) a file is
 /// stale; the error names the stale files.
-pub(crate) fn run(root: &Path, check: bool, renders: Renders, only: &[String]) -> Result<()> {
+pub(crate) fn run(root: &Path, check: bool, renders: Renders, select: &Select) -> Result<()> {
     let dir = root.join(OUT_DIR);
+    let start = std::time::Instant::now();
+    let keys = keys(root)?;
+    let recorded = inputs::recorded(&dir.join(inputs::MANIFEST));
+    let changed: Vec<String> = registry()
+        .iter()
+        .filter(|f| {
+            recorded.get(&f.label()) != keys.get(&f.label())
+                || f.entries().iter().any(|(_, file, shown, _)| {
+                    !dir.join(file).is_file() || !dir.join(shown).is_file()
+                })
+        })
+        .map(Figure::label)
+        .collect();
+    let only: Option<&[String]> = match select {
+        Select::Changed if renders == Renders::Draw => {
+            let count = registry().len();
+            println!(
+                "figures: {} of {count} unchanged since {OUT_DIR}/{} (the same inputs), {} to draw{}",
+                count - changed.len(),
+                inputs::MANIFEST,
+                changed.len(),
+                if changed.is_empty() {
+                    String::new()
+                } else {
+                    format!(": {}", changed.join(", "))
+                }
+            );
+            Some(&changed)
+        }
+        Select::Only(only) => Some(only),
+        _ => None,
+    };
     let generated = generate(true, renders, only)?;
+    print_times(&generated.times, start.elapsed());
     if check {
         let stale = stale_files(&dir, &generated)?;
         if !stale.is_empty() {
@@ -569,6 +622,22 @@ pub(crate) fn run(root: &Path, check: bool, renders: Renders, only: &[String]) -
         return Ok(());
     }
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
+    // The keys of the figures drawn whole now (a figure with renders counts only when they
+    // were drawn); the others keep the key they had.
+    let drawn_whole = |f: &Figure| {
+        only.is_none_or(|o| o.contains(&f.label()))
+            && (renders == Renders::Draw
+                || (f.format != Format::Glb && f.format != Format::Webp && f.views.is_empty()))
+    };
+    let mut manifest = recorded.clone();
+    for f in registry().iter().filter(|f| drawn_whole(f)) {
+        if let Some(key) = keys.get(&f.label()) {
+            manifest.insert(f.label(), key.clone());
+        }
+    }
+    manifest.retain(|label, _| keys.contains_key(label));
+    std::fs::write(dir.join(inputs::MANIFEST), inputs::manifest(&manifest))
+        .context("writing the manifest of the figures' inputs")?;
     let mut written = 0;
     for (name, bytes) in &generated.files {
         let path = dir.join(name);
@@ -583,6 +652,42 @@ pub(crate) fn run(root: &Path, check: bool, renders: Renders, only: &[String]) -
     }
     println!("figures: {} files in {OUT_DIR}, {written} rewritten", generated.files.len());
     Ok(())
+}
+
+/// Which figures [`run`] draws.
+#[derive(Clone, Debug)]
+pub(crate) enum Select {
+    /// Those whose inputs changed since the manifest was written, or whose files are missing
+    /// (every figure with [`Renders::Skip`], which records no render).
+    Changed,
+    /// Every figure.
+    All,
+    /// These figures (their numbers).
+    Only(Vec<String>),
+}
+
+/// The key of every figure's inputs, by number ([`inputs`]).
+fn keys(root: &Path) -> Result<BTreeMap<String, String>> {
+    let mut inputs = inputs::Inputs::read(root)?;
+    let mut keys = BTreeMap::new();
+    for (module, figures) in modules() {
+        for figure in figures {
+            keys.insert(figure.label(), inputs.key(figure, module)?);
+        }
+    }
+    Ok(keys)
+}
+
+/// Prints the time the figures took, and the ten slowest.
+fn print_times(times: &[(String, std::time::Duration)], total: std::time::Duration) {
+    let mut slowest: Vec<&(String, std::time::Duration)> = times.iter().collect();
+    slowest.sort_by(|a, b| b.1.cmp(&a.1));
+    let list: Vec<String> = slowest
+        .iter()
+        .take(10)
+        .map(|(label, time)| format!("{label} {:.1} s", time.as_secs_f64()))
+        .collect();
+    println!("figures: drawn in {:.0} s; the slowest: {}", total.as_secs_f64(), list.join(", "));
 }
 
 #[cfg(test)]
@@ -607,7 +712,7 @@ mod tests {
     fn committed_figures_are_current() {
         // Every file but the renders, which `cargo xtask figures --check` compares.
         let dir = crate::project_root().join(OUT_DIR);
-        let generated = generate(false, Renders::Skip, &[]).expect("every figure draws");
+        let generated = generate(false, Renders::Skip, None).expect("every figure draws");
         assert!(generated.skipped.len() > 100, "{} renders skipped", generated.skipped.len());
         let stale = stale_files(&dir, &generated).expect("docs/figures is readable");
         assert!(stale.is_empty(), "stale figures, run `cargo xtask figures`: {stale:?}");

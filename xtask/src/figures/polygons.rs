@@ -535,7 +535,7 @@ fn curvature(title: &str, polygon: Polygon, method: Method, partner: Method) -> 
         let near_right = graph.iter().rev().take(CURVATURE_SAMPLES / 8).any(|&(_, k)| {
             k.is_some_and(|k| (axis.map(k) - value).abs() < 0.08 * (y1 - y0 + 2.0 * pad))
         });
-        if near_right { 0.1 } else { 0.9 }
+        if near_right { 0.14 } else { 0.86 }
     };
     let (hi_y, lo_y) = (axis.map(hi), axis.map(lo));
     if constant {
@@ -549,15 +549,24 @@ fn curvature(title: &str, polygon: Polygon, method: Method, partner: Method) -> 
         plot = plot
             .hguide(hi_y)
             .hguide(lo_y)
-            .note(DVec2::new(at_x(hi_y), hi_y), &format!("max {}", fixed(hi)), (0.0, 11.0), INK)
-            .note(DVec2::new(at_x(lo_y), lo_y), &format!("min {}", fixed(lo)), (0.0, -11.0), INK);
+            .note(DVec2::new(at_x(hi_y), hi_y), &format!("max κ = {}", fixed(hi)), (0.0, 11.0), INK)
+            .note(
+                DVec2::new(at_x(lo_y), lo_y),
+                &format!("min κ = {}", fixed(lo)),
+                (0.0, -11.0),
+                INK,
+            );
     }
     render_row(title, &[&shape, &plot])
 }
 
 /// A curvature value for a label: three significant digits, at most two decimals for large
-/// values.
+/// values, and as "9.01·10⁵" from 10⁴ on (a near-cusp) rather than a row of digits.
 fn fixed(v: f64) -> String {
+    if v.abs() >= 1e4 {
+        let s = scientific(v, 2);
+        return if s.starts_with('-') { s.replacen('-', "−", 1) } else { s };
+    }
     let digits = if v.abs() >= 100.0 {
         0
     } else if v.abs() >= 10.0 {
@@ -589,20 +598,26 @@ fn near_cusp(curve: &dyn ParamCurve<DVec2>) -> Result<Option<f64>> {
 
 /// `v` with 4 decimals, or as "2.5·10⁶" from 10⁴ on.
 fn number(v: f64) -> String {
-    if v.abs() >= 1e4 { scientific(v) } else { format!("{v:.4}") }
+    if v.abs() >= 1e4 { scientific(v, 1) } else { format!("{v:.4}") }
 }
 
-/// `v` as "2.5·10⁶".
-fn scientific(v: f64) -> String {
+/// `v` as "2.5·10⁶", the mantissa with `decimals` decimals.
+fn scientific(v: f64, decimals: usize) -> String {
     const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    let exponent = v.abs().log10().floor() as i32;
-    let mantissa = v / 10f64.powi(exponent);
+    let mut exponent = v.abs().log10().floor() as i32;
+    let mut mantissa = v / 10f64.powi(exponent);
+    // 9.996·10⁵ to two decimals is 1.00·10⁶, not 10.00·10⁵.
+    let unit = 10f64.powi(i32::try_from(decimals).unwrap_or(i32::MAX).min(15));
+    if (mantissa.abs() * unit).round() >= 10.0 * unit {
+        exponent += 1;
+        mantissa /= 10.0;
+    }
     let power: String = exponent
         .to_string()
         .bytes()
         .map(|d| if d == b'-' { '⁻' } else { DIGITS[usize::from(d - b'0')] })
         .collect();
-    format!("{mantissa:.1}·10{power}")
+    format!("{mantissa:.decimals$}·10{power}")
 }
 
 /// The fairness table: one row per polygon and curve.
@@ -658,6 +673,16 @@ mod tests {
             let g = fairness(other.as_ref(), &points, FAIRNESS_SAMPLES).expect("fairness");
             assert!(g.max_curvature > 1.0 && g.monotone_pieces > 1, "{method:?}: {g:?}");
         }
+    }
+
+    #[test]
+    fn curvature_labels_are_short() {
+        assert_eq!(fixed(901_314.2), "9.01·10⁵");
+        assert_eq!(fixed(-12_345.0), "−1.23·10⁴");
+        assert_eq!(fixed(999_700.0), "1.00·10⁶");
+        assert_eq!(fixed(-12.61), "−12.6");
+        assert_eq!(fixed(0.784), "0.78");
+        assert_eq!(fixed(250.4), "250");
     }
 
     #[test]

@@ -93,7 +93,7 @@ fn lights(view: DVec3) -> Vec<Light> {
     let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
     vec![
         Light::Directional { direction: view + DVec3::Z * 1.5 + side, intensity: [0.85; 3] },
-        Light::Directional { direction: view - side, intensity: [0.3; 3] },
+        Light::Fill { direction: view - side, intensity: [0.3; 3] },
     ]
 }
 

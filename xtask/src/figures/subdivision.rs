@@ -30,9 +30,9 @@ enum Shape {
     Cube,
     /// [`PolyMesh::triangulated_cube`]: twelve triangles.
     TriCube,
-    /// [`PolyMesh::quad_star`]: thirty quads.
+    /// [`PolyMesh::sharp_star`]: fifty-four quads.
     Star,
-    /// The quad star split into sixty triangles ([`PolyMesh::triangulated`]).
+    /// The sharp star split into 108 triangles ([`PolyMesh::triangulated`]).
     TriStar,
     /// [`head`]: a coarse closed triangle mesh of a head.
     Head,
@@ -43,8 +43,8 @@ impl Shape {
         Ok(match self {
             Shape::Cube => PolyMesh::cube(),
             Shape::TriCube => PolyMesh::triangulated_cube(),
-            Shape::Star => PolyMesh::quad_star(),
-            Shape::TriStar => PolyMesh::quad_star().triangulated()?,
+            Shape::Star => PolyMesh::sharp_star(),
+            Shape::TriStar => PolyMesh::sharp_star().triangulated()?,
             Shape::Head => head()?,
         })
     }
@@ -215,9 +215,9 @@ const CUBE_DATA: &str = "the cube [0, 1]³ of six quads (`PolyMesh::cube`); tria
     into (a, b, c), (a, c, d) (`PolyMesh::triangulated_cube`).";
 
 /// The data line of the star figures.
-const STAR_DATA: &str = "stand-in (the thesis does not give its star): the cube [−1, 1]³ with a tapered spike on \
-    each face, 30 quads (`PolyMesh::quad_star`); triangulated: each quad split into a fan of two triangles, 60 \
-    triangles (`PolyMesh::triangulated`).";
+const STAR_DATA: &str = "stand-in (the thesis does not give its star): the cube [−1, 1]³ with a long spike on \
+    each face, narrowing at a neck 0.9 out to a tip 3.2 out, 54 quads (`PolyMesh::sharp_star`); triangulated: each \
+    quad split into a fan of two triangles, 108 triangles (`PolyMesh::triangulated`).";
 
 /// A "first four steps" figure.
 macro_rules! steps {
@@ -304,7 +304,7 @@ macro_rules! limits_both {
 
 /// The data line of the limit figures.
 const BOTH_DATA: &str =
-    "the cube and the star of the figures before (the star is a stand-in: `PolyMesh::quad_star`).";
+    "the cube and the star of the figures before (the star is a stand-in: `PolyMesh::sharp_star`).";
 
 /// The figures of this module.
 pub(crate) const FIGURES: &[Figure] = &[

@@ -188,6 +188,7 @@ mod tests {
         let lights = vec![
             Light::Directional { direction: DVec3::new(1.0, -1.0, 2.0), intensity: [0.9; 3] },
             Light::Point { position: DVec3::new(4.0, -4.0, 6.0), intensity: [20.0, 18.0, 16.0] },
+            Light::Fill { direction: DVec3::new(-1.0, -0.5, 0.5), intensity: [0.3; 3] },
         ];
         let material = Material { color: [0.5, 0.25, 0.125], ..Material::default() };
         let text = serde_json::json!({

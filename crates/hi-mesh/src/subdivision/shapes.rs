@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 //! Small closed control meshes for the subdivision figures of Hardy 2005, §4.5 (the cube and
-//! the star of figures 4.11–4.34) and for the peer comparisons, and the fan triangulation of
-//! any mesh.
+//! the star of figures 4.11–4.34: [`PolyMesh::sharp_star`]), for the peer comparisons and the
+//! benchmarks ([`PolyMesh::star`]), and the fan triangulation of any mesh.
 
 use glam::DVec3;
 
@@ -106,10 +106,11 @@ impl PolyMesh {
     /// A star of quadrilaterals: the cube [−1, 1]³ with a tapered spike on each face. Each
     /// face (c₀, c₁, c₂, c₃) with centre c and outward normal n keeps its corners and gains a
     /// top tᵢ = c + 0.2·(cᵢ − c) + 1.2·n, joined by four side quads (cᵢ, cᵢ₊₁, tᵢ₊₁, tᵢ) and
-    /// closed by the top (t₀, t₁, t₂, t₃): V, E, F = 32, 60, 30. The thesis's star of figures
-    /// 4.12–4.33 is drawn but not given; this is a stand-in with the same character (spikes
-    /// on a convex core, vertices of valence 3 to 6), all quads, so that Catmull-Clark and
-    /// Doo-Sabin see the quad star and [`PolyMesh::triangulated`] gives the triangle one.
+    /// closed by the top (t₀, t₁, t₂, t₃): V, E, F = 32, 60, 30: spikes on a convex core,
+    /// vertices of valence 3 to 6, all quads, so that Catmull-Clark and Doo-Sabin see the quad
+    /// star and [`PolyMesh::triangulated`] gives the triangle one. Its spikes are short: after
+    /// a few steps of an approximating scheme it is a rounded blob, so the figures use
+    /// [`PolyMesh::sharp_star`].
     ///
     /// # Examples
     ///
@@ -144,6 +145,58 @@ impl PolyMesh {
             faces.push([top, top + 1, top + 2, top + 3]);
         }
         PolyMesh::try_new(positions, &faces).expect("the quad star is a valid closed mesh")
+    }
+
+    /// A star of quadrilaterals with long, sharp spikes, the star of the subdivision figures
+    /// of Hardy 2005, §4.5 (figures 4.12–4.33; the thesis draws its star but does not give
+    /// it): the cube [−1, 1]³ with a spike of two frusta on each face. Each face (c₀, c₁, c₂,
+    /// c₃) with centre c and outward normal n keeps its corners and gains a neck
+    /// nᵢ = c + 0.45·(cᵢ − c) + 0.9·n and a tip tᵢ = c + 0.1·(cᵢ − c) + 3.2·n, joined by the
+    /// side quads (cᵢ, cᵢ₊₁, nᵢ₊₁, nᵢ) and (nᵢ, nᵢ₊₁, tᵢ₊₁, tᵢ) and closed by the tip
+    /// (t₀, t₁, t₂, t₃): V, E, F = 56, 108, 54. Unlike [`PolyMesh::quad_star`], whose short
+    /// frusta subdivide into a rounded blob, the spikes are long and narrow enough to stay
+    /// points after three steps of an approximating scheme.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// let star = hi_mesh::subdivision::PolyMesh::sharp_star();
+    /// assert_eq!((star.n_vertices(), star.n_edges(), star.n_faces()), (56, 108, 54));
+    /// assert!(star.is_closed() && star.faces().all(|f| f.len() == 4));
+    /// ```
+    ///
+    /// # Panics
+    ///
+    /// Never: the mesh is fixed and checked by the tests.
+    #[must_use]
+    pub fn sharp_star() -> Self {
+        /// (scale of the corners about the face centre, distance out along the normal) of
+        /// the neck and the tip.
+        const RINGS: [(f64, f64); 2] = [(0.45, 0.9), (0.1, 3.2)];
+        let cube = PolyMesh::cube();
+        let mut positions: Vec<DVec3> =
+            cube.positions().iter().map(|&p| 2.0 * p - DVec3::ONE).collect();
+        let mut faces = Vec::with_capacity(54);
+        for f in cube.faces() {
+            let corners: Vec<DVec3> = f.iter().map(|&k| positions[k as usize]).collect();
+            let centre = corners.iter().sum::<DVec3>() / 4.0;
+            // The cube's faces are squares about the origin: the centre is the outward normal.
+            let normal = centre.normalize();
+            let mut below: [u32; 4] = [f[0], f[1], f[2], f[3]];
+            for (scale, out) in RINGS {
+                let ring = positions.len() as u32;
+                for &c in &corners {
+                    positions.push(centre + scale * (c - centre) + out * normal);
+                }
+                for i in 0..4 {
+                    let j = (i + 1) % 4;
+                    faces.push([below[i], below[j], ring + j as u32, ring + i as u32]);
+                }
+                below = [ring, ring + 1, ring + 2, ring + 3];
+            }
+            faces.push(below);
+        }
+        PolyMesh::try_new(positions, &faces).expect("the sharp star is a valid closed mesh")
     }
 
     /// The mesh with every face (v₀, v₁, …, vₖ₋₁) split into the fan of triangles

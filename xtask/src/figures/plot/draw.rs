@@ -37,6 +37,9 @@ impl Plot {
 
     /// The size in pixels of the plot on its own.
     pub(super) const fn size(&self) -> (u32, u32) {
+        if let Some(size) = self.size {
+            return size;
+        }
         match self.kind {
             Kind::Function { .. } => FUNCTION_SIZE,
             Kind::Plane | Kind::Projection => PLANE_SIZE,

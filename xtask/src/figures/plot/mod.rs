@@ -20,7 +20,7 @@ mod row;
 use glam::{DVec2, DVec3};
 use plotters::prelude::*;
 
-pub(crate) use row::render_row;
+pub(crate) use row::{render_grid, render_row};
 
 /// Drawing units per SVG pixel: coordinates are placed to 0.01 px.
 const SCALE: u32 = 100;
@@ -64,8 +64,11 @@ pub(crate) const SKY: RGBColor = RGBColor(86, 180, 233);
 pub(crate) const INK: RGBColor = RGBColor(30, 30, 30);
 /// Grey, for reference curves drawn behind the main one.
 pub(crate) const GREY: RGBColor = RGBColor(150, 150, 150);
-/// The colours of a family of curves (basis functions), in order.
-pub(crate) const PALETTE: [RGBColor; 6] = [BLUE, VERMILION, GREEN, ORANGE, PURPLE, SKY];
+/// Brown, the eighth colour of a family (Okabe–Ito's yellow is too faint on white).
+const BROWN: RGBColor = RGBColor(136, 85, 40);
+/// The colours of a family of curves (basis functions), in order: Okabe–Ito's six, then
+/// near-black and brown, so that up to eight curves on one plot each have their own.
+pub(crate) const PALETTE: [RGBColor; 8] = [BLUE, VERMILION, GREEN, ORANGE, PURPLE, SKY, INK, BROWN];
 
 /// Colour of the polygon through the data points.
 const POLYGON: RGBColor = RGBColor(170, 170, 170);
@@ -122,6 +125,11 @@ impl Marker {
     /// A small filled disc: points added by a construction (subdivision).
     pub(crate) const fn small(color: RGBColor) -> Self {
         Self { color, radius: 2.5, filled: true }
+    }
+
+    /// A dot smaller still: one of thousands of points (a scan).
+    pub(crate) const fn dot(color: RGBColor) -> Self {
+        Self { color, radius: 1.6, filled: true }
     }
 
     /// A ring: points shown for reference (the data before a change).
@@ -257,6 +265,8 @@ pub(crate) struct Plot {
     /// Tick positions on the y axis and their labels, instead of plotters' own (an axis whose
     /// values are transformed, such as a symmetric log).
     y_ticks: Option<Vec<(f64, String)>>,
+    /// Its size in pixels instead of the kind's own.
+    size: Option<(u32, u32)>,
 }
 
 impl Plot {
@@ -269,6 +279,7 @@ impl Plot {
             marks: Vec::new(),
             legend: None,
             y_ticks: None,
+            size: None,
         }
     }
 
@@ -296,6 +307,14 @@ impl Plot {
     /// Fixes the range of the y axis (otherwise it is fitted to the marks).
     pub(crate) fn y_range(mut self, lo: f64, hi: f64) -> Self {
         self.y_range = Some((lo, hi));
+        self
+    }
+
+    /// Draws the plot `width` × `height` pixels instead of its kind's size; the text keeps its
+    /// size, so a smaller plot has relatively larger text (panels of a grid that is printed
+    /// at the width of a page).
+    pub(crate) fn sized(mut self, width: u32, height: u32) -> Self {
+        self.size = Some((width, height));
         self
     }
 
@@ -457,6 +476,18 @@ mod tests {
     use super::*;
 
     #[test]
+    fn the_palette_has_eight_distinct_colours() {
+        // Figure 2.10 draws eight blending functions on one plot, each in its own colour.
+        assert_eq!(PALETTE.len(), 8);
+        for (i, a) in PALETTE.iter().enumerate() {
+            for b in &PALETTE[i + 1..] {
+                let d = [a.0.abs_diff(b.0), a.1.abs_diff(b.1), a.2.abs_diff(b.2)];
+                assert!(d.iter().map(|&c| u32::from(c)).sum::<u32>() > 60, "{a:?} and {b:?}");
+            }
+        }
+    }
+
+    #[test]
     fn subscripts() {
         assert_eq!(sub("x", 0), "x₀");
         assert_eq!(sub("p", 12), "p₁₂");
@@ -499,6 +530,30 @@ mod tests {
         assert_eq!(dashes.len(), 4, "{dashes:?}");
         assert_eq!(dashes[1], vec![DVec2::new(3.0, 0.0), DVec2::new(5.0, 0.0)]);
         assert_eq!(dashes[3], vec![DVec2::new(9.0, 0.0), DVec2::new(10.0, 0.0)]);
+    }
+
+    #[test]
+    fn a_grid_stacks_rows_of_plots() {
+        let plot = |title: &str| {
+            Plot::plane(title).sized(400, 370).points(
+                &[DVec2::ZERO, DVec2::ONE],
+                Marker::point(INK),
+                None,
+            )
+        };
+        let plots = [plot("one"), plot("two"), plot("three")];
+        let refs: Vec<&Plot> = plots.iter().collect();
+        let svg =
+            String::from_utf8(render_grid("test", &refs, 2).expect("renders")).expect("utf-8");
+        // Two columns of 400 pixels; two rows (the second of one plot) of 370 and a title line
+        // of 24 each.
+        assert!(svg.starts_with("<svg width=\"800\" height=\"788\""), "{}", &svg[..60]);
+        for title in ["one", "two", "three"] {
+            assert!(svg.contains(&format!("\n{title}\n</text>")), "the sub-caption {title}");
+        }
+        let row = String::from_utf8(render_row("test", &refs).expect("renders")).expect("utf-8");
+        assert!(row.starts_with("<svg width=\"1200\" height=\"394\""), "{}", &row[..60]);
+        assert!(render_grid("test", &refs, 0).is_err(), "no columns");
     }
 
     #[test]

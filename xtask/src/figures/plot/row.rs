@@ -15,22 +15,50 @@ use super::{INK, Plot, SCALE, font, px};
 ///
 /// As [`Plot::render`].
 pub(crate) fn render_row(title: &str, plots: &[&Plot]) -> Result<Vec<u8>> {
-    let sizes: Vec<(u32, u32)> = plots.iter().map(|p| p.size()).collect();
+    render_grid(title, plots, plots.len())
+}
+
+/// Several plots in rows of `columns` (the last row may be shorter), left to right and top to
+/// bottom, in one SVG document under `title`, each with its own title as a sub-caption: stages
+/// that would be too small to read in one row.
+///
+/// # Errors
+///
+/// As [`Plot::render`]; also if `columns` is 0.
+pub(crate) fn render_grid(title: &str, plots: &[&Plot], columns: usize) -> Result<Vec<u8>> {
+    if columns == 0 {
+        bail!("a grid of plots needs at least one column");
+    }
+    let rows: Vec<&[&Plot]> = plots.chunks(columns).collect();
+    let row_size = |row: &[&Plot]| {
+        let sizes = row.iter().map(|p| p.size());
+        (sizes.clone().map(|s| s.0).sum::<u32>(), sizes.map(|s| s.1).max().unwrap_or(0))
+    };
     let size = (
-        sizes.iter().map(|s| s.0).sum::<u32>(),
-        sizes.iter().map(|s| s.1).max().unwrap_or(0) + TITLE_SPACE,
+        rows.iter().map(|r| row_size(r).0).max().unwrap_or(0),
+        rows.iter().map(|r| row_size(r).1 + TITLE_SPACE).sum::<u32>(),
     );
     let mut svg = String::new();
     {
         let root =
             SVGBackend::with_string(&mut svg, (size.0 * SCALE, size.1 * SCALE)).into_drawing_area();
         root.fill(&WHITE)?;
-        let mut rest = draw_panel_letter(&root, title)?;
-        for (plot, own) in plots.iter().zip(&sizes) {
-            let (cell, right) = rest.split_horizontally(own.0 * SCALE);
-            let chart = draw_title(&cell, &plot.title)?;
-            plot.draw_chart(&chart)?;
-            rest = right;
+        let mut below = draw_panel_letter(&root, title)?;
+        for (i, row) in rows.iter().enumerate() {
+            // The last row takes what is left (less the panel letter's line, if any).
+            let mut right = if i + 1 < rows.len() {
+                let (line, rest) = below.split_vertically((row_size(row).1 + TITLE_SPACE) * SCALE);
+                below = rest;
+                line
+            } else {
+                below.clone()
+            };
+            for plot in *row {
+                let (cell, rest) = right.split_horizontally(plot.size().0 * SCALE);
+                let chart = draw_title(&cell, &plot.title)?;
+                plot.draw_chart(&chart)?;
+                right = rest;
+            }
         }
         root.present()?;
     }
