@@ -5,7 +5,7 @@
 //! and the same errors.
 //!
 //! - [`read_scan`] and [`fit_scan`]: a scan read (every format of `hi-scan`) and fitted part by
-//!   part ([`hi_geomimage::fit`]), errors naming the scan;
+//!   part ([`hi_geomimage::fit()`]), errors naming the scan;
 //! - [`warnings`]: what the fit changed or could not reach, one line each, as `hi fit` prints
 //!   them (parts left out, handles cut, holes closed, points unreached, shells hidden);
 //! - [`part_meshes`], [`save_parts`], [`write_outputs`]: each part's mesh, and the files

@@ -198,7 +198,7 @@ pub fn read_scan(path: &Path) -> Result<Scan, Error> {
 }
 
 /// Fits `scan` (named `name` in errors) part by part with `options`, announcing each stage to
-/// `progress` ([`hi_geomimage::fit`]).
+/// `progress` ([`hi_geomimage::fit()`]).
 ///
 /// # Errors
 ///

@@ -2,16 +2,16 @@
 //! The `harmonic` Python package's native module, `harmonic._harmonic` (`PyO3`, one abi3
 //! wheel for `CPython` ≥ 3.9): the `hi-*` libraries with `NumPy` arrays in and out.
 //!
-//! - curves ([`curve`]): `HarmonicCurve` (thesis chapters 3 and 5) and the comparison curves of
+//! - curves (`curve`): `HarmonicCurve` (thesis chapters 3 and 5) and the comparison curves of
 //!   chapter 2 by kind (`Curve`);
-//! - surfaces ([`surface`]): `HarmonicSurface` (§5.1, §5.2), the examples of §5.9, meshes and
+//! - surfaces (`surface`): `HarmonicSurface` (§5.1, §5.2), the examples of §5.9, meshes and
 //!   Bézier patches (§5.7);
-//! - meshes ([`mesh`]): `subdivide` (§4.5) and `render` (§5.5, §5.6);
-//! - fitting ([`fit`]): `fit` and the batch functions behind `fit_many`, on `hi-fit`, the
+//! - meshes (`mesh`): `subdivide` (§4.5) and `render` (§5.5, §5.6);
+//! - fitting (`fit`): `fit` and the batch functions behind `fit_many`, on `hi-fit`, the
 //!   pipeline the `hi fit` command runs.
 //!
 //! Every error of the libraries becomes a Python exception carrying the library's one-line
-//! message ([`errors`]); long work runs with the interpreter released (`Python::detach`).
+//! message (`errors`); long work runs with the interpreter released (`Python::detach`).
 //! The Python side (`python/harmonic`) adds `fit_many` over a Dask cluster, the type stubs and
 //! the docstrings' examples.
 
