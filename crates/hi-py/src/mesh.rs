@@ -69,18 +69,23 @@ pub(crate) fn subdivide<'py>(
     Ok((from_points(py, refined.positions()).into_any(), from_faces(py, &out)?))
 }
 
+// The set-up of `hi render --quick` (its `default_lights`, `DEFAULT_VIEW`, `frame` and the
+// scene file's `DEFAULT_BACKGROUND`), which `tests/test_subdivide_render.py` checks pixel for
+// pixel against `hi render --quick`.
+
 /// The default direction from the centre of the object to the eye.
 const VIEW: DVec3 = DVec3::new(0.9, -2.0, 1.3);
 
 /// The background colour (linear RGB).
 const BACKGROUND: [f32; 3] = [0.04, 0.05, 0.07];
 
-/// A key light above and to the left of the view, a weaker fill from the right.
+/// A key light above and to the left of the view, which casts the shadows, and a weaker fill
+/// from the right, which casts none.
 fn lights(view: DVec3) -> Vec<Light> {
     let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
     vec![
         Light::Directional { direction: -view + DVec3::Z * 1.5 - side, intensity: [0.85; 3] },
-        Light::Directional { direction: -view + side, intensity: [0.3; 3] },
+        Light::Fill { direction: -view + side, intensity: [0.3; 3] },
     ]
 }
 

@@ -2,11 +2,14 @@
 """Subdivision against trimesh's Loop scheme and against the counts of the schemes' algebra;
 rendering into an array of pixels."""
 
+import json
+
 import numpy as np
 import pytest
 import trimesh
 
 import harmonic
+from conftest import hi_json
 
 TETRA_V = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float)
 TETRA_F = np.array([[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]])
@@ -48,3 +51,18 @@ def test_render_gives_an_image_of_the_object_on_the_background():
     v, f = harmonic.example("torus").mesh((32, 32))
     mesh_image = harmonic.render((v, f), width=40, height=40, spp=1)
     assert mesh_image.shape == (40, 40, 3) and (mesh_image != mesh_image[0, 0]).any()
+
+
+@pytest.mark.parametrize("method", ["bezier", "mesh"])
+def test_render_draws_what_hi_render_quick_draws(tmp_path, method):
+    # The same surface, framing, lights and background as the command: the same pixels.
+    PIL = pytest.importorskip("PIL.Image")
+    surface = harmonic.example("torus")
+    grid = tmp_path / "torus.json"
+    grid.write_text(json.dumps({"grid": surface.grid.tolist()}))
+    png = tmp_path / "torus.png"
+    hi_json("render", "--quick", grid, "--method", method, "--width", "40", "--height", "30",
+            "--spp", "2", "-o", png)
+    expected = np.asarray(PIL.open(png).convert("RGB"))
+    image = harmonic.render(surface, width=40, height=30, spp=2, method=method)
+    np.testing.assert_array_equal(image, expected)
