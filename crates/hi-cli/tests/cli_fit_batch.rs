@@ -8,24 +8,10 @@
 #[allow(dead_code, reason = "each test file uses a part of the shared helpers")]
 mod common;
 
-use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
-use common::{bad, ok, run};
+use common::{bad, ellipsoid_xyz, ok, run};
 use serde_json::Value;
-
-/// `n` points on the ellipsoid with semi-axes `axes`, as XYZ text.
-fn ellipsoid_xyz(n: usize, axes: [f64; 3]) -> String {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            format!("{} {} {}\n", axes[0] * s * phi.cos(), axes[1] * s * phi.sin(), axes[2] * z)
-        })
-        .collect()
-}
 
 /// A fresh folder under the system's temporary folder, removed on drop.
 struct TempDir(PathBuf);

@@ -211,12 +211,7 @@ impl PyHarmonicCurve {
         scheme: &str,
         tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let scheme = BezierScheme::from_name(scheme).ok_or_else(|| {
-            value_error(format!(
-                "unknown scheme '{scheme}' (expected hermite, hermite-quintic, thesis-cubic or thesis-quintic)"
-            ))
-        })?;
-        let tolerance = tolerance.map_or(DEFAULT_TOLERANCE, Tolerance::Absolute);
+        let (scheme, tolerance) = bezier_options(scheme, tolerance)?;
         let out = PyDict::new(py);
         let inner = self.inner.clone();
         each!(inner, c => {
@@ -237,6 +232,20 @@ impl PyHarmonicCurve {
 }
 
 /// The dimension of points of type `P`.
+/// The §5.7 scheme named `scheme` and the absolute `tolerance` (the library's default when
+/// `None`) of a `to_bezier` call, shared by curves and surfaces.
+pub(crate) fn bezier_options(
+    scheme: &str,
+    tolerance: Option<f64>,
+) -> PyResult<(BezierScheme, Tolerance)> {
+    let scheme = BezierScheme::from_name(scheme).ok_or_else(|| {
+        value_error(format!(
+            "unknown scheme '{scheme}' (expected hermite, hermite-quintic, thesis-cubic or thesis-quintic)"
+        ))
+    })?;
+    Ok((scheme, tolerance.map_or(DEFAULT_TOLERANCE, Tolerance::Absolute)))
+}
+
 fn dim_of<P: ControlPoint>(_: &[P]) -> usize {
     P::DIM
 }

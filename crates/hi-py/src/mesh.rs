@@ -8,8 +8,9 @@ use hi_curve::bezier::{BezierScheme, DEFAULT_TOLERANCE, HermiteDegree};
 use hi_mesh::TriangleMesh;
 use hi_mesh::subdivision::{LoopWeights, PolyMesh, Scheme};
 use hi_raytrace::{
-    BezierObject, BezierOptions, Camera, Geometry, HarmonicObject, HarmonicOptions, IntervalMethod,
-    Light, MeshObject, RenderOptions, Scene, SceneObject, render as trace,
+    BezierObject, BezierOptions, Camera, DEFAULT_BACKGROUND, DEFAULT_VIEW, Geometry,
+    HarmonicObject, HarmonicOptions, IntervalMethod, Light, MeshObject, RenderOptions, Scene,
+    SceneObject, render as trace,
 };
 use hi_surface::{HarmonicSurface, MeshOptions};
 use numpy::IntoPyArray;
@@ -67,26 +68,6 @@ pub(crate) fn subdivide<'py>(
         .map_err(value_error)?;
     let out: Vec<Vec<u32>> = refined.faces().map(<[u32]>::to_vec).collect();
     Ok((from_points(py, refined.positions()).into_any(), from_faces(py, &out)?))
-}
-
-// The set-up of `hi render --quick` (its `default_lights`, `DEFAULT_VIEW`, `frame` and the
-// scene file's `DEFAULT_BACKGROUND`), which `tests/test_subdivide_render.py` checks pixel for
-// pixel against `hi render --quick`.
-
-/// The default direction from the centre of the object to the eye.
-const VIEW: DVec3 = DVec3::new(0.9, -2.0, 1.3);
-
-/// The background colour (linear RGB).
-const BACKGROUND: [f32; 3] = [0.04, 0.05, 0.07];
-
-/// A key light above and to the left of the view, which casts the shadows, and a weaker fill
-/// from the right, which casts none.
-fn lights(view: DVec3) -> Vec<Light> {
-    let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
-    vec![
-        Light::Directional { direction: -view + DVec3::Z * 1.5 - side, intensity: [0.85; 3] },
-        Light::Fill { direction: -view + side, intensity: [0.3; 3] },
-    ]
 }
 
 /// What `render` draws: a harmonic surface by a method, or a triangle mesh.
@@ -174,14 +155,14 @@ pub(crate) fn render<'py>(
         .detach(|| -> Result<_, String> {
             let scene = Scene::try_new(
                 vec![SceneObject::new(geometry(object)?)],
-                lights(-VIEW),
-                BACKGROUND,
+                Light::key_and_fill(-DEFAULT_VIEW),
+                DEFAULT_BACKGROUND,
             )
             .map_err(|e| e.to_string())?;
             let hi_bezier::Aabb { min: lo, max: hi } = scene.bounds();
             let radius = (0.5 * (hi - lo).length()).max(1e-9);
             let fov = hi_raytrace::DEFAULT_FOV_DEGREES.to_radians();
-            let camera = Camera::framing(0.5 * (lo + hi), radius, VIEW, DVec3::Z, fov)
+            let camera = Camera::framing(0.5 * (lo + hi), radius, DEFAULT_VIEW, DVec3::Z, fov)
                 .map_err(|e| format!("camera: {e}"))?;
             let options =
                 RenderOptions { width, height, samples_per_pixel: spp, ..RenderOptions::default() };

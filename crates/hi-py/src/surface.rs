@@ -4,7 +4,6 @@
 //! examples of §5.9.
 
 use glam::DVec3;
-use hi_curve::bezier::{BezierScheme, DEFAULT_TOLERANCE, Tolerance};
 use hi_surface::{HarmonicSurface, MeshOptions, ParamRange, ParamWindow, SurfaceDerivs};
 use numpy::IntoPyArray;
 use numpy::ndarray::Array3;
@@ -12,6 +11,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arrays::{Params, from_points, from_triangles, params, to_python};
+use crate::curve::bezier_options;
 use crate::errors::value_error;
 
 /// The sphere's radius in `example("sphere")`, and the torus's radii.
@@ -197,12 +197,7 @@ impl PyHarmonicSurface {
         scheme: &str,
         tolerance: Option<f64>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let scheme = BezierScheme::from_name(scheme).ok_or_else(|| {
-            value_error(format!(
-                "unknown scheme '{scheme}' (expected hermite, hermite-quintic, thesis-cubic or thesis-quintic)"
-            ))
-        })?;
-        let tolerance = tolerance.map_or(DEFAULT_TOLERANCE, Tolerance::Absolute);
+        let (scheme, tolerance) = bezier_options(scheme, tolerance)?;
         let surface = &self.inner;
         let b = py.detach(|| surface.to_bezier(scheme, tolerance)).map_err(value_error)?;
         let mut patches = Vec::with_capacity(b.patches.len());

@@ -61,7 +61,7 @@ pub use ray::{Hit, Ray, offset_ray_origin};
 pub use render::{
     ADAPTIVE_SPREAD, MAX_SAMPLES, MAX_SIZE, Progress, RayCounts, RenderOptions, Rendering, render,
 };
-pub use scene::{Geometry, Light, Material, Scene, SceneObject};
+pub use scene::{DEFAULT_BACKGROUND, DEFAULT_VIEW, Geometry, Light, Material, Scene, SceneObject};
 #[cfg(feature = "serde")]
 pub use serde_impls::{DEFAULT_FOV_DEGREES, srgb};
 

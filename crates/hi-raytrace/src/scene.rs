@@ -109,6 +109,35 @@ pub enum Light {
     },
 }
 
+/// The default direction from the centre of a scene to the eye (in front, to the left and
+/// above), for a scene that gives no camera: `hi render`'s and the Python package's.
+pub const DEFAULT_VIEW: DVec3 = DVec3::new(0.9, -2.0, 1.3);
+
+/// The default background (linear RGB), for a scene that gives none.
+pub const DEFAULT_BACKGROUND: [f32; 3] = [0.04, 0.05, 0.07];
+
+impl Light {
+    /// The default lights of a scene that gives none, for the direction `view` (as
+    /// [`DEFAULT_VIEW`], negated): a key light above and to one side, which casts the
+    /// shadows, and a weaker [`Light::Fill`] from the other side, which casts none.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use hi_raytrace::{DEFAULT_VIEW, Light};
+    /// let lights = Light::key_and_fill(-DEFAULT_VIEW);
+    /// assert!(matches!(lights[..], [Light::Directional { .. }, Light::Fill { .. }]));
+    /// ```
+    #[must_use]
+    pub fn key_and_fill(view: DVec3) -> Vec<Light> {
+        let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
+        vec![
+            Light::Directional { direction: -view + DVec3::Z * 1.5 - side, intensity: [0.85; 3] },
+            Light::Fill { direction: -view + side, intensity: [0.3; 3] },
+        ]
+    }
+}
+
 /// Objects, lights and background.
 ///
 /// # Examples

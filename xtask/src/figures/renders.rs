@@ -88,15 +88,6 @@ pub(crate) fn view(number: (u32, u32)) -> DVec3 {
     if head { DVec3::new(0.9, 2.0, 0.9) } else { DVec3::new(0.9, -2.0, 1.3) }
 }
 
-/// A key light above and to the left of `view`, and a weaker fill from the right.
-fn lights(view: DVec3) -> Vec<Light> {
-    let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
-    vec![
-        Light::Directional { direction: view + DVec3::Z * 1.5 + side, intensity: [0.85; 3] },
-        Light::Fill { direction: view - side, intensity: [0.3; 3] },
-    ]
-}
-
 /// Renders `scene` through `camera` ([`SPP`] samples per pixel), as lossless WebP bytes (a
 /// third of the PNG's size on these pictures).
 fn webp(scene: &Scene, camera: &Camera) -> Result<Vec<u8>> {
@@ -184,7 +175,7 @@ fn render_mesh(
     if let Some((lo, hi)) = floor_under {
         objects.push(floor(lo, hi)?);
     }
-    let scene = Scene::try_new(objects, lights(from), [1.0; 3])?;
+    let scene = Scene::try_new(objects, Light::key_and_fill(-from), [1.0; 3])?;
     webp(&scene, camera)
 }
 

@@ -10,8 +10,9 @@ use hi_bezier::BezierPatch;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_mesh::TriangleMesh;
 use hi_raytrace::{
-    BezierObject, BezierOptions, Camera, Geometry, HarmonicObject, HarmonicOptions, IntervalMethod,
-    Light, MeshObject, RayCounts, RenderOptions, Scene, SceneObject, SurfaceColor, render,
+    BezierObject, BezierOptions, Camera, DEFAULT_BACKGROUND, DEFAULT_VIEW, Geometry,
+    HarmonicObject, HarmonicOptions, IntervalMethod, Light, MeshObject, RayCounts, RenderOptions,
+    Scene, SceneObject, SurfaceColor, render,
 };
 use hi_surface::{CurvatureColoring, CurvatureQuantity, HarmonicSurface, MeshOptions};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -103,18 +104,6 @@ pub(super) struct Loaded {
     pub(super) size: (Option<usize>, Option<usize>, Option<usize>),
 }
 
-/// The default lights: a key light above and to the left, a weaker fill from the right.
-pub(super) fn default_lights(view: DVec3) -> Vec<Light> {
-    let side = view.cross(DVec3::Z).try_normalize().unwrap_or(DVec3::X);
-    vec![
-        Light::Directional { direction: -view + DVec3::Z * 1.5 - side, intensity: [0.85; 3] },
-        Light::Fill { direction: -view + side, intensity: [0.3; 3] },
-    ]
-}
-
-/// The default direction from the centre of a scene to the eye.
-pub(super) const DEFAULT_VIEW: DVec3 = DVec3::new(0.9, -2.0, 1.3);
-
 /// A camera framing everything in `scene`.
 pub(super) fn frame(scene: &Scene, from: DVec3, up: DVec3, fov: f64) -> Result<Camera, Failure> {
     let hi_bezier::Aabb { min: lo, max: hi } = scene.bounds();
@@ -133,12 +122,9 @@ fn quick_scene(
     let geometry = load_object(file, None, method, curvature)
         .map_err(|e| Failure::input(format!("{name}: {e}")))?;
     let object = SceneObject::new(geometry);
-    let scene = Scene::try_new(
-        vec![object],
-        default_lights(-DEFAULT_VIEW),
-        super::scene_file::DEFAULT_BACKGROUND,
-    )
-    .map_err(|e| Failure::input(format!("{name}: {e}")))?;
+    let scene =
+        Scene::try_new(vec![object], Light::key_and_fill(-DEFAULT_VIEW), DEFAULT_BACKGROUND)
+            .map_err(|e| Failure::input(format!("{name}: {e}")))?;
     let camera =
         frame(&scene, DEFAULT_VIEW, DVec3::Z, hi_raytrace::DEFAULT_FOV_DEGREES.to_radians())?;
     Ok(Loaded { scene, camera, size: (None, None, None) })

@@ -8,17 +8,17 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
-use hi_raytrace::{Camera, Geometry, Light, Material, Scene, SceneObject, SurfaceColor};
+use hi_raytrace::{
+    Camera, DEFAULT_BACKGROUND, DEFAULT_VIEW, Geometry, Light, Material, Scene, SceneObject,
+    SurfaceColor,
+};
 use schemars::JsonSchema;
 use serde::Deserialize;
 use serde_json::Value;
 
-use super::render::{DEFAULT_VIEW, Loaded, default_lights, frame, load_object};
+use super::render::{Loaded, frame, load_object};
 use crate::cli::{ColorBy, PaletteName, RenderMethod};
 use crate::error::Failure;
-
-/// The background of a scene that gives none (linear RGB).
-pub(super) const DEFAULT_BACKGROUND: [f32; 3] = [0.04, 0.05, 0.07];
 
 /// `hi render`'s scene file. File names are relative to the scene file.
 #[derive(Debug, Deserialize, JsonSchema)]
@@ -140,7 +140,7 @@ pub(super) fn read_scene(path: &Path) -> Result<Loaded, Failure> {
         objects.push(object);
     }
     let view = file.camera.map_or(DEFAULT_VIEW, |c| -c.forward() * DEFAULT_VIEW.length());
-    let lights = file.lights.unwrap_or_else(|| default_lights(-view));
+    let lights = file.lights.unwrap_or_else(|| Light::key_and_fill(-view));
     let background = file.background.map_or(DEFAULT_BACKGROUND, |c| c.0);
     let mut scene = Scene::try_new(objects, lights, background).map_err(|e| fail("", &e))?;
     if let Some(Srgb(ambient)) = file.ambient {
