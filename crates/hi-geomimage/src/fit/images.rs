@@ -101,9 +101,15 @@ fn mesh_sources(
     let n = planned.len();
     let size = user_size(options, &planned);
     let mut out = Vec::with_capacity(n);
-    for (k, part) in planned.iter().enumerate() {
+    let mut planned = planned;
+    for (k, part) in planned.iter_mut().enumerate() {
         let image = clock.run(StageKind::GeometryImage, (k, n), || {
-            part_image(part, share(texels, part.area_fraction, kept), size)
+            part_image_or_sphere(
+                part,
+                share(texels, part.area_fraction, kept),
+                size,
+                options.layout,
+            )
         })?;
         let mut repair = part.closed.repair;
         repair.welded_points = parts.welded_points;
@@ -247,9 +253,10 @@ fn point_sources_on(
     // each texel itself, to the points themselves.
     let mls = MovingLeastSquares::try_new(points)?;
     let mut out = Vec::with_capacity(n);
-    for (k, part) in planned.iter().enumerate() {
+    let mut planned = planned;
+    for (k, part) in planned.iter_mut().enumerate() {
         let image = clock.run(StageKind::GeometryImage, (k, n), || {
-            settled_part_image(part, &surface, reps, &mls, (texels, kept, size))
+            settled_part_image(part, &surface, reps, &mls, (texels, kept, size), options.layout)
         })?;
         out.push(Sourced {
             name: part.name.clone(),
@@ -314,13 +321,14 @@ fn wrapped_source(
 /// parameterisation with its `share` of the texels (`texels`, the parts' area `kept`, the
 /// user's `size`), settled onto the patches of `surface` and refined by moving least squares.
 fn settled_part_image(
-    part: &PlannedPart,
+    part: &mut PlannedPart,
     surface: &PointSurface,
     reps: &[DVec3],
     mls: &MovingLeastSquares,
     (texels, kept, size): (usize, f64, Option<(usize, usize)>),
+    layout: Layout,
 ) -> Result<ShrinkWrapImage, Error> {
-    let image = part_image(part, share(texels, part.area_fraction, kept), size)?;
+    let image = part_image_or_sphere(part, share(texels, part.area_fraction, kept), size, layout)?;
     let (r, c) = (image.image.rows(), image.image.cols());
     let mut settled = settle(
         surface,

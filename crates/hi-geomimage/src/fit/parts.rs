@@ -15,7 +15,7 @@
 
 use glam::DVec3;
 use hi_scan::repair::{
-    ClosedMesh, Closing, MeshParts, Topology, close_part, part_topology, shortest_handle,
+    ClosedMesh, Closing, MeshPart, MeshParts, Topology, close_part, part_topology, shortest_handle,
 };
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
@@ -109,6 +109,9 @@ pub(crate) struct PlannedPart {
     pub(crate) area_fraction: f64,
     /// Why the domain, in words.
     pub(crate) why: String,
+    /// The part as the scan has it, before repair: closed again as a sphere should its
+    /// domain's map fail ([`part_image_or_sphere`]).
+    pub(crate) part: MeshPart,
 }
 
 /// The surfaces a part may become, best first, and why.
@@ -201,7 +204,15 @@ pub(crate) fn plan(
                     }
                     Ok(closed) => {
                         let why = if last.is_empty() { why } else { format!("{why} ({last})") };
-                        return Ok(PlannedPart { name, closed, domain, topology, area_fraction, why });
+                        return Ok(PlannedPart {
+                            name,
+                            closed,
+                            domain,
+                            topology,
+                            area_fraction,
+                            why,
+                            part: part.clone(),
+                        });
                     }
                     Err(e) => last = format!("not a {}: {e}", domain.name()),
                 }
@@ -341,6 +352,35 @@ pub(crate) fn part_image(
     }
 }
 
+/// [`part_image`], and should a sheet's or a torus's map fail (a fold its solve cannot undo,
+/// on a ragged zero set), the part closed as a sphere instead (its boundary capped, its
+/// handles cut) and mapped over the sphere in `layout`: `part`'s surface, domain and reason
+/// are changed to say so. The sphere's own failure is returned as it is.
+pub(crate) fn part_image_or_sphere(
+    part: &mut PlannedPart,
+    texels: usize,
+    resolution: Option<(usize, usize)>,
+    layout: Layout,
+) -> Result<PartImage, Error> {
+    let failed = match part_image(part, texels, resolution) {
+        Err(e) if !matches!(part.domain, Domain::Sphere(_)) => e,
+        done => return done,
+    };
+    let Ok(closed) = close_part(&part.part, Closing::Sphere) else {
+        return Err(failed);
+    };
+    part.why = format!(
+        "closed as a sphere, its handles cut and its boundary capped (not {}: {failed})",
+        match part.domain {
+            Domain::Sheet => "an open sheet",
+            _ => "a torus",
+        }
+    );
+    part.closed = closed;
+    part.domain = Domain::Sphere(layout);
+    part_image(part, texels, resolution)
+}
+
 /// The side of a square image of the sphere in `layout` with about `texels` distinct texels:
 /// a multiple of 8 (the doubled layouts mirror rows and columns), at least [`MIN_SIDE`] · 2.
 pub(crate) fn sphere_side(layout: Layout, texels: usize) -> (usize, usize) {
@@ -434,5 +474,28 @@ mod tests {
         let mut one = two_parts();
         one.parts.truncate(1);
         assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), (0, 0));
+    }
+
+    /// A part whose sheet map fails (here a closed octahedron taken for a sheet: a disc map
+    /// needs a boundary) is closed as a sphere and mapped over it, and says so; its image is
+    /// the sphere's, every texel on the octahedron.
+    #[test]
+    fn a_part_whose_sheet_map_fails_is_fitted_as_a_sphere() {
+        let parts = two_parts();
+        let (mut planned, dropped) = plan(&parts, Boundary::Auto, Layout::FlatOctahedron, 0.0, 4);
+        assert!(dropped.is_empty());
+        let mut part = planned.swap_remove(0);
+        assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
+        part.domain = Domain::Sheet;
+        let sheet_error = part_image(&part, 32 * 32, None).unwrap_err().to_string();
+        let image = part_image_or_sphere(&mut part, 32 * 32, None, Layout::FlatOctahedron)
+            .expect("the sphere's map");
+        assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
+        assert!(part.why.contains("not an open sheet"), "{}", part.why);
+        assert!(part.why.contains(&sheet_error), "{} lacks {sheet_error}", part.why);
+        // Every texel lies on the octahedron |x| + |y| + |z| = 1 (its faces).
+        for p in image.image.texels() {
+            assert!((p.x.abs() + p.y.abs() + p.z.abs() - 1.0).abs() < 1e-9, "{p}");
+        }
     }
 }

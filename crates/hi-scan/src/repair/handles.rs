@@ -5,7 +5,7 @@
 use glam::DVec3;
 use hi_par::*;
 
-use super::holes::{boundary_loops, fill_hole};
+use super::holes::{boundary_loops, fill_holes};
 use super::{ClosedMesh, Repair, edge_key};
 
 /// The length of the shortest loop found on the closed mesh `mesh` that does not separate it
@@ -118,13 +118,15 @@ pub(super) fn cut_handles(
         filled.resize(faces.len(), false);
         // The two cuts are holes of their own; they are not the scan's, so not counted as such.
         // A boundary kept open (a disc's) stays open.
-        for lp in boundary_loops(faces, positions.len()) {
-            let mut key = lp.clone();
-            key.sort_unstable();
-            if !kept_open.contains(&key) {
-                fill_hole(&lp, faces, positions, scan_vertex, filled);
-            }
-        }
+        let cuts: Vec<Vec<u32>> = boundary_loops(faces, positions.len())
+            .into_iter()
+            .filter(|lp| {
+                let mut key = lp.clone();
+                key.sort_unstable();
+                !kept_open.contains(&key)
+            })
+            .collect();
+        fill_holes(&cuts, faces, positions, scan_vertex, filled);
         if euler_characteristic(positions.len(), faces.len(), open) != chi + 2 * cut as i64 {
             // Cannot happen for non-separating loops of a closed mesh; stop rather than loop.
             return;

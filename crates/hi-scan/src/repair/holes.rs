@@ -125,17 +125,86 @@ pub(super) fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
 /// thousands of vertices (the steps it takes grow with the cap's radius in edges squared).
 const FAIRING_ITERATIONS: usize = 4000;
 
+/// The most vertices on a cap's first ring ([`fill_hole`]): a wider hole's cap is made of
+/// triangles wider than the mesh's, so that its size (about this squared over 4π vertices) and
+/// the fairing's work stay bounded however long the hole's rim is.
+const CAP_RING_MAX: usize = 256;
+
+/// The most rings of a cap ([`fill_hole`]).
+const CAP_RINGS_MAX: usize = 64;
+
+/// Closes every loop of `loops` (each in the order the mesh's triangles run along it) by
+/// [`fill_hole`]. The neighbours of the loops' vertices in the mesh, which each cap's fairing
+/// holds fixed, are found in one pass over the triangles before any cap is added (each vertex
+/// of a mesh whose pinched vertices are split lies on one loop at most, so a cap changes no
+/// other loop's neighbours).
+pub(super) fn fill_holes(
+    loops: &[Vec<u32>],
+    faces: &mut Vec<[u32; 3]>,
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    filled: &mut Vec<bool>,
+) {
+    let mut around: std::collections::HashMap<u32, Vec<u32>> =
+        loops.iter().flatten().map(|&v| (v, Vec::new())).collect();
+    gather_neighbours(faces, &mut around);
+    for lp in loops {
+        fill_hole(lp, &around, faces, positions, scan_vertex, filled);
+    }
+}
+
+/// Adds to `around[v]`, for each vertex v it holds, the other corners of the triangles of
+/// `faces` at v (each once).
+fn gather_neighbours(faces: &[[u32; 3]], around: &mut std::collections::HashMap<u32, Vec<u32>>) {
+    for t in faces {
+        for k in 0..3 {
+            if let Some(list) = around.get_mut(&t[k]) {
+                for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
+                    if !list.contains(&other) {
+                        list.push(other);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The triangles of the strip between two closed rings of vertices going the same way round,
+/// `outer` and `inner` (of any counts), the outer ring's vertex i at the fraction i / a of the
+/// way round and the inner ring's j at j / b, both from 0: the triangles advance along
+/// whichever ring's next vertex comes first, so each is as wide as the rings' spacing allows.
+/// Oriented as the mesh whose boundary runs along `outer` in its order.
+fn zip_rings(outer: &[u32], inner: &[u32]) -> Vec<[u32; 3]> {
+    let (a, b) = (outer.len(), inner.len());
+    let mut out = Vec::with_capacity(a + b);
+    let (mut i, mut j) = (0, 0);
+    while i < a || j < b {
+        if j == b || (i < a && (i + 1) * b <= (j + 1) * a) {
+            out.push([outer[(i + 1) % a], outer[i], inner[j % b]]);
+            i += 1;
+        } else {
+            out.push([outer[i % a], inner[j], inner[(j + 1) % b]]);
+            j += 1;
+        }
+    }
+    out
+}
+
 /// Closes the boundary loop `lp` (in the order the mesh's triangles run along it) by rings of
 /// new vertices shrinking towards its centroid, one ring per mean edge length of the loop's
-/// radius, then a fan around the centroid, with triangles about the size of the mesh's. The new
-/// vertices are moved first to the discrete membrane (each the mean of its neighbours, by
-/// Gauss–Seidel sweeps, the loop fixed: as flat as its border allows), then to the thin plate
-/// the surface around it continues into: the umbrella operator applied twice vanishes at
-/// every new vertex (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about it
-/// fixed), so the cap leaves the rim along the surface's own tangent plane, with no crease for
-/// the harmonic surface to ring on.
-pub(super) fn fill_hole(
+/// radius (at most [`CAP_RINGS_MAX`]), each of as many vertices as the loop (a loop longer
+/// than [`CAP_RING_MAX`] edges: that many, on rings spaced as widely as their vertices, so
+/// that the cap's size is bounded), joined by [`zip_rings`], then a fan around the centroid. The new vertices
+/// are moved first to the discrete membrane (each the mean of its neighbours, by Gauss–Seidel
+/// sweeps, the loop fixed: as flat as its border allows), then to the thin plate the surface
+/// around it continues into: the umbrella operator applied twice vanishes at every new vertex
+/// (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about it fixed), so the
+/// cap leaves the rim along the surface's own tangent plane, with no crease for the harmonic
+/// surface to ring on. `around` holds the loop's vertices' neighbours in the mesh
+/// ([`fill_holes`]).
+fn fill_hole(
     lp: &[u32],
+    around: &std::collections::HashMap<u32, Vec<u32>>,
     faces: &mut Vec<[u32; 3]>,
     positions: &mut Vec<DVec3>,
     scan_vertex: &mut Vec<u32>,
@@ -144,53 +213,64 @@ pub(super) fn fill_hole(
     let m = lp.len();
     let at = |k: u32, positions: &[DVec3]| positions[k as usize];
     let centre = lp.iter().map(|&k| at(k, positions)).sum::<DVec3>() / m as f64;
-    let edge =
-        (0..m).map(|i| at(lp[i], positions).distance(at(lp[(i + 1) % m], positions))).sum::<f64>()
-            / m as f64;
+    let perimeter =
+        (0..m).map(|i| at(lp[i], positions).distance(at(lp[(i + 1) % m], positions))).sum::<f64>();
+    // The spacing of the first ring's vertices: the loop's own, or wider for a long loop.
+    let edge = perimeter / m.min(CAP_RING_MAX) as f64;
     let radius = lp.iter().map(|&k| at(k, positions).distance(centre)).sum::<f64>() / m as f64;
     #[expect(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,
-        reason = "clamped to 0..=64"
+        reason = "clamped to 0..=CAP_RINGS_MAX"
     )]
-    let rings = if edge > 0.0 { (radius / edge).round().clamp(0.0, 64.0) as usize } else { 0 };
+    let rings = if edge > 0.0 {
+        (radius / edge).round().clamp(0.0, CAP_RINGS_MAX as f64) as usize
+    } else {
+        0
+    };
+    // The loop's point at the fraction s of the way round (by vertex index, from lp[0]).
+    let on_loop = |s: f64, positions: &[DVec3]| {
+        let x = s * m as f64;
+        #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "in 0..m")]
+        let i = (x.floor() as usize).min(m - 1);
+        at(lp[i], positions).lerp(at(lp[(i + 1) % m], positions), x - i as f64)
+    };
     let first_new = positions.len();
+    let first_face = faces.len();
     let mut outer: Vec<u32> = lp.to_vec();
+    // Every ring as many vertices as the first: with the umbrella operator's equal weights,
+    // rings of equal counts settle evenly spaced (rings that thin out inwards would be drawn
+    // towards the centre, leaving long triangles at the rim).
+    let count = m.min(CAP_RING_MAX);
     for k in 1..=rings {
         let t = k as f64 / (rings + 1) as f64;
-        let inner: Vec<u32> = outer
-            .iter()
-            .enumerate()
-            .map(|(i, _)| {
+        let inner: Vec<u32> = (0..count)
+            .map(|j| {
                 let index = u32::try_from(positions.len()).unwrap_or(u32::MAX);
-                positions.push(at(lp[i], positions).lerp(centre, t));
+                let p = on_loop(j as f64 / count as f64, positions).lerp(centre, t);
+                positions.push(p);
                 scan_vertex.push(ADDED_VERTEX);
                 index
             })
             .collect();
-        for i in 0..m {
-            let j = (i + 1) % m;
-            faces.push([outer[j], outer[i], inner[i]]);
-            faces.push([outer[j], inner[i], inner[j]]);
-            filled.extend([true, true]);
-        }
+        faces.extend(zip_rings(&outer, &inner));
         outer = inner;
     }
     let c = u32::try_from(positions.len()).unwrap_or(u32::MAX);
     positions.push(centre);
     scan_vertex.push(ADDED_VERTEX);
-    for i in 0..m {
-        faces.push([outer[(i + 1) % m], outer[i], c]);
-        filled.push(true);
+    let n = outer.len();
+    for i in 0..n {
+        faces.push([outer[(i + 1) % n], outer[i], c]);
     }
+    filled.resize(faces.len(), true);
     // The membrane: the new vertices' neighbours, then Gauss–Seidel sweeps.
     let free = positions.len() - first_new;
     if free <= 1 {
         return;
     }
     let mut neighbours: Vec<Vec<u32>> = vec![Vec::new(); free];
-    let added = faces.len() - (2 * rings * m + m);
-    for t in &faces[added..] {
+    for t in &faces[first_face..] {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
             for (x, y) in [(a, b), (b, a)] {
@@ -208,37 +288,28 @@ pub(super) fn fill_hole(
             positions[first_new + i] = mean;
         }
     }
-    fair(lp, faces, positions, first_new, &neighbours, FAIRING_ITERATIONS);
+    // The loop's vertices' neighbours on both sides: the mesh's, and the cap's.
+    let mut rim: std::collections::HashMap<u32, Vec<u32>> =
+        lp.iter().map(|&v| (v, around.get(&v).cloned().unwrap_or_default())).collect();
+    gather_neighbours(&faces[first_face..], &mut rim);
+    fair(lp, &rim, positions, first_new, &neighbours, FAIRING_ITERATIONS);
 }
 
 /// The thin-plate fairing of a hole's cap (see [`fill_hole`]): the cap's new vertices (from
-/// `first_new`, with their `neighbours`) placed where the umbrella operator
+/// `first_new`, with their `neighbours`; `around_loop` holds the loop's vertices' neighbours on
+/// both sides) placed where the umbrella operator
 /// U(v) = mean of v's neighbours − v vanishes, in the least-squares sense, at every vertex of
 /// the cap and of the loop `lp` (the loop and the rest of the mesh fixed), by conjugate
 /// gradients on the normal equations (CGLS, three coordinates at once, from the membrane the
 /// caller placed them on), at most `iterations` steps.
 fn fair(
     lp: &[u32],
-    faces: &[[u32; 3]],
+    around_loop: &std::collections::HashMap<u32, Vec<u32>>,
     positions: &mut [DVec3],
     first_new: usize,
     neighbours: &[Vec<u32>],
     iterations: usize,
 ) {
-    // The loop's vertices' neighbours, on the scan's side and the cap's.
-    let mut around_loop: std::collections::HashMap<u32, Vec<u32>> =
-        lp.iter().map(|&v| (v, Vec::new())).collect();
-    for t in faces {
-        for k in 0..3 {
-            if let Some(list) = around_loop.get_mut(&t[k]) {
-                for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
-                    if !list.contains(&other) {
-                        list.push(other);
-                    }
-                }
-            }
-        }
-    }
     let free = neighbours.len();
     // One row per vertex of the loop and the cap: U(v) as coefficients of the free vertices
     // (cap vertex c at column c − first_new), and its fixed part.

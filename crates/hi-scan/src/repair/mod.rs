@@ -59,7 +59,7 @@ use hi_par::*;
 
 use crate::Error;
 use handles::{cut_handles, directed_edges, euler_characteristic};
-use holes::{boundary_loops, fill_hole, split_fans};
+use holes::{boundary_loops, fill_holes, split_fans};
 
 pub use handles::{HANDLE_BLOCKS, MAX_HANDLES, shortest_handle};
 pub use parts::mesh_parts;
@@ -337,11 +337,9 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
     } else {
         None
     };
-    for lp in &loops {
-        fill_hole(lp, &mut kept, &mut positions, &mut scan_vertex, &mut filled);
-        repair.holes += 1;
-        repair.hole_edges += lp.len();
-    }
+    fill_holes(&loops, &mut kept, &mut positions, &mut scan_vertex, &mut filled);
+    repair.holes += loops.len();
+    repair.hole_edges += loops.iter().map(Vec::len).sum::<usize>();
 
     // 7. Cut handles, but a torus's; none if there are more than can be cut.
     let chi_wanted = match closing {

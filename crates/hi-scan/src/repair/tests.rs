@@ -179,3 +179,81 @@ fn loops_around_the_same_handle_are_not_cut_together() {
     let chosen = independent_loops(&t, p.len(), vec![(1.0, meridian(4))], 3);
     assert_eq!(chosen, vec![meridian(4)]);
 }
+
+/// A flat annulus in z = 0 of `rings` rings of `m` quads (two triangles each) about as wide as
+/// they are long, from radius 1 outwards, every triangle facing −z: its inner boundary is a
+/// hole of m edges.
+fn annulus(m: usize, rings: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let tau = std::f64::consts::TAU;
+    let mut p = Vec::new();
+    for r in 0..=rings {
+        let radius = (tau * r as f64 / m as f64).exp();
+        for i in 0..m {
+            let a = tau * i as f64 / m as f64;
+            p.push(DVec3::new(radius * a.cos(), radius * a.sin(), 0.0));
+        }
+    }
+    let id = |r: usize, i: usize| (r * m + i % m) as u32;
+    let mut t = Vec::new();
+    for r in 0..rings {
+        for i in 0..m {
+            let (a, b, c, d) = (id(r, i), id(r, i + 1), id(r + 1, i + 1), id(r + 1, i));
+            t.push([a, b, c]);
+            t.push([a, c, d]);
+        }
+    }
+    (p, t)
+}
+
+/// A hole of thousands of edges is capped by a bounded number of triangles (its first ring
+/// has at most `CAP_RING_MAX` vertices) that close it, wound as the mesh, every one facing
+/// −z as the flat annulus does, none longer than a few of the rim's edges (or of the first
+/// ring's); the faired cap of a flat rim is flat, and stays inside the rim.
+#[test]
+fn caps_of_long_holes_stay_small_flat_and_well_shaped() {
+    for m in [12, 100, 4000] {
+        let (mut p, mut t) = annulus(m, 3);
+        let n0 = p.len();
+        let mut scan_vertex: Vec<u32> = (0..n0 as u32).collect();
+        let mut filled = vec![false; t.len()];
+        let loops = boundary_loops(&t, n0);
+        assert_eq!(loops.len(), 2, "inner and outer rims");
+        // The inner rim: the loop whose vertices lie at radius 1.
+        let inner: Vec<Vec<u32>> = loops
+            .into_iter()
+            .filter(|lp| (p[lp[0] as usize].length() - 1.0).abs() < 1e-9)
+            .collect();
+        assert_eq!(inner.len(), 1);
+        let before = t.len();
+        fill_holes(&inner, &mut t, &mut p, &mut scan_vertex, &mut filled);
+        assert_eq!(filled.len(), t.len());
+        assert!(filled[before..].iter().all(|&f| f) && !filled[..before].iter().any(|&f| f));
+        let added = p.len() - n0;
+        assert!(added < 256 * 256 / 4, "{m} rim edges: {added} cap vertices");
+        assert!(scan_vertex[n0..].iter().all(|&k| k == ADDED_VERTEX));
+        // Only the outer rim is left open, and every edge is used once each way but its own.
+        let open = boundary_loops(&t, p.len());
+        assert_eq!(open.len(), 1);
+        assert!(p[open[0][0] as usize].length() > 1.0 + 1e-9);
+        let mut directed: Vec<(u32, u32)> =
+            t.iter().flat_map(|f| (0..3).map(move |k| (f[k], f[(k + 1) % 3]))).collect();
+        directed.sort_unstable();
+        assert!(directed.windows(2).all(|w| w[0] != w[1]), "{m}: consistently wound");
+        let rim_edge = std::f64::consts::TAU / m as f64;
+        for f in &t[before..] {
+            let [a, b, c] = f.map(|k| p[k as usize]);
+            let normal = (b - a).cross(c - a);
+            assert!(normal.z < 0.0, "{m}: a cap triangle faces +z");
+            let longest = (b - a).length().max((c - b).length()).max((a - c).length());
+            // As wide as the rim's edges, or as the 256 vertices of a long rim's first ring.
+            assert!(
+                longest < 4.0 * rim_edge.max(std::f64::consts::TAU / 256.0),
+                "{m}: {longest} at {}",
+                ((a + b + c) / 3.0).length()
+            );
+        }
+        for q in &p[n0..] {
+            assert!(q.z.abs() < 1e-9 && q.truncate().length() < 1.0, "{m}: {q} off the flat cap");
+        }
+    }
+}

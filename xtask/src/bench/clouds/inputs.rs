@@ -249,8 +249,12 @@ fn topology_input(
         Source::Cgal(file) => match cgal.get_or_insert_with(|| cgal_data(root)) {
             Ok(d) => {
                 let p = d.join(file);
-                let reference =
-                    if file.ends_with(".xyz") { "-".to_owned() } else { path_str(&p)?.to_owned() };
+                // CGAL's point sets (`points_3/`) are their own reference.
+                let reference = if file.starts_with("data/points_3/") {
+                    "-".to_owned()
+                } else {
+                    path_str(&p)?.to_owned()
+                };
                 (p, reference)
             }
             Err(why) => {

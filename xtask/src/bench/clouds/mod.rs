@@ -213,6 +213,13 @@ const TOPOLOGY: &[Topo] = &[
         up: [0.0, 1.0, 0.0],
     },
     Topo {
+        name: "building",
+        source: Source::Cgal("data/points_3/building.ply"),
+        what: "point set with normals: a building's walls and roof, open below",
+        eye: [1.0, -0.7, 0.8],
+        up: [0.0, 0.0, 1.0],
+    },
+    Topo {
         name: "torus knot",
         source: Source::Knot,
         what: "cloud of a trefoil tube made here, genus 1",

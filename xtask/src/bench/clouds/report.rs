@@ -318,7 +318,7 @@ pub(super) fn intro(
          models are also given as their bare vertices (an XYZ of the vertices the triangles \
          use, no triangles). Both programs read the same XYZ file. The scans of other \
          topologies give `hi fit` the mesh file and Poisson the points its triangles use, as \
-         above (a point set with normals, CGAL's kitten, goes to both as positions only; CGAL's \
+         above (a point set with normals, CGAL's kitten and building, goes to both as positions only; CGAL's \
          files are extracted from `{CGAL_DATA}` into `target/xtask-bench/cgal/`); the torus \
          knot is a tube of radius 0.4 about the trefoil ((2 + cos 3t) cos 2t, (2 + cos 3t) sin \
          2t, sin 3t), meshed with 720 × 48 quads and sampled as the clouds are, {} points.\n\n\
