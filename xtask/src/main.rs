@@ -8,9 +8,10 @@
 //!   renders, most of the work, as they are: for drafting, as the figure test checks);
 //! - `bench [topic]`: time our code and the peer programs side by side and write
 //!   `docs/performance.md`: every topic (`bench` or `bench all`) or one topic's section
-//!   (`curves`, `subdivision`, `fit`, `render`), or one subsection (`fit-clouds`: point clouds,
-//!   bare vertices and scans of any topology against Poisson, with `--small` for small inputs
-//!   written under `target/xtask-bench/small/`, and `--only a,b` for some rows);
+//!   (`curves`, `subdivision`, `fit`, `render`, `batch`: scans per minute and the Python calls'
+//!   overhead), or one subsection (`fit-clouds`: point clouds, bare vertices and scans of any
+//!   topology against Poisson, with `--small` for small inputs written under
+//!   `target/xtask-bench/small/`, and `--only a,b` for some rows);
 //! - `crosscheck`: read back every model the figures emit with other programs (tobj, trimesh,
 //!   the Khronos validator, Blender) and run every peer comparison, into `docs/crosscheck.md`;
 //! - `layers`: check that no crate depends on a crate above it (docs/architecture.md).
@@ -94,6 +95,9 @@ enum Topic {
     FitClouds,
     /// Ray tracing the torus by interval Newton, bisection, Bézier patches and a mesh.
     Render,
+    /// Scans fitted per minute (one `hi fit` per scan, `hi fit --out-dir`, `harmonic.fit_many`
+    /// here and on a two-worker Dask cluster), and the Python calls' overhead against Rust's.
+    Batch,
 }
 
 impl Topic {
@@ -106,6 +110,7 @@ impl Topic {
             Self::Fit => "fit",
             Self::FitClouds => "fit-clouds",
             Self::Render => "render",
+            Self::Batch => "batch",
         }
     }
 }
@@ -187,6 +192,11 @@ mod tests {
         assert_eq!(only, ["Bunny", "knot"]);
         let Task::Bench { topic, .. } = read(&["bench"]).unwrap().command else { panic!() };
         assert_eq!(topic, Topic::All);
+        let Task::Bench { topic, small, only } = read(&["bench", "batch"]).unwrap().command else {
+            panic!("not bench");
+        };
+        assert_eq!((topic, small, only.is_empty()), (Topic::Batch, false, true));
+        assert_eq!(topic.name(), "batch");
         assert!(read(&["bench", "fast"]).is_err(), "an unknown topic");
         assert!(read(&["bench", "--only"]).is_err(), "--only without its list");
         assert!(read(&["figures", "--fast"]).is_err(), "an unknown option");
@@ -196,5 +206,6 @@ mod tests {
         assert!(help.to_string().contains("figures") && help.to_string().contains("layers"));
         let help = read(&["bench", "--help"]).unwrap_err().to_string();
         assert!(help.contains("fit-clouds") && help.contains("--only"), "{help}");
+        assert!(help.contains("batch") && help.contains("Dask"), "{help}");
     }
 }

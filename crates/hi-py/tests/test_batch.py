@@ -96,6 +96,17 @@ def test_a_dask_cluster_writes_what_one_machine_writes(scans, tmp_path, client):
     assert [r["status"] for r in again] == ["failed"]
 
 
+def test_each_batch_on_one_client_fits_its_own_scans(scans, tmp_path, client):
+    # Two batches of the same scans on the same client, one after the other, into two
+    # folders: the second must fit its scans into its own folder, not hand back the first's.
+    first = harmonic.fit_many([scans], tmp_path / "first", client=client)
+    second = harmonic.fit_many([scans], tmp_path / "second", client=client)
+    assert [Path(r["output"]).parent.name for r in first] == ["first"] * 4
+    assert [Path(r["output"]).parent.name for r in second] == ["second"] * 4
+    assert sorted(outputs(tmp_path / "second")) == ["flat.glb", "long.glb", "round.glb"]
+    assert outputs(tmp_path / "first") == outputs(tmp_path / "second")
+
+
 def test_object_storage_urls_are_staged_through_the_workers(scans, tmp_path, client):
     pytest.importorskip("fsspec")
     local = harmonic.fit_many([scans / "round.xyz", scans / "long.xyz"], tmp_path / "local")

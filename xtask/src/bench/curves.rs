@@ -31,8 +31,9 @@ const RUNS: usize = 7;
 /// Samples per data point.
 const FACTOR: usize = 16;
 
-/// The data of the peer script: xₖ = (3 sin 0.37k, cos 1.3k + 0.01k).
-fn points(n: usize) -> Vec<DVec2> {
+/// The data of the peer script: xₖ = (3 sin 0.37k, cos 1.3k + 0.01k) (also the curve of
+/// [`super::batch`]'s Python calls).
+pub(super) fn points(n: usize) -> Vec<DVec2> {
     (0..n)
         .map(|k| {
             let k = k as f64;

@@ -14,6 +14,7 @@
 //! | [`subdivision`] | one step of each scheme of §4.5 on ≥ 100 000 faces, against `OpenMesh` and CGAL, and Loop and Catmull-Clark against mesh size |
 //! | [`fit`] | the fitting pipeline per scan (Table 5.1), 4× upsampling against scipy, screened Poisson (pymeshlab), and both against image size; its subsection [`clouds`] (also run alone as `fit-clouds`): point clouds of 2·10⁵ and 2·10⁶ points, bare vertices and scans of any topology against Poisson, time and peak memory as whole processes |
 //! | [`render`] | the torus by interval Newton, interval bisection, Bézier patches and a mesh (§5.6), and time against image size |
+//! | [`batch`] | scans fitted per minute: one `hi fit` process per scan against `hi fit --out-dir`, `harmonic.fit_many` and `fit_many` over a two-worker Dask cluster; and the Python calls' overhead against the same Rust calls, n = 16 … 16 384 |
 //!
 //! `cargo xtask bench` (or `bench all`) runs every topic in turn and writes the whole report
 //! afresh, with a summary table of the headline ratios at the top. Every topic also plots how
@@ -27,6 +28,7 @@
 //! `target/xtask-bench/small/`, never into `docs/`) and `--only NAME,NAME` (only the rows whose
 //! name contains one of the words).
 
+mod batch;
 mod clouds;
 mod curves;
 mod fit;
@@ -49,7 +51,7 @@ use crate::figures::plot::{Legend, Marker, PALETTE, Pen, Plot};
 const REPORT: &str = "docs/performance.md";
 
 /// The topics, in the order of the report.
-const TOPICS: &[&str] = &["curves", "subdivision", "fit", "render"];
+const TOPICS: &[&str] = &["curves", "subdivision", "fit", "render", "batch"];
 
 /// The sub-topics, each with the topic whose section holds its subsection.
 const SUBTOPICS: &[(&str, &str)] = &[("fit-clouds", "fit")];
@@ -149,6 +151,7 @@ pub(crate) fn run(root: &Path, topic: Option<&str>, options: &Options) -> Result
             "subdivision" => subdivision::run(root)?,
             "fit" => fit::run(root, options)?,
             "render" => render::run(root)?,
+            "batch" => batch::run(root)?,
             _ => unreachable!("checked against TOPICS"),
         };
         doc = with_section(&doc, topic, &section.body);

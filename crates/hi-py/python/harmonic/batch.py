@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
+import uuid
 from typing import Any, Iterable, List, Optional, Sequence, Union
 
 from . import _harmonic
@@ -88,8 +89,11 @@ def _fit_on_cluster(
         jobs = [(os.fspath(i), os.fspath(o)) for i, o in jobs]
         summary = None
         submit = _fit_local_path
+    # Keys unique to this call: a key the scheduler still holds from an earlier batch would
+    # hand back that batch's result (its scan, its folder) instead of fitting this one.
+    batch = uuid.uuid4().hex
     futures = {
-        client.submit(submit, i, o, format, key=f"harmonic-fit-{n}", pure=False): n
+        client.submit(submit, i, o, format, key=f"harmonic-fit-{batch}-{n}", pure=False): n
         for n, (i, o) in enumerate(jobs)
     }
     records: List[Optional[dict]] = [None] * len(jobs)
