@@ -445,12 +445,17 @@ fn blending(title: &str) -> Result<Vec<u8>> {
         let points = sample(0.0, (N + 3) as f64, SAMPLES, |u| DVec2::new(u, basis.eval(k, u)));
         let color = PALETTE[k % PALETTE.len()];
         let peak = DVec2::new(k as f64 + 2.0, basis.eval(k, k as f64 + 2.0));
-        plot = plot.curve(points, Pen::solid(color), None).note(
-            peak,
-            &sub("N", k),
-            (0.0, 12.0),
-            color,
-        );
+        // A name whose peak lies on a guide of the domain's ends goes beside it, outside the
+        // domain, clear of the line.
+        let dx = if (peak.x - lo).abs() < 1e-9 {
+            -11.0
+        } else if (peak.x - hi).abs() < 1e-9 {
+            11.0
+        } else {
+            0.0
+        };
+        plot =
+            plot.curve(points, Pen::solid(color), None).note(peak, &sub("N", k), (dx, 12.0), color);
     }
     let sum = sample(lo, hi, SAMPLES, |u| DVec2::new(u, basis.eval_all(u).iter().sum()));
     plot.curve(sum, Pen::dashed(GREY).width(1.5), Some("Σ Nᵢ on [3, 8]"))

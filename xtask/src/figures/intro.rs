@@ -287,25 +287,33 @@ const STAGE_PANEL: (u32, u32) = (400, 370);
 fn stages(title: &str, step: fn(&[DVec2]) -> Vec<DVec2>) -> Result<Vec<u8>> {
     let polygon = stages_polygon();
     let (w, h) = STAGE_PANEL;
-    let mut plots =
-        vec![Plot::plane("control polygon").sized(w, h).polygon(&polygon, true).points(
-            &polygon,
-            Marker::point(INK),
-            None,
-        )];
+    // Room below the polygon for the legend, in every panel alike.
+    let room = [DVec2::new(0.0, -1.2)];
+    let mut plots = vec![
+        Plot::plane("control polygon")
+            .sized(w, h)
+            .include(&room)
+            .polygon(&polygon, true)
+            .points(&polygon, Marker::point(INK), Some("control points"))
+            .legend(Legend::LowerRight),
+    ];
     let mut current = polygon.clone();
     for k in 1..=3 {
         current = step(&current);
         let mut closed = current.clone();
         closed.push(current[0]);
-        plots.push(
-            Plot::plane(&format!("{k} step{}", if k == 1 { "" } else { "s" }))
-                .sized(w, h)
-                .polygon(&polygon, true)
-                .curve(closed, Pen::solid(BLUE), None)
-                .points(&current, Marker::small(VERMILION), None)
-                .points(&polygon, Marker::point(INK), None),
-        );
+        let mut plot = Plot::plane(&format!("{k} step{}", if k == 1 { "" } else { "s" }))
+            .sized(w, h)
+            .include(&room)
+            .polygon(&polygon, true)
+            .curve(closed, Pen::solid(BLUE), None);
+        plot = if k == 1 {
+            plot.points(&current, Marker::small(VERMILION), Some("points after the step"))
+                .legend(Legend::LowerRight)
+        } else {
+            plot.points(&current, Marker::small(VERMILION), None)
+        };
+        plots.push(plot.points(&polygon, Marker::point(INK), None));
     }
     let refs: Vec<&Plot> = plots.iter().collect();
     render_grid(title, &refs, 2)

@@ -441,6 +441,17 @@ impl KappaAxis {
     }
 
     /// For the symmetric log: ticks at 0 and ±10ʲ in `(lo, hi)` (κ values), labelled.
+    /// The range from `lo` to `hi` (lo ≤ 0 ≤ hi), on a symmetric logarithm widened to the
+    /// next power of ten beyond each end that passes the linear part (|κ| above c); as it is
+    /// on a linear axis.
+    fn rounded_out(self, lo: f64, hi: f64) -> (f64, f64) {
+        let Self::SymLog(c) = self else { return (lo, hi) };
+        let out = |v: f64| {
+            if v.abs() <= c { v } else { v.signum() * 10f64.powf(v.abs().log10().ceil()) }
+        };
+        (out(lo), out(hi))
+    }
+
     fn ticks(self, lo: f64, hi: f64) -> Option<Vec<(f64, String)>> {
         let Self::SymLog(c) = self else { return None };
         let mut ticks = vec![(0.0, "0".to_owned())];
@@ -496,8 +507,9 @@ fn curvature(title: &str, polygon: Polygon, method: Method, partner: Method) -> 
         shape = shape.points(&[curve.eval(peak.0)], Marker::ring(INK), None);
     }
 
-    // One κ range for both panels.
-    let (k0, k1) = (lo.min(other_lo).min(0.0), hi.max(other_hi).max(0.0));
+    // One κ range for both panels; on a logarithmic axis, out to the next power of ten each
+    // way, so that the values have a labelled tick above (and below) them.
+    let (k0, k1) = axis.rounded_out(lo.min(other_lo).min(0.0), hi.max(other_hi).max(0.0));
     let (y0, y1) = (axis.map(k0), axis.map(k1));
     let pad = 0.1 * (y1 - y0).max(1e-3 * y1.abs().max(y0.abs()).max(1.0));
     let heading = if matches!(axis, KappaAxis::SymLog(_)) {
