@@ -601,8 +601,9 @@ pub const MLS_NEIGHBOURS: usize = 16;
 
 /// The sharpness s of the Gaussian weight exp(−s d²) of a neighbour at d neighbourhood radii
 /// (the distance to the farthest of the [`MLS_NEIGHBOURS`]) in [`MovingLeastSquares::project`]:
-/// σ = 0.41 radii, so that the nearest half of the neighbours carry the fit and it follows
-/// the points closely, where 1 (as for the patches of [`PointSurface`]) nearly averages them.
+/// σ = 1/√(2s) = 0.29 radii, so that the nearest few neighbours carry the fit and it follows
+/// the points closely, where 1 (σ = 0.71 radii, as for the patches of [`PointSurface`]) nearly
+/// averages them.
 /// Chosen by the mean distance from the points to the fitted surface over the shared models'
 /// bare vertices and clouds of 2·10⁵ noisy points: it fell from 1 to 6 on every one (by 2 to
 /// 14 %), and rose again from 12 on the clouds (the noise followed too).
