@@ -47,15 +47,26 @@ impl Patch {
         self.c = [-c[0], -c[1], c[2], -c[3], c[4], -c[5]];
     }
 
-    /// The point of the patch over x's foot on the tangent plane.
+    /// The point of the patch over x's foot on the tangent plane; beyond [`PATCH_REACH`] of its
+    /// own spacings from its origin (farther than the points it was fitted to), the height of
+    /// the patch's edge in that direction, so that a point far from every point (a texel over
+    /// a wide gap in a scan) is not sent off along the quadric's growth.
     fn project(&self, x: DVec3) -> DVec3 {
         let d = x - self.origin;
         let (u, v) = (d.dot(self.e1), d.dot(self.e2));
+        let reach = PATCH_REACH * self.local;
+        let r = u.hypot(v);
+        let (a, b) = if r > reach && reach > 0.0 { (u * reach / r, v * reach / r) } else { (u, v) };
         let c = &self.c;
-        let h = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
+        let h = c[0] + c[1] * a + c[2] * b + c[3] * a * a + c[4] * a * b + c[5] * b * b;
         self.origin + self.e1 * u + self.e2 * v + self.normal * h
     }
 }
+
+/// How far, in its point's own spacings, a patch's height is taken as fitted (its quadric
+/// was fitted to the point's 16 nearest neighbours, about 2.3 spacings away): beyond, the
+/// height at this distance ([`Patch::project`]).
+const PATCH_REACH: f64 = 4.0;
 
 /// A point set's local surface: a kd-tree over the points, a quadric patch about each, and
 /// the median spacing of the points (see the module documentation).

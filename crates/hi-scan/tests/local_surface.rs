@@ -179,3 +179,28 @@ fn moving_least_squares_keeps_to_the_sheet_it_starts_on() {
     bad[3].x = f64::NAN;
     assert!(hi_scan::implicit::MovingLeastSquares::try_new(&bad).is_err());
 }
+
+/// A point far from every point is projected onto the patches at a height they were fitted
+/// over, not along their quadrics' growth: on the paraboloid z = x² + y² sampled over
+/// [−0.5, 0.5]² (its patches' quadrics z ≈ x² + y², curvature 2), the point (10, 0, 0) goes
+/// to the foot on the edge patches' tangent planes, raised by at most their height at 4
+/// spacings from their points (about 0.1), so no farther from it than its nearest point and
+/// that; the quadrics themselves would lift it by tens along their normals. Near the points
+/// the projection lies on the surface.
+#[test]
+fn far_points_project_to_heights_the_patches_were_fitted_over() {
+    let points: Vec<DVec3> = (0..441)
+        .map(|k| {
+            let (x, y) = ((k % 21) as f64 * 0.05 - 0.5, (k / 21) as f64 * 0.05 - 0.5);
+            DVec3::new(x, y, x * x + y * y)
+        })
+        .collect();
+    let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    let x = DVec3::new(10.0, 0.0, 0.0);
+    let (q, nearest) = surface.project(x, DVec3::Z);
+    assert!(nearest > 9.0);
+    assert!(q.is_finite() && q.distance(x) < nearest + 0.2, "{q}, nearest {nearest}");
+    let (near, _) = surface.project(DVec3::new(0.1, 0.05, 0.2), DVec3::Z);
+    assert!((near.z - (near.x * near.x + near.y * near.y)).abs() < 1e-3, "{near}");
+    assert!(near.distance(DVec3::new(0.1, 0.05, 0.2)) < 0.2, "{near}");
+}

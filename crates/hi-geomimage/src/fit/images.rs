@@ -173,31 +173,37 @@ fn point_sources(
     } else {
         (points.to_vec(), normals.map(<[DVec3]>::to_vec))
     };
-    let sources = |median: bool, finer: &mut bool, clock: &mut Clock<'_>| {
-        let wanted = (rows, cols, texels, median);
+    let sources = |median: bool, rescue: bool, finer: &mut bool, clock: &mut Clock<'_>| {
+        let wanted = (rows, cols, texels, median, rescue);
         point_sources_on(points, (&reps, rep_normals.as_deref()), options, wanted, finer, clock)
     };
     let mut finer = false;
-    let made = match sources(false, &mut finer, clock) {
-        // A grid finer than the median spacing's (for unevenly dense points) resolves thin
-        // parts, but its zero set may be too ragged to parameterise: then the median's, as for
-        // evenly dense points.
-        Err(_) if finer => sources(true, &mut finer, clock),
-        done => done,
-    };
+    let mut made = sources(false, false, &mut finer, clock);
+    // A grid finer than the median spacing's (for unevenly dense points) resolves thin parts,
+    // but its zero set may be too ragged to parameterise: then the median's, as for evenly
+    // dense points.
+    let median = made.is_err() && finer;
+    if median {
+        made = sources(true, false, &mut finer, clock);
+    }
+    // Should a part's sheet or torus map still fail, that part closed as a sphere.
+    if made.is_err() {
+        made = sources(median, true, &mut finer, clock);
+    }
     made.map(|s| Sources { image_points: reps, ..s })
 }
 
 /// [`point_sources`] on the points `reps` (a summary of `points`, or the points themselves)
 /// with their normals; the zero set taken on the grid of [`PointSurface::zero_set_cell`], or
-/// of [`CELL`] median spacings when `median` (the last of `wanted` = (rows, cols, texels,
-/// median)). `finer` says whether the grid taken was finer than the median's. The sources'
-/// `image_points` are left empty for the caller.
+/// of [`CELL`] median spacings when `median` (of `wanted` = (rows, cols, texels, median,
+/// rescue)); with `rescue`, a part whose sheet or torus map fails is closed as a sphere
+/// ([`part_image_or_sphere`]) rather than failing the whole. `finer` says whether the grid taken
+/// was finer than the median's. The sources' `image_points` are left empty for the caller.
 fn point_sources_on(
     points: &[DVec3],
     (reps, rep_normals): (&[DVec3], Option<&[DVec3]>),
     options: &FitOptions,
-    (rows, cols, texels, median): (usize, usize, usize, bool),
+    (rows, cols, texels, median, rescue): (usize, usize, usize, bool, bool),
     finer: &mut bool,
     clock: &mut Clock<'_>,
 ) -> Result<Sources, Error> {
@@ -256,7 +262,8 @@ fn point_sources_on(
     let mut planned = planned;
     for (k, part) in planned.iter_mut().enumerate() {
         let image = clock.run(StageKind::GeometryImage, (k, n), || {
-            settled_part_image(part, &surface, reps, &mls, (texels, kept, size), options.layout)
+            let layout = rescue.then_some(options.layout);
+            settled_part_image(part, &surface, reps, &mls, (texels, kept, size), layout)
         })?;
         out.push(Sourced {
             name: part.name.clone(),
@@ -319,16 +326,21 @@ fn wrapped_source(
 
 /// The image of one part of a point set's zero set in [`point_sources_on`]: sampled from its
 /// parameterisation with its `share` of the texels (`texels`, the parts' area `kept`, the
-/// user's `size`), settled onto the patches of `surface` and refined by moving least squares.
+/// user's `size`), settled onto the patches of `surface` and refined by moving least squares;
+/// with `rescue` (a layout), closed as a sphere in it should its sheet or torus map fail.
 fn settled_part_image(
     part: &mut PlannedPart,
     surface: &PointSurface,
     reps: &[DVec3],
     mls: &MovingLeastSquares,
     (texels, kept, size): (usize, f64, Option<(usize, usize)>),
-    layout: Layout,
+    rescue: Option<Layout>,
 ) -> Result<ShrinkWrapImage, Error> {
-    let image = part_image_or_sphere(part, share(texels, part.area_fraction, kept), size, layout)?;
+    let texels = share(texels, part.area_fraction, kept);
+    let image = match rescue {
+        Some(layout) => part_image_or_sphere(part, texels, size, layout)?,
+        None => part_image(part, texels, size)?,
+    };
     let (r, c) = (image.image.rows(), image.image.cols());
     let mut settled = settle(
         surface,
