@@ -241,6 +241,25 @@ impl Camera {
         self.fov_y
     }
 
+    /// The tangent of half the vertical field of view.
+    pub(crate) fn tan_half(&self) -> f64 {
+        self.tan_half
+    }
+
+    /// Where `point` appears in the image of aspect ratio `aspect`: the (x, y) in [0, 1]² (x
+    /// to the right, y down) whose [`Camera::ray`] passes through it, or `None` when it is not
+    /// in front of the eye (on or behind the plane through the eye normal to the view).
+    #[must_use]
+    pub(crate) fn project(&self, point: DVec3, aspect: f64) -> Option<(f64, f64)> {
+        let v = point - self.eye;
+        let z = v.dot(self.forward);
+        if z <= 0.0 || z.is_nan() {
+            return None;
+        }
+        let (sx, sy) = (v.dot(self.right) / z, v.dot(self.up) / z);
+        Some((0.5 * (sx / (self.tan_half * aspect) + 1.0), 0.5 * (1.0 - sy / self.tan_half)))
+    }
+
     /// The ray through the image point (`x`, `y`) in [0, 1]² (x to the right, y down; (0.5, 0.5)
     /// is the centre) of an image with aspect ratio `aspect` = width/height. Its direction has
     /// unit length.

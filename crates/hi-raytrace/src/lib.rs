@@ -8,7 +8,7 @@
 //! |---|---|---|
 //! | harmonic surface | interval bisection or interval Newton (Krawczyk) on p(u, v) − (o + t·d) = 0, within cells found by a BVH over their interval enclosures (§5.6) | [`HarmonicObject`], [`IntervalMethod`] |
 //! | Bézier patches | flat pieces (subdivision) in a BVH over their control boxes, Newton in (u, v, t) on the exact patch (§5.6, §5.7) | [`BezierObject`] |
-//! | triangle mesh | BVH, watertight f64 ray–triangle test (§5.5) | [`MeshObject`] |
+//! | triangle mesh | BVH, watertight f64 ray–triangle test (§5.5); in a render, the camera rays and the shadow rays towards directional lights find their triangles by image bins and light-space grids instead (the same test, the same hits, a few times faster) | [`MeshObject`] |
 //!
 //! and a [`Camera`] (look-at, vertical field of view), a [`Scene`] with directional and point
 //! [`Light`]s, Blinn–Phong shading with shadow rays whose origins are offset by the error bound
@@ -39,6 +39,7 @@
 //! | `schemars` | no | JSON schemas (`schemars::JsonSchema`) of the `serde` forms of cameras, lights and materials |
 
 mod bezier;
+mod bins;
 mod bvh;
 mod camera;
 mod error;

@@ -13,9 +13,11 @@ use std::time::{Duration, Instant};
 use hi_mesh::linear_to_srgb;
 use hi_par::*;
 
+use crate::bins::{LightGrids, ScreenBins};
 use crate::camera::Camera;
 use crate::error::Error;
-use crate::scene::Scene;
+use crate::ray::Ray;
+use crate::scene::{Geometry, Scene};
 
 /// Largest width or height accepted.
 pub const MAX_SIZE: u32 = 1 << 14;
@@ -253,12 +255,17 @@ pub fn render(
     let done = AtomicUsize::new(0);
     let aspect = f64::from(w) / f64::from(h);
     let background = scene.background();
+    // The meshes' triangles binned for the camera rays and for the shadow rays of each
+    // directional light (`crate::bins`): the same hits as the BVH's, found faster.
+    let accel =
+        Accel { screen: ScreenBins::new(scene, camera, w, h), lights: LightGrids::new(scene) };
     // The tiles on all cores (the `parallel` feature) or in turn; each is computed alone, so
     // the image is the same either way.
     let tiles: Vec<(u32, u32, Vec<[u8; 3]>, RayCounts)> = (0..n_tiles)
         .into_par_iter()
         .map(|tile| {
-            let (pixels, counts) = render_tile(scene, camera, options, tile, aspect, background);
+            let (pixels, counts) =
+                render_tile(scene, &accel, camera, options, tile, aspect, background);
             let (x0, y0) = ((tile as u32 % nx) * ts, (tile as u32 / nx) * ts);
             let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
             if let Some(report) = progress {
@@ -283,12 +290,19 @@ pub fn render(
     Ok(Rendering { width: w, height: h, pixels: image_pixels, counts, elapsed: start.elapsed() })
 }
 
+/// The binned triangles of a render's meshes (`crate::bins`).
+struct Accel {
+    screen: ScreenBins,
+    lights: LightGrids,
+}
+
 /// One tile of [`render`] (tile index `tile`, row-major), on its own: its pixels, row by
 /// row, and the rays cast. With a first pass (`options.first_pass`), a pixel whose first
 /// samples agree with each other and with its neighbours' is their mean; every other pixel
 /// takes all `samples_per_pixel`.
 fn render_tile(
     scene: &Scene,
+    accel: &Accel,
     camera: &Camera,
     options: &RenderOptions,
     tile: usize,
@@ -303,22 +317,58 @@ fn render_tile(
     let (x1, y1) = ((x0 + ts).min(w), (y0 + ts).min(h));
     let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
     let mut counts = RayCounts::default();
+    let first = options.first_pass;
+    let adaptive = first > 0 && first < spp;
+    // The pixels whose samples may be taken: the tile, and with a first pass a one-pixel
+    // border around it (a pixel whose few samples all miss a thin edge shows it by differing
+    // from a neighbour).
+    let (bx0, by0) = if adaptive { (x0.saturating_sub(1), y0.saturating_sub(1)) } else { (x0, y0) };
+    let (bx1, by1) = if adaptive { ((x1 + 1).min(w), (y1 + 1).min(h)) } else { (x1, y1) };
+    let bw = (bx1 - bx0) as usize;
+    // Every sample's camera ray, and its nearest hit on the meshes, found for all of them at
+    // once by the bins; a sample not taken in the end costs its ray and its few triangle tests.
+    let at: Vec<(f64, f64)> = (by0..by1)
+        .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))
+        .flat_map(|(x, y)| (0..spp).map(move |s| (x, y, s)))
+        .map(|(x, y, s)| {
+            let (ox, oy) = sample_offset(x, y, s, spp);
+            (f64::from(x) + ox, f64::from(y) + oy)
+        })
+        .collect();
+    let rays: Vec<Ray> =
+        at.iter().map(|&(x, y)| camera.ray(x / f64::from(w), y / f64::from(h), aspect)).collect();
+    let mesh_hits = if accel.screen.any() {
+        accel.screen.nearest(scene, (bx0, by0, bx1, by1), spp, &rays, &at)
+    } else {
+        vec![None; rays.len()]
+    };
+    let is_mesh: Vec<bool> =
+        scene.objects().iter().map(|o| matches!(o.geometry, Geometry::Mesh(_))).collect();
     // Samples `from..to` of the `spp` of pixel (x, y), added to `sum`; returns the
     // spread of these samples in their widest channel.
     let mut samples = |x: u32, y: u32, from: u32, to: u32, sum: &mut [f64; 3]| {
         let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+        let pixel = ((y - by0) as usize * bw + (x - bx0) as usize) * spp as usize;
         for s in from..to {
-            let (ox, oy) = sample_offset(x, y, s, spp);
-            let ray = camera.ray(
-                (f64::from(x) + ox) / f64::from(w),
-                (f64::from(y) + oy) / f64::from(h),
-                aspect,
-            );
+            let ray = &rays[pixel + s as usize];
             counts.camera += 1;
-            let color = match scene.intersect(&ray) {
+            // (The bins hold the hits of meshes only.)
+            let on_mesh = mesh_hits[pixel + s as usize].and_then(|(index, tri, h)| {
+                match &scene.objects()[index].geometry {
+                    Geometry::Mesh(m) => Some(scene.mesh_hit(index, m, tri, &h, ray)),
+                    _ => None,
+                }
+            });
+            let color = match scene.intersect_after(ray, on_mesh, |i| !is_mesh[i]) {
                 Some(hit) => {
                     counts.hits += 1;
-                    let (c, n_shadow, blocked) = scene.shade(&ray, &hit);
+                    // The triangle the shadow rays leave, when the hit is on a mesh.
+                    let from = mesh_hits[pixel + s as usize]
+                        .map(|(index, tri, _)| (index, tri))
+                        .filter(|&(index, _)| index == hit.object);
+                    let (c, n_shadow, blocked) = scene.shade(ray, &hit, |light, shadow| {
+                        accel.lights.occluded(scene, light, shadow, from)
+                    });
                     counts.shadow += n_shadow;
                     counts.shadowed += usize::from(blocked);
                     c
@@ -333,14 +383,8 @@ fn render_tile(
         }
         (0..3).map(|k| hi[k] - lo[k]).fold(0.0f32, f32::max)
     };
-    let first = options.first_pass;
-    let adaptive = first > 0 && first < spp;
-    // The first pass over the tile and a one-pixel border around it (a pixel whose
-    // few samples all miss a thin edge shows it by differing from a neighbour): the
-    // sum of each pixel's first samples, their mean and their spread.
-    let (bx0, by0) = (x0.saturating_sub(1), y0.saturating_sub(1));
-    let (bx1, by1) = ((x1 + 1).min(w), (y1 + 1).min(h));
-    let bw = (bx1 - bx0) as usize;
+    // The first pass over the tile and its border: the sum of each pixel's first samples,
+    // their mean and their spread.
     let coarse: Vec<([f64; 3], [f64; 3], f32)> = if adaptive {
         (by0..by1)
             .flat_map(|y| (bx0..bx1).map(move |x| (x, y)))

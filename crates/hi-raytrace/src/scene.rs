@@ -9,7 +9,7 @@ use hi_bezier::Aabb;
 use crate::bezier::BezierObject;
 use crate::error::{Error, check_finite};
 use crate::harmonic::HarmonicObject;
-use crate::mesh::MeshObject;
+use crate::mesh::{MeshObject, TriangleHit};
 use crate::ray::{Hit, Ray, offset_ray_origin};
 
 /// The geometry of an object.
@@ -31,6 +31,16 @@ impl Geometry {
             Geometry::Mesh(m) => m.bounds(),
             Geometry::Bezier(b) => b.bounds(),
             Geometry::Harmonic(h) => h.bounds(),
+        }
+    }
+
+    /// Whether the geometry meets `ray` in its (`t_min`, `t_max`) (a shadow ray's any-hit
+    /// query).
+    pub(crate) fn occluded(&self, ray: &Ray) -> bool {
+        match self {
+            Geometry::Mesh(m) => m.occluded(ray),
+            Geometry::Bezier(b) => b.occluded(ray),
+            Geometry::Harmonic(s) => s.occluded(ray),
         }
     }
 }
@@ -276,24 +286,27 @@ impl Scene {
     /// The nearest hit of `ray` on any object.
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        let mut best: Option<Hit> = None;
+        self.intersect_after(ray, None, |_| true)
+    }
+
+    /// The nearest hit of `ray` on the objects for which `take` holds, each tried in turn with
+    /// the ray cut at the nearest hit so far (starting from `best`) and kept only if strictly
+    /// nearer.
+    pub(crate) fn intersect_after(
+        &self,
+        ray: &Ray,
+        mut best: Option<Hit>,
+        take: impl Fn(usize) -> bool,
+    ) -> Option<Hit> {
         for (index, object) in self.objects.iter().enumerate() {
+            if !take(index) {
+                continue;
+            }
             let r = ray.with_t_max(best.map_or(ray.t_max, |b| b.t));
             let hit = match &object.geometry {
-                Geometry::Mesh(m) => m.intersect(&r).map(|(tri, h)| {
-                    let (point, error, geometric, shading, color) = m.surface_at(tri, &h);
-                    let color = m.edge_color(tri, &h, &r).or(color);
-                    Hit {
-                        t: h.t,
-                        point,
-                        error,
-                        geometric_normal: geometric,
-                        shading_normal: shading,
-                        uv: (h.b[1], h.b[2]),
-                        color: color.unwrap_or(object.material.color),
-                        object: index,
-                    }
-                }),
+                Geometry::Mesh(m) => {
+                    m.intersect(&r).map(|(tri, h)| self.mesh_hit(index, m, tri, &h, &r))
+                }
                 Geometry::Bezier(b) => b.intersect(&r).map(|h| {
                     let (point, error, normal, uv, color) = b.surface_at(&h);
                     Hit {
@@ -330,20 +343,45 @@ impl Scene {
         best
     }
 
+    /// The hit record of the hit `h` of `ray` on triangle `tri` of object `index`, the mesh `m`.
+    pub(crate) fn mesh_hit(
+        &self,
+        index: usize,
+        m: &MeshObject,
+        tri: usize,
+        h: &TriangleHit,
+        ray: &Ray,
+    ) -> Hit {
+        let (point, error, geometric, shading, color) = m.surface_at(tri, h);
+        let color = m.edge_color(tri, h, ray).or(color);
+        Hit {
+            t: h.t,
+            point,
+            error,
+            geometric_normal: geometric,
+            shading_normal: shading,
+            uv: (h.b[1], h.b[2]),
+            color: color.unwrap_or(self.objects[index].material.color),
+            object: index,
+        }
+    }
+
     /// Whether anything lies on `ray` between its `t_min` and `t_max`: the any-hit query of
     /// shadow rays, which stops at the first hit found rather than the nearest.
     #[must_use]
     pub fn occluded(&self, ray: &Ray) -> bool {
-        self.objects.iter().any(|object| match &object.geometry {
-            Geometry::Mesh(m) => m.occluded(ray),
-            Geometry::Bezier(b) => b.occluded(ray),
-            Geometry::Harmonic(s) => s.occluded(ray),
-        })
+        self.objects.iter().any(|object| object.geometry.occluded(ray))
     }
 
     /// The light leaving `hit` towards the eye of `ray` (linear RGB), with the number of shadow
-    /// rays cast, and whether a light facing the surface was blocked.
-    pub(crate) fn shade(&self, ray: &Ray, hit: &Hit) -> ([f32; 3], usize, bool) {
+    /// rays cast, and whether a light facing the surface was blocked. `occluded(k, ray)` answers
+    /// the shadow ray towards light `k` (as [`Scene::occluded`] does).
+    pub(crate) fn shade(
+        &self,
+        ray: &Ray,
+        hit: &Hit,
+        occluded: impl Fn(usize, &Ray) -> bool,
+    ) -> ([f32; 3], usize, bool) {
         let material = &self.objects[hit.object].material;
         // Two-sided surfaces: the normals that face the viewer.
         let (mut n, mut ng) = (hit.shading_normal, hit.geometric_normal);
@@ -361,7 +399,7 @@ impl Scene {
         }
         let mut n_shadow = 0;
         let mut blocked = false;
-        for light in &self.lights {
+        for (light_index, light) in self.lights.iter().enumerate() {
             let (l, dist, intensity) = match *light {
                 Light::Directional { direction, intensity }
                 | Light::Fill { direction, intensity } => {
@@ -390,14 +428,18 @@ impl Scene {
             if !matches!(light, Light::Fill { .. }) {
                 let shadow = Ray { origin, dir: l, t_min: 0.0, t_max };
                 n_shadow += 1;
-                if self.occluded(&shadow) {
+                if occluded(light_index, &shadow) {
                     blocked = true;
                     continue;
                 }
             }
-            let h = (l + view).normalize_or_zero();
-            let spec = f64::from(material.specular)
-                * n.dot(h).max(0.0).powf(f64::from(material.shininess));
+            // (No highlight to compute on a matt surface.)
+            let spec = if material.specular > 0.0 {
+                let h = (l + view).normalize_or_zero();
+                f64::from(material.specular) * n.dot(h).max(0.0).powf(f64::from(material.shininess))
+            } else {
+                0.0
+            };
             for k in 0..3 {
                 out[k] += intensity[k] * (f64::from(material.diffuse) * albedo[k] * cos + spec);
             }

@@ -196,27 +196,25 @@ pub(crate) fn render_close_up(
     render_mesh(mesh, &edges, &camera, Some((b.min, b.max)), from, MODEL_COLOR)
 }
 
-/// A render of the point set `points` of figure `number`, each point a small smooth ball
-/// (an octahedron with its normals from its centre) of radius `size` times the points'
-/// bounding-box diagonal, framed and lit as [`render_models`] frames a model, on white with no
-/// floor (the speckled shadow of thousands of balls says nothing and triples the file).
+/// A render of the point set `points` of figure `number`, each point a small ball of radius
+/// `size` times the points' bounding-box diagonal (`surfaces::ball`: round as seen at the size the
+/// points are drawn, with its normals from its centre), framed and lit as [`render_models`]
+/// frames a model, on white with no floor (the speckled shadow of thousands of balls says
+/// nothing and triples the file).
 pub(crate) fn render_points(number: (u32, u32), points: &[DVec3], size: f64) -> Result<Vec<u8>> {
     ensure!(!points.is_empty(), "no points to draw");
     let (lo, hi) = points
         .iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let r = size * (hi - lo).length();
-    let axes = [DVec3::X, -DVec3::X, DVec3::Y, -DVec3::Y, DVec3::Z, -DVec3::Z];
-    // The eight faces of the octahedron as indices into `axes`, wound outwards.
-    let faces: [[u32; 3]; 8] =
-        [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]];
-    let mut positions = Vec::with_capacity(6 * points.len());
-    let mut normals = Vec::with_capacity(6 * points.len());
-    let mut triangles = Vec::with_capacity(8 * points.len());
+    let (unit, faces) = super::surfaces::ball();
+    let mut positions = Vec::with_capacity(unit.len() * points.len());
+    let mut normals = Vec::with_capacity(unit.len() * points.len());
+    let mut triangles = Vec::with_capacity(faces.len() * points.len());
     for (k, p) in points.iter().enumerate() {
-        let base = u32::try_from(6 * k)?;
-        positions.extend(axes.iter().map(|a| *p + *a * r));
-        normals.extend(axes);
+        let base = u32::try_from(unit.len() * k)?;
+        positions.extend(unit.iter().map(|a| *p + *a * r));
+        normals.extend(unit.iter().copied());
         triangles.extend(faces.iter().map(|f| f.map(|i| base + i)));
     }
     let uvs = vec![DVec2::ZERO; positions.len()];

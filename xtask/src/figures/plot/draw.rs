@@ -99,10 +99,22 @@ impl Plot {
             self.draw_axes(&mut chart, y_label)?;
         }
 
+        // The rings (a peak marked on a curve), which point labels keep clear of too.
+        let rings: Vec<(DVec2, f64)> = self
+            .marks
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Points { points, marker, .. } if !marker.filled => {
+                    Some(points.iter().map(move |p| (*p, marker.radius)))
+                }
+                _ => None,
+            })
+            .flatten()
+            .collect();
         let mut marks: Vec<&Mark> = self.marks.iter().collect();
         marks.sort_by_key(|m| m.layer());
         for mark in marks {
-            draw_mark(&mut chart, mark, (xr, yr), unit)?;
+            draw_mark(&mut chart, mark, (xr, yr), unit, &rings)?;
         }
 
         if let Some(position) = self.legend {
@@ -149,12 +161,14 @@ impl Plot {
 type Chart<'a, 'b, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, Y>>;
 
 /// Draws one mark on `chart`, whose ranges are `(xr, yr)` and whose data units per drawing
-/// unit are `unit`.
+/// unit are `unit`; `rings` (centre, radius in pixels) are the plot's ring markers, which
+/// labels keep clear of.
 fn draw_mark<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
     chart: &mut Chart<'_, '_, Y>,
     mark: &Mark,
     (xr, yr): ((f64, f64), (f64, f64)),
     unit: DVec2,
+    rings: &[(DVec2, f64)],
 ) -> Result<()> {
     match mark {
         Mark::Extent { .. } => {}
@@ -190,7 +204,7 @@ fn draw_mark<Y: Ranged<ValueType = f64> + ValueFormatter<f64>>(
             let style = TextStyle::from(("serif", font(15.0)).into_font().style(FontStyle::Italic))
                 .color(&INK)
                 .pos(Pos::new(HPos::Center, VPos::Center));
-            let offsets = label_offsets(points, names, *closed, unit);
+            let offsets = label_offsets(points, names, *closed, unit, rings);
             let texts = points.iter().zip(names).zip(offsets).map(|((p, name), off)| {
                 EmptyElement::at((p.x, p.y))
                     + Text::new(name.clone(), (off.0, off.1), style.clone())
@@ -277,7 +291,13 @@ pub(super) fn dash(points: &[DVec2], on: f64, off: f64, unit: DVec2) -> Vec<Vec<
 }
 
 /// Offsets in drawing units (y down) of the labels of `points`: away from both neighbours.
-fn label_offsets(points: &[DVec2], names: &[String], closed: bool, unit: DVec2) -> Vec<(i32, i32)> {
+fn label_offsets(
+    points: &[DVec2],
+    names: &[String],
+    closed: bool,
+    unit: DVec2,
+    rings: &[(DVec2, f64)],
+) -> Vec<(i32, i32)> {
     let n = points.len();
     let screen = |p: DVec2| DVec2::new(p.x / unit.x, -p.y / unit.y);
     let centroid = points.iter().copied().sum::<DVec2>() / n.max(1) as f64;
@@ -314,7 +334,26 @@ fn label_offsets(points: &[DVec2], names: &[String], closed: bool, unit: DVec2) 
                 }
             }
             let chars = names.get(i).map_or(1, |s| s.chars().count());
-            let off = clear_of_point(dir, chars) * f64::from(SCALE);
+            let scale = f64::from(SCALE);
+            let mut off = clear_of_point(dir, chars);
+            // Then further along the same way, a pixel at a time (at most 30), until the
+            // label's box also clears every ring by 2 pixels.
+            let half = DVec2::new(3.75 * chars as f64 + 2.0, 8.0);
+            let touches = |off: DVec2| {
+                rings.iter().any(|&(q, radius)| {
+                    let centre = p / scale + off;
+                    let q = screen(q) / scale;
+                    let nearest = q.clamp(centre - half, centre + half);
+                    nearest.distance(q) < radius + 2.0
+                })
+            };
+            for _ in 0..30 {
+                if !touches(off) {
+                    break;
+                }
+                off += dir;
+            }
+            let off = off * scale;
             (off.x.round() as i32, off.y.round() as i32)
         })
         .collect()

@@ -44,7 +44,7 @@ use hi_surface::{ParamRange, ParamWindow};
 use meshes::{control_mesh, parametric_mesh, with_markers};
 
 pub(crate) use colours::{colour_bar, colour_bar_svg, has_colour_bar};
-pub(crate) use meshes::beads;
+pub(crate) use meshes::{ball, beads};
 
 /// The fraction of the parametric surface's area whose curvature the colour scale spans.
 const COVERAGE: f64 = 0.95;
@@ -121,7 +121,7 @@ const COMPARISON_DRAWN: &str = "Six models, as the thesis's six pictures: (a) th
     and (c, f): the 95th percentile of the parametric surface's \\|values\\| (listed in the table); values beyond ±a \
     take the end colours, undefined values (poles) mid grey. Each curvature picture has its colour bar with its values \
     beside the render, and says how many values lie beyond its ends. The thesis's red spheres at \
-    the samples are drawn in (d), which passes through them, as small red octahedra on a light grey surface (not in \
+    the samples are drawn in (d), which passes through them, as small red balls on a light grey surface (not in \
     (a), to keep the files small).";
 
 /// Figures 5.31–5.43, one per entry of [`SPECS`]: `$i` is the index, `$a` the title of panel (a).
@@ -232,7 +232,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Tensor product harmonic surfaces",
         drawn: "(a) The harmonic sphere over u ∈ [0, ½] and (b) the harmonic torus, meshed with 24×48 quads \
                 (24 along the meridian or around the tube, 48 around the axis; one vertex per pole), light grey, with the \
-                16 interpolation points overlaid as small red octahedra (the sphere's 4 points at each pole are one).",
+                16 interpolation points overlaid as small red balls (the sphere's 4 points at each pole are one).",
         data: "the exact 4×4 grids of docs/math.md §3 (`hi_surface::sphere(1)`, `hi_surface::torus(2, 1)`): the diamond \
                of four points turned by 90° three times.",
         format: Format::Glb,
@@ -582,13 +582,38 @@ mod tests {
     }
 
     #[test]
-    fn markers_are_closed_outward_octahedra() {
+    fn markers_are_closed_outward_balls() {
         let mesh = control_mesh(&hi_surface::torus(2.0, 1.0)).expect("meshes");
         let marked = with_markers(&mesh, &[DVec3::ZERO, DVec3::ZERO], 0.5).expect("marks");
-        assert_eq!(marked.n_vertices(), mesh.n_vertices() + 6, "one octahedron");
-        for t in &marked.triangles()[mesh.n_triangles()..] {
+        // One ball: the octahedron's 6 corners and its 12 edges halved (12 more), its 8 faces
+        // cut into 4: 18 vertices, 32 faces.
+        assert_eq!(marked.n_vertices(), mesh.n_vertices() + 18, "one ball");
+        let faces = &marked.triangles()[mesh.n_triangles()..];
+        assert_eq!(faces.len(), 32);
+        let mut edges = std::collections::BTreeMap::new();
+        for t in faces {
             let [a, b, c] = t.map(|k| marked.positions()[k as usize]);
+            // Outward, on the sphere of radius 0.5, and closed (each edge in two faces, once
+            // each way).
             assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "face {t:?} points inward");
+            for p in [a, b, c] {
+                assert!((p.length() - 0.5).abs() < 1e-12);
+            }
+            for k in 0..3 {
+                *edges.entry((t[k], t[(k + 1) % 3])).or_insert(0) += 1;
+            }
         }
+        assert!(edges.iter().all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
+        // Inscribed in the sphere, its area is below the sphere's (4π·0.25 = π) and, cut once,
+        // above 80 % of it (the octahedron alone has 55 %).
+        let area: f64 = faces
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|k| marked.positions()[k as usize]);
+                0.5 * (b - a).cross(c - a).length()
+            })
+            .sum();
+        let ratio = area / std::f64::consts::PI;
+        assert!(ratio > 0.8 && ratio < 1.0, "area {area}");
     }
 }
