@@ -39,6 +39,12 @@ const BIN: u32 = 32;
 /// Most cells of a light grid along either side.
 const GRID_MAX_SIDE: usize = 4096;
 
+/// Most entries (a triangle listed in a bin or a cell) a mesh's bins or a light grid may hold;
+/// a mesh that would need more (thousands of triangles each spanning the whole image or the
+/// whole grid: a pathological soup) keeps its BVH for those rays instead, so memory and the
+/// `u32` offsets stay bounded.
+const MAX_ENTRIES: u64 = 1 << 28;
+
 /// Cells of a light grid per triangle of its mesh: cells smaller than the triangles, so that a
 /// cell lists few more than the triangles over its centre.
 const CELLS_PER_TRIANGLE: f64 = 4.0;
@@ -141,7 +147,9 @@ impl ScreenBins {
             .objects()
             .iter()
             .map(|object| match &object.geometry {
-                Geometry::Mesh(mesh) => Some(mesh_bins(mesh, camera, width, height, columns, rows)),
+                Geometry::Mesh(mesh) => {
+                    mesh_bins(mesh, camera, (width, height), (columns, rows), MAX_ENTRIES)
+                }
                 _ => None,
             })
             .collect();
@@ -151,6 +159,12 @@ impl ScreenBins {
     /// Whether the scene has a mesh (otherwise the bins give nothing).
     pub(crate) fn any(&self) -> bool {
         self.objects.iter().any(Option::is_some)
+    }
+
+    /// Whether object `index` is a mesh with bins (its camera rays are answered by
+    /// [`ScreenBins::nearest`]; any other object's by its own structure).
+    pub(crate) fn binned(&self, index: usize) -> bool {
+        self.objects.get(index).is_some_and(Option::is_some)
     }
 
     /// The nearest mesh hit of each sample of the pixels `x0..x1` × `y0..y1` (`region`):
@@ -222,15 +236,15 @@ impl ScreenBins {
     }
 }
 
-/// The bins of one mesh (see [`ScreenBins`]).
+/// The bins of one mesh (see [`ScreenBins`]) in a `width` × `height` image of `columns` ×
+/// `rows` bins; `None` when they would hold more than `limit` entries ([`MAX_ENTRIES`]).
 fn mesh_bins(
     mesh: &MeshObject,
     camera: &Camera,
-    width: u32,
-    height: u32,
-    columns: u32,
-    rows: u32,
-) -> MeshBins {
+    (width, height): (u32, u32),
+    (columns, rows): (u32, u32),
+    limit: u64,
+) -> Option<MeshBins> {
     let positions = mesh.mesh().positions();
     let aspect = f64::from(width) / f64::from(height);
     let (w, h) = (f64::from(width), f64::from(height));
@@ -282,6 +296,14 @@ fn mesh_bins(
         .collect();
     let n_bins = (columns * rows) as usize;
     let bins_of = |b: &PixelBox| (b.x0 / BIN..=b.x1 / BIN, b.y0 / BIN..=b.y1 / BIN);
+    let entries: u64 = boxes
+        .iter()
+        .flatten()
+        .map(|b| u64::from(b.x1 / BIN - b.x0 / BIN + 1) * u64::from(b.y1 / BIN - b.y0 / BIN + 1))
+        .sum();
+    if entries > limit {
+        return None;
+    }
     let mut counts = vec![0u32; n_bins + 1];
     for b in boxes.iter().flatten() {
         let (xs, ys) = bins_of(b);
@@ -308,7 +330,7 @@ fn mesh_bins(
             }
         }
     }
-    MeshBins { offsets, triangles, boxes }
+    Some(MeshBins { offsets, triangles, boxes })
 }
 
 /// The triangles of one mesh listed in a uniform grid over the plane normal to a directional
@@ -336,8 +358,13 @@ pub(crate) struct LightGrid {
 
 impl LightGrid {
     /// The grid of `mesh` for light rays along `direction` (not normalised, not zero: the
-    /// scene checks its lights).
-    pub(crate) fn new(mesh: &MeshObject, direction: DVec3) -> Self {
+    /// scene checks its lights); `None` when it would hold more than [`MAX_ENTRIES`].
+    pub(crate) fn new(mesh: &MeshObject, direction: DVec3) -> Option<Self> {
+        Self::limited(mesh, direction, MAX_ENTRIES)
+    }
+
+    /// [`LightGrid::new`] with at most `limit` entries.
+    fn limited(mesh: &MeshObject, direction: DVec3, limit: u64) -> Option<Self> {
         let triangles = mesh.mesh().triangles();
         let direction = direction.normalize();
         let a = direction.any_orthonormal_vector();
@@ -385,6 +412,11 @@ impl LightGrid {
                 ]
             })
             .collect();
+        let entries: u64 =
+            ranges.iter().map(|r| ((r[1] - r[0] + 1) * (r[3] - r[2] + 1)) as u64).sum();
+        if entries > limit {
+            return None;
+        }
         let n_cells = size[0] * size[1];
         let mut offsets = vec![0u32; n_cells + 1];
         for r in &ranges {
@@ -435,7 +467,7 @@ impl LightGrid {
                 area.abs() <= slack * extent
             })
             .collect();
-        LightGrid {
+        Some(LightGrid {
             direction,
             axes,
             origin,
@@ -446,7 +478,7 @@ impl LightGrid {
             flat,
             edge_on,
             slack,
-        }
+        })
     }
 
     /// Whether the ray (along this grid's light) meets a triangle of `mesh` in its
@@ -510,7 +542,8 @@ impl LightGrid {
 }
 
 /// The light grids of a scene: per light, per object, a grid where the light is directional
-/// (a fill light casts no shadow) and the object is a mesh.
+/// (a fill light casts no shadow) and the object is a mesh (not a pathological one, see
+/// [`MAX_ENTRIES`]).
 #[derive(Debug)]
 pub(crate) struct LightGrids {
     grids: Vec<Vec<Option<LightGrid>>>,
@@ -527,7 +560,7 @@ impl LightGrids {
                     .objects()
                     .iter()
                     .map(|o| match &o.geometry {
-                        Geometry::Mesh(mesh) => Some(LightGrid::new(mesh, direction)),
+                        Geometry::Mesh(mesh) => LightGrid::new(mesh, direction),
                         _ => None,
                     })
                     .collect(),
@@ -757,5 +790,27 @@ mod tests {
             }
         }
         assert!(blocked > 5_000 && free > 5_000, "{blocked} blocked, {free} free");
+    }
+
+    /// A mesh whose bins or grid would hold more entries than allowed gets none (and keeps its
+    /// BVH); at the limit it gets them.
+    #[test]
+    fn too_many_entries_mean_no_bins() {
+        let (scene, camera) = scene();
+        let Geometry::Mesh(sphere) = &scene.objects()[0].geometry else { panic!() };
+        let (size, bins) = ((160, 120), (5, 4));
+        let full = mesh_bins(sphere, &camera, size, bins, MAX_ENTRIES).unwrap();
+        let n = full.triangles.len() as u64;
+        assert!(n > 1000);
+        assert!(mesh_bins(sphere, &camera, size, bins, n).is_some());
+        assert!(mesh_bins(sphere, &camera, size, bins, n - 1).is_none());
+        let light = DVec3::new(-0.7, -1.0, 2.0);
+        let grid = LightGrid::new(sphere, light).unwrap();
+        let n = grid.triangles.len() as u64;
+        assert!(LightGrid::limited(sphere, light, n).is_some());
+        assert!(LightGrid::limited(sphere, light, n - 1).is_none());
+        // The scene's meshes all have bins here.
+        let screen = ScreenBins::new(&scene, &camera, 160, 120);
+        assert!((0..3).all(|i| screen.binned(i)) && !screen.binned(3));
     }
 }

@@ -342,8 +342,7 @@ fn render_tile(
     } else {
         vec![None; rays.len()]
     };
-    let is_mesh: Vec<bool> =
-        scene.objects().iter().map(|o| matches!(o.geometry, Geometry::Mesh(_))).collect();
+    let binned: Vec<bool> = (0..scene.objects().len()).map(|i| accel.screen.binned(i)).collect();
     // Samples `from..to` of the `spp` of pixel (x, y), added to `sum`; returns the
     // spread of these samples in their widest channel.
     let mut samples = |x: u32, y: u32, from: u32, to: u32, sum: &mut [f64; 3]| {
@@ -359,7 +358,7 @@ fn render_tile(
                     _ => None,
                 }
             });
-            let color = match scene.intersect_after(ray, on_mesh, |i| !is_mesh[i]) {
+            let color = match scene.intersect_after(ray, on_mesh, |i| !binned[i]) {
                 Some(hit) => {
                     counts.hits += 1;
                     // The triangle the shadow rays leave, when the hit is on a mesh.
