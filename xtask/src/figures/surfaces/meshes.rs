@@ -4,6 +4,7 @@
 
 use anyhow::{Result, ensure};
 use glam::{DVec2, DVec3};
+use hi_mesh::subdivision::PolyMesh;
 use hi_mesh::{TriangleMesh, srgb_to_linear_rgb};
 use hi_surface::{HarmonicSurface, ParamRange, ParamWindow, SurfaceDerivs};
 
@@ -193,20 +194,12 @@ const MARKER_LEVELS: u32 = 1;
 /// take 1.4 MB more of the figures' 60 MB.
 const BEAD_LEVELS: u32 = 0;
 
-/// The octahedron with its edges halved `levels` times (each face cut into 4 each time) and
+/// The octahedron (`PolyMesh::octahedron`) with its edges halved `levels` times (each face cut into 4 each time) and
 /// every vertex pushed out to the unit sphere, its faces wound outwards.
 fn geodesic(levels: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-    let mut vertices = vec![DVec3::X, -DVec3::X, DVec3::Y, -DVec3::Y, DVec3::Z, -DVec3::Z];
-    let mut faces: Vec<[u32; 3]> = vec![
-        [0, 2, 4],
-        [2, 1, 4],
-        [1, 3, 4],
-        [3, 0, 4],
-        [2, 0, 5],
-        [1, 2, 5],
-        [3, 1, 5],
-        [0, 3, 5],
-    ];
+    let octahedron = PolyMesh::octahedron();
+    let mut vertices = octahedron.positions().to_vec();
+    let mut faces: Vec<[u32; 3]> = octahedron.faces().map(|f| [f[0], f[1], f[2]]).collect();
     for _ in 0..levels {
         // Each edge's midpoint once, keyed by its ends.
         let mut middles = std::collections::BTreeMap::new();
