@@ -390,6 +390,36 @@ fn a_single_mesh_is_the_one_part_scene() {
     }
 }
 
+/// A mesh without texture coordinates (every UV at the origin, as `from_triangles` gives) is
+/// written without `TEXCOORD_0`, and reads back with its UVs at the origin as it had; a mesh
+/// with them keeps them. The buffer without them is smaller by the 8 bytes a vertex they took.
+#[test]
+fn texture_coordinates_are_written_only_when_the_mesh_has_them() {
+    let dir = dir("uvs");
+    let with = torus(10, 8);
+    assert!(with.uvs().iter().any(|t| *t != DVec2::ZERO));
+    let without =
+        TriangleMesh::from_triangles(with.positions().to_vec(), with.triangles().to_vec()).unwrap();
+    let sizes: Vec<u64> = [(&with, "with"), (&without, "without")]
+        .iter()
+        .map(|(mesh, name)| {
+            let path = dir.join(format!("{name}.glb"));
+            export::save(mesh, &path).unwrap();
+            let (doc, _, _) = gltf::import(&path).unwrap();
+            let prim = doc.meshes().next().unwrap().primitives().next().unwrap();
+            let has = prim.get(&gltf::Semantic::TexCoords(0)).is_some();
+            assert_eq!(has, *name == "with", "{name}");
+            let found = export::load_scene(&path).unwrap().remove(0).1;
+            assert_eq!(found.uvs().len(), mesh.n_vertices(), "{name}");
+            for (a, b) in found.uvs().iter().zip(mesh.uvs()) {
+                assert_eq!(a.as_vec2(), b.as_vec2(), "{name}");
+            }
+            doc.buffers().map(|b| b.length() as u64).sum::<u64>()
+        })
+        .collect();
+    assert_eq!(sizes[0] - sizes[1], 8 * with.n_vertices() as u64, "{sizes:?}");
+}
+
 /// A glTF scene as other programs write it: a node without a name takes its mesh's, one with
 /// neither takes `mesh_k`; node transforms are applied part by part.
 #[test]

@@ -474,9 +474,9 @@ fn tables(
          scan points the rays located (`Texels::Contours`), smoothed by a Gaussian of σ = 1 texel, \
          reduced to a quarter of its texels by Theorem 5.3, and converted to the thesis's cubic \
          Bézier patches (§5.7). One run each, in seconds. The mannequin and Spock are not \
-         available: the head scans of figures 5.29 and 5.30 (60 000 noisy points on a head made in \
-         code, with nose, eyes, lips and ears, round or pointed) stand in for them; the thesis's image \
-         size is illegible in the extracted text.\n\n"
+         available: the head scans of figures 5.29 and 5.30 (60 000 noisy points on Lee \
+         Perry-Smith's head scan, CC BY 3.0, its ears round or drawn up to a point) stand in for \
+         them; the thesis's image size is illegible in the extracted text.\n\n"
     );
     s.push_str(&table(
         &["scan", "points", "patches", "total (s)", "stages (s)", "the thesis / ours"],

@@ -80,7 +80,7 @@ fn torus_figure(scheme: BezierScheme, colored: bool) -> Result<Vec<u8>> {
     glb(&patch_mesh(&b, SAMPLES, &all, colored)?)
 }
 
-/// A head stand-in through §5.8's pipeline ("combined results"): its scan, a flattened
+/// A head scan through §5.8's pipeline ("combined results"): its scan, a flattened
 /// octahedron image of contours of located points (Theorem 5.3 to the columns), Gaussian
 /// smoothing, a reduction to a quarter by Theorem 5.3, and the thesis's cubic patches; the
 /// patches of one cover.
@@ -170,8 +170,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 29),
         caption: "Final rendering of mannequin head formed from Bézier patches",
         drawn: HEAD_DRAWN,
-        data: "stand-in for the thesis's mannequin scan (not available): the scan of figure 5.10 (60 000 points on the \
-               head stand-in, ±0.3% noise).",
+        data: "stand-in for the thesis's mannequin scan (not available): the scan of figure 5.10 (60 000 points on \
+               Lee Perry-Smith's head scan, CC BY 3.0, ±0.3% noise).",
         format: Format::Glb,
         views: &[],
         panels: &[
@@ -185,8 +185,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 30),
         caption: "Final rendering of Spock formed from Bézier patches",
         drawn: HEAD_DRAWN,
-        data: "stand-in for the thesis's Spock scan (not available): the scan of figure 5.11 (60 000 points on the head \
-               stand-in with pointed ears, ±0.3% noise).",
+        data: "stand-in for the thesis's Spock scan (not available): the scan of figure 5.11 (60 000 points on Lee \
+               Perry-Smith's head scan with pointed ears, ±0.3% noise).",
         format: Format::Glb,
         views: &[],
         panels: &[

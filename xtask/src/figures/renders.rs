@@ -81,11 +81,15 @@ fn mesh_from_glb(bytes: &[u8]) -> Result<(TriangleMesh, Vec<[u32; 2]>)> {
     Ok((out, edges))
 }
 
-/// Where the eye looks from, for figure `number`: the heads face +y, everything else is seen
-/// from the front left, above.
+/// Where the eye looks from, for figure `number`: the heads face +y, seen from in front, to
+/// their +x side and above (Spock's, 5.11 and 5.30, nearly from the front, both pointed ears
+/// against the background), everything else from the front left, above.
 pub(crate) fn view(number: (u32, u32)) -> DVec3 {
-    let head = matches!(number, (1, 1) | (4, 35) | (5, 10..=11 | 14..=20 | 24 | 29..=30));
-    if head { DVec3::new(0.9, 2.0, 0.9) } else { DVec3::new(0.9, -2.0, 1.3) }
+    match number {
+        (5, 11 | 30) => DVec3::new(0.3, 2.0, 0.6),
+        (1, 1) | (4, 35) | (5, 10 | 14..=20 | 29) => DVec3::new(0.9, 2.0, 0.9),
+        _ => DVec3::new(0.9, -2.0, 1.3),
+    }
 }
 
 /// Renders `scene` through `camera` ([`SPP`] samples per pixel), as lossless WebP bytes (a
@@ -147,6 +151,11 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
         .collect()
 }
 
+/// Where the close-ups of a face look from ([`render_close_up`]): in front of it, a little to
+/// its +x side, so that the nose, eyes and mouth face the camera, and above by as much as the
+/// other views (the floor's far edge stays above the frame).
+const CLOSE_UP_VIEW: DVec3 = DVec3::new(0.45, 2.0, 0.9);
+
 /// The colour of the models (linear RGB).
 const MODEL_COLOR: [f32; 3] = [0.72, 0.74, 0.78];
 
@@ -159,6 +168,19 @@ fn render_mesh(
     floor_under: Option<(DVec3, DVec3)>,
     from: DVec3,
     color: [f32; 3],
+) -> Result<Vec<u8>> {
+    render_mesh_on(mesh, edges, camera, floor_under, from, color, [1.0; 3])
+}
+
+/// [`render_mesh`] on the background colour `background` (linear RGB).
+fn render_mesh_on(
+    mesh: TriangleMesh,
+    edges: &[[u32; 2]],
+    camera: &Camera,
+    floor_under: Option<(DVec3, DVec3)>,
+    from: DVec3,
+    color: [f32; 3],
+    background: [f32; 3],
 ) -> Result<Vec<u8>> {
     // Edges [`EDGE_PIXELS`] wide, as seen.
     let style = EdgeStyle {
@@ -175,21 +197,37 @@ fn render_mesh(
     if let Some((lo, hi)) = floor_under {
         objects.push(floor(lo, hi)?);
     }
-    let scene = Scene::try_new(objects, Light::key_and_fill(-from), [1.0; 3])?;
+    let scene = Scene::try_new(objects, Light::key_and_fill(-from), background)?;
     webp(&scene, camera)
 }
 
-/// A close-up of the model `glb` of figure `number`: the camera of [`render_models`] framing
-/// only the vertices for which `keep` holds (the face of a head), the whole model in the scene.
-pub(crate) fn render_close_up(
-    number: (u32, u32),
-    glb: &[u8],
-    keep: fn(DVec3) -> bool,
-) -> Result<Vec<u8>> {
+/// The colour (linear RGB) the floor of [`render_models`] takes lit from `from`: matt under
+/// directional lights, the same everywhere it is not in shadow. The point sets are drawn on it
+/// as their background, so that they sit on the grey of the models beside them without the
+/// speckled shadow of their balls.
+fn floor_shade(from: DVec3) -> Result<[f32; 3]> {
+    let scene = Scene::try_new(
+        vec![floor(DVec3::splat(-1.0), DVec3::splat(1.0))?],
+        Light::key_and_fill(-from),
+        [0.0; 3],
+    )?;
+    let camera = Camera::try_new(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y, 0.1)?;
+    let settings =
+        RenderOptions { width: 1, height: 1, samples_per_pixel: 1, tile_size: 16, first_pass: 0 };
+    let out = render(&scene, &camera, &settings, None)?;
+    let pixel = out.pixels.first().context("no pixel")?;
+    let srgb = [pixel[0], pixel[1], pixel[2]].map(|c| f32::from(c) / 255.0);
+    Ok(hi_mesh::srgb_to_linear_rgb(srgb))
+}
+
+/// A close-up of the model `glb`: a camera from nearer the front than
+/// [`render_models`]'s ([`CLOSE_UP_VIEW`]) framing only the vertices for which `keep` holds
+/// (the face of a head), the whole model in the scene.
+pub(crate) fn render_close_up(glb: &[u8], keep: fn(DVec3) -> bool) -> Result<Vec<u8>> {
     let (mesh, edges) = mesh_from_glb(glb)?;
     let part: Vec<DVec3> = mesh.positions().iter().copied().filter(|p| keep(*p)).collect();
     ensure!(part.len() >= 3, "the close-up frames {} vertices", part.len());
-    let from = view(number);
+    let from = CLOSE_UP_VIEW;
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let camera = Camera::fitting(&part, from, DVec3::Z, FOV, aspect, FILL)?;
     let b = mesh.bounds();
@@ -199,8 +237,8 @@ pub(crate) fn render_close_up(
 /// A render of the point set `points` of figure `number`, each point a small ball of radius
 /// `size` times the points' bounding-box diagonal (`surfaces::ball`: round as seen at the size the
 /// points are drawn, with its normals from its centre), framed and lit as [`render_models`]
-/// frames a model, on white with no floor (the speckled shadow of thousands of balls says
-/// nothing and triples the file).
+/// frames a model, with no floor (the speckled shadow of thousands of balls says nothing and
+/// triples the file) but on the floor's colour ([`floor_shade`]).
 pub(crate) fn render_points(number: (u32, u32), points: &[DVec3], size: f64) -> Result<Vec<u8>> {
     ensure!(!points.is_empty(), "no points to draw");
     let (lo, hi) = points
@@ -222,7 +260,7 @@ pub(crate) fn render_points(number: (u32, u32), points: &[DVec3], size: f64) -> 
     let from = view(number);
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let camera = Camera::fitting(points, from, DVec3::Z, FOV, aspect, FILL)?;
-    render_mesh(mesh, &[], &camera, None, from, POINT_COLOR)
+    render_mesh_on(mesh, &[], &camera, None, from, POINT_COLOR, floor_shade(from)?)
 }
 
 /// The colour of data points (linear RGB): a blue, as the point sets of the plots.

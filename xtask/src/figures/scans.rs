@@ -5,35 +5,36 @@
 //! octahedral and flattened-octahedral layouts — and a table of how well each fits its scan.
 //!
 //! The thesis's scans (Hoppe's mannequin head, Spock, and the public models of figures
-//! 5.21–5.23) are not available, so the scans are made in code: a head ([`head_point`]: skull,
-//! jaw and neck, nose, eye sockets, brow, cheekbones, lips, chin and ears) and the same head with
-//! Spock's pointed ears stand in for the mannequin and Spock, three star-shaped solids for the
-//! public models, each sampled with 60 000 points and given
-//! a deterministic noise of ±0.3% of its size along the direction from its centre, as a scanner
-//! would. Figure 5.24 fits the head's coarse control mesh (146 vertices), whose points are too
-//! few for the rays, once as it is and once resampled on its triangles as the thesis did. The
-//! real models are fitted by `cargo xtask bench fit` (Table 5.1) and by `hi fit`.
+//! 5.21–5.24) are not available. Lee Perry-Smith's head scan (`fixtures/models`, CC BY 3.0)
+//! stands in for the mannequin ([`head_point`]: the scan's farthest point along each direction
+//! from the head's centre, the neck closed by a plane) and, with Spock's pointed ears added, for
+//! Spock, each sampled with 60 000 points along a Fibonacci lattice of directions and given a
+//! deterministic noise of ±0.3% of its size along the direction from its centre, as a scanner
+//! would. Figures 5.21–5.23 pair the vertices of real models of `fixtures/models` (Spot, a duck,
+//! Wuson) with their surfaces as `hi fit` makes them; figure 5.24 fits Spot by the thesis's rays
+//! from its vertices alone, too few for them, and resampled on its triangles as the thesis did.
+//! `cargo xtask bench fit` fits more real models (Table 5.1).
 
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 use std::fmt::Write as _;
 use std::io::Cursor;
+use std::sync::OnceLock;
 
 use anyhow::{Context, Result, ensure};
 use glam::{DVec2, DVec3};
 use hi_geomimage::{ErrorMeasure, Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
 use hi_mesh::TriangleMesh;
-use hi_mesh::subdivision::PolyMesh;
 use hi_scan::scan::Scan;
 use hi_surface::{HarmonicSurface, MeshOptions};
+use rayon::prelude::*;
 
 use super::glb::glb;
-use super::subdivision::head_with;
 use super::{Figure, Format, Panel, Table};
 use hi_surface::{ParamRange, ParamWindow};
 
 /// Rows and columns of every geometry image here.
 const IMAGE: usize = 64;
-/// Points of each stand-in scan.
+/// Points of each scan.
 const SCAN_POINTS: usize = 60_000;
 /// The scanner noise: ± this fraction of the scan's mean radius, along the ray from its centre.
 const NOISE: f64 = 0.003;
@@ -42,29 +43,20 @@ const SIGMA: f64 = 1.0;
 /// Each texel of a PNG geometry image is a square of this many pixels.
 const PIXELS_PER_TEXEL: u32 = 4;
 
-/// The stand-in scans.
+/// The scans of this module.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Model {
-    /// The head stand-in (the mannequin), [`head_point`].
+    /// The head scan (standing in for the mannequin), [`head_point`].
     Head,
     /// The head with pointed ears (Spock).
     Pointed,
-    /// r = 1 + 0.15 sin 5θ cos 3φ.
-    Bumpy,
-    /// The rounded cube x⁴ + y⁴ + z⁴ = 1.
-    RoundedCube,
-    /// Two lobes along z: r = 0.7 + 0.5 z².
-    Peanut,
 }
 
 impl Model {
     const fn name(self) -> &'static str {
         match self {
-            Self::Head => "head (mannequin stand-in)",
-            Self::Pointed => "head with pointed ears (Spock stand-in)",
-            Self::Bumpy => "bumpy solid",
-            Self::RoundedCube => "rounded cube",
-            Self::Peanut => "peanut",
+            Self::Head => "head scan (mannequin stand-in)",
+            Self::Pointed => "head scan with pointed ears (Spock stand-in)",
         }
     }
 }
@@ -104,23 +96,10 @@ fn with_noise(points: Vec<DVec3>) -> Vec<DVec3> {
         .collect()
 }
 
-/// The scan of a stand-in model.
+/// The scan of a model.
 fn scan(model: Model) -> Result<Scan> {
-    let radial = |r: &dyn Fn(DVec3) -> f64| -> Vec<DVec3> {
-        directions(SCAN_POINTS).map(|d| d * r(d)).collect()
-    };
-    let points = match model {
-        Model::Head | Model::Pointed => {
-            let pointed = model == Model::Pointed;
-            directions(SCAN_POINTS).map(|d| head_point(d, pointed)).collect()
-        }
-        Model::Bumpy => radial(&|d| {
-            let (theta, phi) = (d.z.acos(), d.y.atan2(d.x));
-            1.0 + 0.15 * (5.0 * theta).sin() * (3.0 * phi).cos()
-        }),
-        Model::RoundedCube => radial(&|d| (d.x.powi(4) + d.y.powi(4) + d.z.powi(4)).powf(-0.25)),
-        Model::Peanut => radial(&|d| 0.7 + 0.5 * d.z * d.z),
-    };
+    let (head, pointed) = (radial_head()?, model == Model::Pointed);
+    let points = directions(SCAN_POINTS).map(|d| head_point(head, d, pointed)).collect();
     Ok(Scan { points: with_noise(points), ..Scan::default() })
 }
 
@@ -139,67 +118,121 @@ fn bump(dir: DVec3, centre: DVec3, (across, along): (f64, f64), h: f64, flat: i3
     h * (-(a * a + b * b).powi(flat)).exp()
 }
 
-/// The head stand-in: the point of its surface in the unit direction `dir` (it is star-shaped
-/// about the origin, as the thesis's algorithm 2 needs), facing +y with +z up, about 1.6 wide,
-/// 1.8 deep and 2.4 high. A radius 1 + Σ bumps ([`bump`]: nose bridge, tip and wings, eye
-/// sockets, brow, cheekbones, lips and the mouth's line between them, chin, ears with a hollow
-/// inside the rim, `pointed` ears rising to a tip for Spock) on an egg-shaped skull, narrowed
-/// to a jaw and a neck below.
-pub(crate) fn head_point(dir: DVec3, pointed: bool) -> DVec3 {
+/// Lee Perry-Smith's head scan in `fixtures/models` (Infinite Realities, CC BY 3.0; see its
+/// `SOURCES.md`): a closed bust, +y up, facing +z.
+const HEAD_FILE: &str = "lee-perry-smith-head.obj";
+
+/// The scan's centre inside the head (in the file's coordinates), from which its radius is
+/// taken, and the scale to the figures' size (about 1.7 wide, 2.2 deep, 2.2 high).
+const HEAD_CENTRE: DVec3 = DVec3::new(0.0, 0.0, -0.07);
+const HEAD_SCALE: f64 = 9.0;
+
+/// The height (the file's y) below which the bust is left out: the neck under the chin, where
+/// the shoulders begin; the head is closed there by the plane.
+const NECK: f64 = -0.13;
+
+/// Rows (θ from the crown, 0..=π) and columns (φ, a full turn) of the head's radius table.
+const HEAD_ROWS: usize = 360;
+const HEAD_COLS: usize = 720;
+
+/// The head's radius from [`HEAD_CENTRE`] (in the figures' units) at the nodes of a
+/// (θ, φ) grid of [`HEAD_ROWS`] + 1 rows and [`HEAD_COLS`] columns, θ from +z and φ from +x
+/// towards +y in the figures' frame (+z up, facing +y).
+struct RadialHead(Vec<f64>);
+
+/// The figures' frame (x right, y the way the face looks, z up) to the file's (y up, facing
+/// +z): a rotation.
+fn to_file(d: DVec3) -> DVec3 {
+    DVec3::new(-d.x, d.z, d.y)
+}
+
+impl RadialHead {
+    /// The table, ray cast once: along each direction the farthest point of the scan above
+    /// [`NECK`] (a ray from outside towards the centre, its first hit), or the plane at the
+    /// neck where the ray leaves through it.
+    fn load() -> Result<Self> {
+        let path = crate::project_root().join("fixtures/models").join(HEAD_FILE);
+        let scan =
+            hi_scan::scan::read_scan(&path).with_context(|| format!("reading {HEAD_FILE}"))?;
+        let above = |k: u32| scan.points[k as usize].y >= NECK;
+        let triangles: Vec<[u32; 3]> =
+            scan.triangles.iter().copied().filter(|t| t.iter().all(|&k| above(k))).collect();
+        ensure!(triangles.len() > 1000, "{HEAD_FILE}: too few triangles above the neck");
+        let mesh = hi_raytrace::MeshObject::new(TriangleMesh::from_triangles(
+            scan.points.clone(),
+            triangles,
+        )?);
+        let far = 1.0;
+        let table = (0..=HEAD_ROWS)
+            .into_par_iter()
+            .flat_map_iter(|i| (0..HEAD_COLS).map(move |j| (i, j)))
+            .map(|(i, j)| {
+                let (theta, phi) =
+                    (PI * i as f64 / HEAD_ROWS as f64, TAU * j as f64 / HEAD_COLS as f64);
+                let d = to_file(DVec3::new(
+                    theta.sin() * phi.cos(),
+                    theta.sin() * phi.sin(),
+                    theta.cos(),
+                ));
+                let ray = hi_raytrace::Ray {
+                    t_max: far,
+                    ..hi_raytrace::Ray::new(HEAD_CENTRE + d * far, -d)
+                };
+                match mesh.intersect(&ray) {
+                    Some((_, hit)) => Ok((far - hit.t) * HEAD_SCALE),
+                    None if d.y < 0.0 => Ok((HEAD_CENTRE.y - NECK) / -d.y * HEAD_SCALE),
+                    None => Err(anyhow::anyhow!(
+                        "{HEAD_FILE}: a ray from the head's centre up meets no triangle"
+                    )),
+                }
+            })
+            .collect::<Result<Vec<f64>>>()?;
+        Ok(Self(table))
+    }
+
+    /// The radius in the unit direction `dir` (figures' frame), bilinear in (θ, φ).
+    fn radius(&self, dir: DVec3) -> f64 {
+        let theta = dir.z.clamp(-1.0, 1.0).acos() / PI * HEAD_ROWS as f64;
+        let phi = dir.y.atan2(dir.x).rem_euclid(TAU) / TAU * HEAD_COLS as f64;
+        #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "in the table")]
+        let (i, j) =
+            ((theta.floor() as usize).min(HEAD_ROWS - 1), phi.floor() as usize % HEAD_COLS);
+        let (a, b) = (theta - i as f64, phi - phi.floor());
+        let at = |i: usize, j: usize| self.0[i * HEAD_COLS + j % HEAD_COLS];
+        (1.0 - a) * ((1.0 - b) * at(i, j) + b * at(i, j + 1))
+            + a * ((1.0 - b) * at(i + 1, j) + b * at(i + 1, j + 1))
+    }
+}
+
+/// The head, tabulated once per run ([`RadialHead::load`]).
+fn radial_head() -> Result<&'static RadialHead> {
+    static HEAD: OnceLock<std::result::Result<RadialHead, String>> = OnceLock::new();
+    HEAD.get_or_init(|| RadialHead::load().map_err(|e| format!("{e:#}")))
+        .as_ref()
+        .map_err(|e| anyhow::anyhow!("{e}"))
+}
+
+/// The head: the point of its surface in the unit direction `dir` (star-shaped about its
+/// centre, as the thesis's algorithm 2 needs, since each direction keeps the scan's farthest
+/// point), facing +y with +z up: Lee Perry-Smith's head scan ([`RadialHead`]). With `pointed`,
+/// Spock's ears: each ear's rim drawn up and back to a point well above it (two bumps of the
+/// radius, [`bump`], over the ear, whose middle lies in the direction (±0.97, −0.2, −0.19),
+/// measured on the scan).
+fn head_point(head: &RadialHead, dir: DVec3, pointed: bool) -> DVec3 {
     let v = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
-    let mut r = 1.0;
-    // The nose: a ridge from the bridge down to a rounded tip, and its wings.
-    r += bump(dir, v(0.0, 0.99, 0.0), (0.075, 0.17), 0.1, 2);
-    r += bump(dir, v(0.0, 0.95, -0.2), (0.09, 0.08), 0.2, 1);
-    for side in [-1.0, 1.0] {
-        r += bump(dir, v(0.1 * side, 0.95, -0.21), (0.05, 0.045), 0.07, 1);
-        // Eye sockets under the brow with the eyes in them, cheekbones below and outside.
-        r -= bump(dir, v(0.3 * side, 0.92, 0.12), (0.13, 0.08), 0.08, 2);
-        r += bump(dir, v(0.3 * side, 0.93, 0.11), (0.07, 0.045), 0.05, 1);
-        r += bump(dir, v(0.5 * side, 0.82, -0.08), (0.13, 0.09), 0.05, 1);
-        // The ears: a flat oval with a hollow inside its rim.
-        r += bump(dir, v(side, -0.08, 0.05), (0.1, 0.2), 0.2, 2);
-        r -= bump(dir, v(side, -0.05, 0.06), (0.05, 0.12), 0.07, 2);
-        if pointed {
-            // Spock's: the rim drawn up and back to a point well above the ear.
-            r += bump(dir, v(side, -0.13, 0.32), (0.07, 0.14), 0.21, 1);
-            r += bump(dir, v(side, -0.19, 0.5), (0.04, 0.09), 0.2, 1);
+    let mut r = head.radius(dir);
+    if pointed {
+        for side in [-1.0, 1.0] {
+            r += bump(dir, v(side, -0.3, 0.12), (0.11, 0.2), 0.3, 1);
+            r += bump(dir, v(side, -0.38, 0.36), (0.08, 0.13), 0.38, 1);
         }
     }
-    r += bump(dir, v(0.0, 0.92, 0.3), (0.42, 0.06), 0.05, 2); // brow
-    // Lips, parted by the line of the mouth, and the chin.
-    r += bump(dir, v(0.0, 0.9, -0.37), (0.14, 0.04), 0.045, 2);
-    r += bump(dir, v(0.0, 0.88, -0.45), (0.12, 0.04), 0.04, 2);
-    r -= bump(dir, v(0.0, 0.89, -0.41), (0.14, 0.014), 0.02, 1);
-    r += bump(dir, v(0.0, 0.78, -0.6), (0.15, 0.1), 0.08, 1);
-    // An egg-shaped skull, narrower at the jaw (a smoothed 0.22·max(−z, 0)), and a neck.
-    let down = -dir.z;
-    let jaw = 1.0 - 0.11 * (down + (down * down + 0.02).sqrt());
-    let t = ((down - 0.75) / 0.25).clamp(0.0, 1.0);
-    let neck = 1.0 - 0.3 * t * t * (3.0 - 2.0 * t);
-    DVec3::new(0.78 * jaw * neck * dir.x, 0.9 * jaw * neck * dir.y, 1.1 * dir.z) * r
+    dir * r
 }
 
-/// The scan of the head stand-in (mannequin), or of the head with pointed ears (Spock).
+/// The scan of the head (standing in for the mannequin), or of the head with pointed ears (Spock).
 pub(crate) fn head_scan(pointed: bool) -> Result<Scan> {
     scan(if pointed { Model::Pointed } else { Model::Head })
-}
-
-/// The triangles of a triangle mesh.
-fn mesh_triangles(mesh: &PolyMesh) -> Result<Vec<[u32; 3]>> {
-    mesh.faces()
-        .map(|f| <[u32; 3]>::try_from(f).context("the head's faces are triangles"))
-        .collect()
-}
-
-/// The head's coarse control mesh as a scan with faces (figure 5.24).
-fn coarse_head() -> Result<Scan> {
-    let mesh = head_with(false)?;
-    Ok(Scan {
-        points: mesh.positions().to_vec(),
-        triangles: mesh_triangles(&mesh)?,
-        ..Scan::default()
-    })
 }
 
 /// How a figure fits its scan.
@@ -287,29 +320,35 @@ fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
 /// `fixtures/models`).
 const REAL_IMAGE: (usize, usize) = (160, 160);
 
-/// The fit of the real model `file` of `fixtures/models` (stood up and turned to the viewer:
-/// its files have +y up and face −z, the figures have +z up and are seen from −y) by
+/// The real model `file` of `fixtures/models`, stood up and turned to the viewer: its files
+/// have +y up and face −z, the figures have +z up and are seen from −y.
+fn real_scan(file: &str) -> Result<Scan> {
+    let path = crate::project_root().join("fixtures/models").join(file);
+    let scan = hi_scan::scan::read_scan(&path).with_context(|| format!("reading {file}"))?;
+    let points = scan.points.iter().map(|p| DVec3::new(-p.x, p.z, p.y)).collect();
+    Ok(Scan { points, ..scan })
+}
+
+/// The data set of figure `number`: the points of the real model `file` (the vertices its
+/// triangles use), each a small ball, seen as its surface is ([`real_glb`]).
+fn real_points(number: (u32, u32), file: &str) -> Result<Vec<u8>> {
+    let scan = real_scan(file)?;
+    let mut used = vec![scan.triangles.is_empty(); scan.points.len()];
+    for &k in scan.triangles.iter().flatten() {
+        used[k as usize] = true;
+    }
+    let points: Vec<DVec3> =
+        scan.points.iter().zip(&used).filter(|(_, u)| **u).map(|(p, _)| *p).collect();
+    super::renders::render_points(number, &points, 0.0035)
+}
+
+/// The fit of the real model `file` of `fixtures/models` ([`real_scan`]) by
 /// `hi fit`'s defaults (the parameterisation of each part of its mesh, no smoothing) at
 /// [`REAL_IMAGE`] (shared by the parts by area), meshed as `hi fit` writes them: one vertex per
 /// texel, welded into closed surfaces checked to enclose a positive volume (wound outwards), or
 /// open sheets; the parts in one mesh.
 fn real_glb(file: &str) -> Result<Vec<u8>> {
-    let path = crate::project_root().join("fixtures/models").join(file);
-    let scan = hi_scan::scan::read_scan(&path).with_context(|| format!("reading {file}"))?;
-    let points = scan.points.iter().map(|p| DVec3::new(-p.x, p.z, p.y)).collect();
-    let scan = Scan { points, ..scan };
-    let options = FitOptions {
-        resolution: Some(REAL_IMAGE),
-        error: ErrorMeasure::Off,
-        ..FitOptions::default()
-    };
-    let result = fit(&scan, &options, &mut |_| {})?;
-    ensure!(
-        result.report.method == hi_geomimage::Method::Mesh,
-        "{file}: fitted by {}, not by its mesh ({})",
-        result.report.method.name(),
-        result.report.method_reason
-    );
+    let result = real_fit(&real_scan(file)?, file, false)?;
     // Every part, as `hi fit` writes them, in one mesh.
     let (mut positions, mut normals, mut uvs, mut triangles) = (vec![], vec![], vec![], vec![]);
     for part in &result.parts {
@@ -325,6 +364,23 @@ fn real_glb(file: &str) -> Result<Vec<u8>> {
         triangles.extend(mesh.triangles().iter().map(|t| t.map(|k| k + offset)));
     }
     glb(&TriangleMesh::try_new(positions, normals, uvs, triangles)?)
+}
+
+/// The fit of [`real_glb`] of the scan of `file`, its error measured when `measure`.
+fn real_fit(scan: &Scan, file: &str, measure: bool) -> Result<Fit> {
+    let options = FitOptions {
+        resolution: Some(REAL_IMAGE),
+        error: if measure { ErrorMeasure::Sampled(4) } else { ErrorMeasure::Off },
+        ..FitOptions::default()
+    };
+    let result = fit(scan, &options, &mut |_| {})?;
+    ensure!(
+        result.report.method == hi_geomimage::Method::Mesh,
+        "{file}: fitted by {}, not by its mesh ({})",
+        result.report.method.name(),
+        result.report.method_reason
+    );
+    Ok(result)
 }
 
 /// The texels of a fit's image joined directly: one quad per texel, with normals from the
@@ -398,12 +454,12 @@ fn points_view(number: (u32, u32), model: Model) -> Result<Vec<u8>> {
 /// Whether the point `p` of a head lies on its face: in front of the ears, between the chin
 /// and the brow (the close-ups of figures 5.14–5.17 frame it).
 fn on_face(p: DVec3) -> bool {
-    p.y > 0.35 && p.z > -0.85 && p.z < 0.45 && p.x.abs() < 0.6
+    p.y > 0.4 && p.z > -1.0 && p.z < 0.45 && p.x.abs() < 0.55
 }
 
-/// The close-up of the face of the head model `glb`, for figure `number` (its panel (b)).
-fn close_up(number: (u32, u32), glb: &[u8]) -> Result<Vec<u8>> {
-    super::renders::render_close_up(number, glb, on_face)
+/// The close-up of the face of the head model `glb` (a figure's panel (b)).
+fn close_up(glb: &[u8]) -> Result<Vec<u8>> {
+    super::renders::render_close_up(glb, on_face)
 }
 
 /// The render of the harmonic surface of the head's fit, for figure `number`.
@@ -417,10 +473,15 @@ fn surface_png(number: (u32, u32), setup: Setup) -> Result<Vec<u8>> {
     Ok(bytes)
 }
 
-/// Figure 5.24: the coarse head, resampled on its triangles or not.
-fn coarse_glb(densify: bool) -> Result<Vec<u8>> {
+/// The model of figure 5.24, whose vertices are too few for the rays of a 64×64 image: Spot
+/// (2 930 vertices), the thesis's cow.
+const RESAMPLED: &str = "spot.obj";
+
+/// Figure 5.24: [`RESAMPLED`] fitted by the thesis's rays from its vertices alone, or resampled
+/// on its triangles first (`densify`).
+fn resampled_glb(densify: bool) -> Result<Vec<u8>> {
     let setup = Setup { densify, ..FLAT_SMOOTH };
-    let result = fitted(&coarse_head()?, setup, false)?;
+    let result = fitted(&real_scan(RESAMPLED)?, setup, false)?;
     glb(&covering_mesh(&result.largest().surface, setup.layout, 2)?)
 }
 
@@ -432,9 +493,10 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The harmonic surface through a 64×64 spherical geometry image (algorithm 2) of the head's scan, \
                 smoothed by a Gaussian of σ = 1 texel, meshed with 2×2 quads per texel over u ∈ [0, ½]; (a) every \
                 tenth point of the scan, each drawn as a small ball.",
-        data: "stand-in for the thesis's mannequin scan (not available): 60 000 points on a head made in code \
-               (`head_point`: skull, jaw and neck, nose, eye sockets and eyes, brow, cheekbones, lips, chin and \
-               ears), with ±0.3% noise along the rays.",
+        data: "stand-in for the thesis's mannequin scan (not available): 60 000 points on Lee Perry-Smith's head \
+               scan (Infinite Realities, CC BY 3.0; `fixtures/models/lee-perry-smith-head.obj`), the farthest point \
+               of the scan along each direction from the head's centre, the neck closed by a plane, with ±0.3% \
+               noise along the rays.",
         format: Format::Glb,
         views: &[Panel {
             suffix: "a",
@@ -452,8 +514,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Surface fitting using harmonic tensor product surfaces (Spock)",
         drawn: "As figure 5.10 for the head with pointed ears, (a) its data points and (b) the surface; its geometry \
                 image is figure 5.13.",
-        data: "stand-in for the thesis's Spock scan (not available): 60 000 points on the head of figure 5.10 with \
-               Spock's ears drawn up to a point, with ±0.3% noise along the rays.",
+        data: "stand-in for the thesis's Spock scan (not available): 60 000 points on the head scan of figure 5.10 \
+               with Spock's ears drawn up to a point above each ear, with ±0.3% noise along the rays.",
         format: Format::Glb,
         views: &[Panel {
             suffix: "a",
@@ -472,7 +534,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The 64×64 spherical geometry image of figure 5.11 before smoothing, x, y, z as red, green, blue \
                 (scaled to the bounding box). Rows are u (pole, equator, other pole, equator), columns v; the \
                 lower half repeats the upper turned by half a period, so the image is periodic both ways.",
-        data: "the Spock stand-in of figure 5.11.",
+        data: "the head scan with pointed ears of figure 5.11 (Spock stand-in).",
         format: Format::Png,
         views: &[],
         panels: &[Panel {
@@ -487,12 +549,12 @@ pub(crate) const FIGURES: &[Figure] = &[
         drawn: "The texels of the 64×64 spherical geometry image joined directly (one quad per texel, normals from \
                 the faces), no smoothing: the undulations the thesis attributes to the geometry image. (b) The same \
                 model framed on the face.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Glb,
         views: &[Panel {
             suffix: "b",
             title: "(b) Close-up",
-            draw: |_| close_up((5, 14), &texel_glb(Model::Head, SPHERE)?),
+            draw: |_| close_up(&texel_glb(Model::Head, SPHERE)?),
         }],
         panels: &[Panel {
             suffix: "a",
@@ -505,12 +567,12 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Surface produced by harmonic interpolation (mannequin)",
         drawn: "The harmonic surface through the image of figure 5.14 (2×2 quads per texel): it passes through \
                 every texel and keeps their undulations. (b) The same model framed on the face.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Glb,
         views: &[Panel {
             suffix: "b",
             title: "(b) Close-up",
-            draw: |_| close_up((5, 15), &harmonic_glb(Model::Head, SPHERE)?),
+            draw: |_| close_up(&harmonic_glb(Model::Head, SPHERE)?),
         }],
         panels: &[Panel {
             suffix: "a",
@@ -522,12 +584,12 @@ pub(crate) const FIGURES: &[Figure] = &[
         number: (5, 16),
         caption: "Surface produced by geometry image after smoothing (mannequin)",
         drawn: "As figure 5.14 after a periodic Gaussian of σ = 1 texel on the image (§5.4), (b) framed on the face.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Glb,
         views: &[Panel {
             suffix: "b",
             title: "(b) Close-up",
-            draw: |_| close_up((5, 16), &texel_glb(Model::Head, SPHERE_SMOOTH)?),
+            draw: |_| close_up(&texel_glb(Model::Head, SPHERE_SMOOTH)?),
         }],
         panels: &[Panel {
             suffix: "a",
@@ -540,12 +602,12 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Surface produced by harmonic interpolation after smoothing (mannequin)",
         drawn: "The harmonic surface through the smoothed image of figure 5.16 (the surface of figure 5.10); (b) the \
                 same model framed on the face.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Glb,
         views: &[Panel {
             suffix: "b",
             title: "(b) Close-up",
-            draw: |_| close_up((5, 17), &harmonic_glb(Model::Head, SPHERE_SMOOTH)?),
+            draw: |_| close_up(&harmonic_glb(Model::Head, SPHERE_SMOOTH)?),
         }],
         panels: &[Panel {
             suffix: "a",
@@ -564,7 +626,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 ripples) and folds at the wrapped edges; figure 5.19 is the same after smoothing. (c) The image \
                 repeated 2×2, as harmonic interpolation sees it (periodic in both directions): across each edge \
                 of the square the colours jump, because the texels that meet there are far apart on the head.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Png,
         views: &[],
         panels: &[
@@ -589,12 +651,12 @@ pub(crate) const FIGURES: &[Figure] = &[
                 surface through the smoothed image, over the whole period. (d) Panel (c) framed on the face. \
                 Smoothing and interpolation across the wrapped edges of the square join far-apart texels and \
                 leave seams, as in the thesis.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Glb,
         views: &[Panel {
             suffix: "d",
             title: "(d) Close-up",
-            draw: |_| close_up((5, 19), &harmonic_glb(Model::Head, OCTAHEDRON_SMOOTH)?),
+            draw: |_| close_up(&harmonic_glb(Model::Head, OCTAHEDRON_SMOOTH)?),
         }],
         panels: &[
             Panel {
@@ -621,7 +683,7 @@ pub(crate) const FIGURES: &[Figure] = &[
                 other 32 rows are its half-turn), x, y, z as red, green, blue. The square is extended by its own \
                 symmetry, so neighbouring texels are neighbours on the head everywhere and smoothing leaves no seam. \
                 (b) The harmonic surface through the whole image (u ∈ [0, ½] drawn), rendered.",
-        data: "the mannequin stand-in of figure 5.10.",
+        data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Png,
         views: &[],
         panels: &[
@@ -636,51 +698,68 @@ pub(crate) const FIGURES: &[Figure] = &[
     Figure {
         number: (5, 21),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "The harmonic surface fitted to Keenan Crane's Spot (a cow) by `hi fit`'s defaults: the mesh closed, \
+        drawn: "(a) The data set: the model's vertices, each a small ball. (b) The harmonic surface fitted to Keenan \
+                Crane's Spot (a cow) by `hi fit`'s defaults: the mesh closed, \
                 mapped onto the sphere without folds, sampled as a 160×160 geometry image (smaller than `hi fit` \
                 picks, to keep the files small) and interpolated, with no smoothing; meshed as `hi fit` writes it (one vertex per texel, welded, closed). Horns, ears and legs \
                 are reached, which the thesis's rays from a centre could not.",
         data: "`fixtures/models/spot.obj` (public domain; 2 930 vertices), the thesis's cow among its models.",
         format: Format::Glb,
-        views: &[],
-        panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("spot.obj") }],
+        views: &[Panel {
+            suffix: "a",
+            title: "(a) Data set",
+            draw: |_| real_points((5, 21), "spot.obj"),
+        }],
+        panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| real_glb("spot.obj") }],
     },
     Figure {
         number: (5, 22),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "As figure 5.21 for a duck, whose bill and tail are not star-shaped about any centre. The open bill's \
+        drawn: "As figure 5.21 for a duck, (a) its vertices and (b) its surface, whose bill and tail are not star-shaped about any centre. The open bill's \
                 halves are thinner than a texel of the 160×160 image at their rims, which come out serrated.",
         data: "`fixtures/models/duck.obj` (MIT; 10 093 vertices), the thesis's duck among its models.",
         format: Format::Glb,
-        views: &[],
-        panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("duck.obj") }],
+        views: &[Panel {
+            suffix: "a",
+            title: "(a) Data set",
+            draw: |_| real_points((5, 22), "duck.obj"),
+        }],
+        panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| real_glb("duck.obj") }],
     },
     Figure {
         number: (5, 23),
         caption: "Surface fitting using harmonic tensor product surfaces",
-        drawn: "As figure 5.21 for Wuson, a four-legged cartoon animal in 54 pieces: every piece of at least 0.05 % \
+        drawn: "As figure 5.21 for Wuson, a four-legged cartoon animal in 54 pieces, (a) its vertices and (b) its \
+                surface: every piece of at least 0.05 % \
                 of its area is fitted on its own (the body over the sphere, the pieces that are open shells as open \
                 sheets), the specks below that left out, as `hi fit` reports.",
         data: "`fixtures/models/wuson.off` (BSD-3-Clause; 3 205 vertices), in place of the thesis's bunny (whose \
                licence does not allow it here).",
         format: Format::Glb,
-        views: &[],
-        panels: &[Panel { suffix: "", title: "", draw: |_| real_glb("wuson.off") }],
+        views: &[Panel {
+            suffix: "a",
+            title: "(a) Data set",
+            draw: |_| real_points((5, 23), "wuson.off"),
+        }],
+        panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| real_glb("wuson.off") }],
     },
     Figure {
         number: (5, 24),
         caption: "Surface fitting using harmonic tensor product surfaces of resampled data set",
-        drawn: "(a) The head's coarse control mesh (146 vertices) fitted through a 64×64 flattened-octahedron image \
-                from its vertices alone: most rays find too few points and their texels are filled from their \
-                neighbours (the hole fraction is in the table below); (b) the same mesh resampled with 200 000 \
-                points on its triangles first, as the thesis did for models with few points: the fit follows the \
-                faceted mesh.",
-        data: "the control mesh of the head of figure 4.35.",
+        drawn: "(a) Spot's mesh (2 930 vertices) fitted by the thesis's rays from its centre (algorithm 2) through a \
+                64×64 flattened-octahedron image from its vertices alone, smoothed by a Gaussian of σ = 1 texel: \
+                some rays find too few points and their texels are filled from their neighbours; (b) the same mesh \
+                resampled with 200 000 points on its triangles first, as the thesis did for models with few points \
+                (the table below gives both fractions of rays). The legs, horns and ears are not star-shaped about \
+                the centre: the rays meet them more than once, and the surface through one shell per ray rounds \
+                them off, as the thesis's did.",
+        data: "`fixtures/models/spot.obj` (public domain; 2 930 vertices), the thesis's cow among its resampled \
+               models.",
         format: Format::Glb,
         views: &[],
         panels: &[
-            Panel { suffix: "a", title: "(a) Vertices only", draw: |_| coarse_glb(false) },
-            Panel { suffix: "b", title: "(b) Resampled", draw: |_| coarse_glb(true) },
+            Panel { suffix: "a", title: "(a) Vertices only", draw: |_| resampled_glb(false) },
+            Panel { suffix: "b", title: "(b) Resampled", draw: |_| resampled_glb(true) },
         ],
     },
 ];
@@ -688,36 +767,38 @@ pub(crate) const FIGURES: &[Figure] = &[
 /// The table of the fits.
 pub(crate) const TABLES: &[Table] = &[Table {
     anchor: "scan-fits",
-    title: "Fits of the stand-in scans (figures 5.10–5.24)",
-    about: "Each scan fitted through a 64×64 geometry image as its figure says (`hi_geomimage::fit`): the fraction \
-            of rays that met several shells (not star-shaped) or too few points (holes, filled from their \
-            neighbours), and the distances from every scan point to the harmonic surface (mean, RMS, max) relative \
-            to the diagonal of the scan's bounding box. Smoothing trades distance for fewer undulations; the \
+    title: "Fits of the scans of figures 5.10–5.24",
+    about: "Each scan fitted as its figure says (`hi_geomimage::fit`): the heads and Spot in 5.24 through a 64×64 \
+            geometry image by the thesis's rays, 5.21–5.23 by their meshes' own parameterisation (`hi fit`'s \
+            defaults at 160×160); the fraction of rays that met several shells (not star-shaped) or too few points \
+            (holes, filled from their neighbours), and the distances from every scan point to the harmonic surface \
+            (mean, RMS, max) relative to the diagonal of the scan's bounding box. Smoothing trades distance for fewer undulations; the \
             octahedron's seams show in its maximum.",
     make: table,
 }];
 
 /// Computes the table.
 fn table() -> Result<String> {
-    let rows: [(&str, Model, Setup); 10] = [
+    let rows: [(&str, Model, Setup); 6] = [
         ("5.14, 5.15", Model::Head, SPHERE),
         ("5.10, 5.16, 5.17", Model::Head, SPHERE_SMOOTH),
         ("5.19", Model::Head, OCTAHEDRON_SMOOTH),
         ("5.20", Model::Head, FLAT),
         ("", Model::Head, FLAT_SMOOTH),
         ("5.11, 5.13", Model::Pointed, SPHERE_SMOOTH),
-        ("5.21", Model::Bumpy, FLAT_SMOOTH),
-        ("5.22", Model::RoundedCube, FLAT_SMOOTH),
-        ("5.23", Model::Peanut, FLAT_SMOOTH),
-        ("5.24 (b)", Model::Head, FLAT_SMOOTH),
     ];
     let mut s = String::from(
         "| figure | scan | points | layout | smoothing | not star-shaped | holes | mean | RMS | max |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
     );
-    let mut line = |figure: &str, name: &str, scan: &Scan, setup: Setup| -> Result<()> {
-        let result = fitted(scan, setup, true)?;
-        let d = result.report.errors.context("the error was measured")?;
+    let mut line = |figure: &str,
+                    name: &str,
+                    points: usize,
+                    result: &Fit,
+                    layout: &str,
+                    smooth: bool|
+     -> Result<()> {
+        let d = result.report.errors.as_ref().context("the error was measured")?;
         // Sums in order, so that the page is the same on every run.
         let n = d.per_point.len() as f64;
         let mean = d.per_point.iter().sum::<f64>() / n / d.diagonal;
@@ -725,25 +806,49 @@ fn table() -> Result<String> {
         let max = d.per_point.iter().copied().fold(0.0, f64::max) / d.diagonal;
         let _ = writeln!(
             s,
-            "| {figure} | {name} | {} | {:?} | {} | {:.1}% | {:.1}% | {mean:.1e} | {rms:.1e} | {max:.1e} |",
-            scan.points.len(),
-            setup.layout,
-            if setup.smooth { "σ = 1" } else { "none" },
+            "| {figure} | {name} | {points} | {layout} | {} | {:.1}% | {:.1}% | {mean:.1e} | {rms:.1e} | {max:.1e} |",
+            if smooth { "σ = 1" } else { "none" },
             100.0 * result.report.non_star_fraction,
             100.0 * result.report.hole_fraction,
         );
         Ok(())
     };
     for (figure, model, setup) in rows {
-        let scan = if figure == "5.24 (b)" { coarse_head()? } else { scan(model)? };
-        let name = if figure == "5.24 (b)" { "coarse head, resampled" } else { model.name() };
-        line(figure, name, &scan, setup)?;
+        let scan = scan(model)?;
+        let result = fitted(&scan, setup, true)?;
+        line(
+            figure,
+            model.name(),
+            scan.points.len(),
+            &result,
+            &format!("{:?}", setup.layout),
+            setup.smooth,
+        )?;
     }
-    line(
-        "5.24 (a)",
-        "coarse head, vertices only",
-        &coarse_head()?,
-        Setup { densify: false, ..FLAT_SMOOTH },
-    )?;
+    for (figure, file) in [("5.21", "spot.obj"), ("5.22", "duck.obj"), ("5.23", "wuson.off")] {
+        let scan = real_scan(file)?;
+        let result = real_fit(&scan, file, true)?;
+        let name = format!(
+            "{file}, its mesh parameterised (`hi fit`'s defaults, {}×{})",
+            REAL_IMAGE.0, REAL_IMAGE.1
+        );
+        line(figure, &name, scan.points.len(), &result, "mesh's own", false)?;
+    }
+    let spot = real_scan(RESAMPLED)?;
+    for (figure, densify, what) in
+        [("5.24 (a)", false, "vertices only"), ("5.24 (b)", true, "resampled")]
+    {
+        let setup = Setup { densify, ..FLAT_SMOOTH };
+        let result = fitted(&spot, setup, true)?;
+        let name = format!("{RESAMPLED}, {what}");
+        line(
+            figure,
+            &name,
+            spot.points.len(),
+            &result,
+            &format!("{:?}", setup.layout),
+            setup.smooth,
+        )?;
+    }
     Ok(s)
 }

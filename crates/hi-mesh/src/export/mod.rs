@@ -15,8 +15,9 @@
 //!
 //! **What is written.** Every value is rounded once from the mesh's f64 to f32. glTF: one
 //! buffer with tightly packed, 4-byte aligned views of `POSITION` (with the min and max of the
-//! f32 values written), `NORMAL`, `TEXCOORD_0`, `COLOR_0` (linear RGB, when the mesh has
-//! colours) and the indices (`u16` up to 65 535 vertices, `u32` above); one double-sided
+//! f32 values written), `NORMAL`, `TEXCOORD_0` (when the mesh has texture coordinates: not
+//! every UV at the origin; a reader gives a primitive without them UV (0, 0)), `COLOR_0`
+//! (linear RGB, when the mesh has colours) and the indices (`u16` up to 65 535 vertices, `u32` above); one double-sided
 //! material (a window of a surface is seen from both sides), one node, one
 //! scene, and `asset.generator` naming this crate. OBJ: `v x y z` (`v x y z r g b` with sRGB
 //! colours, the convention of `MeshLab` and Blender), `vt s (1 − t)` (OBJ's t runs up the

@@ -125,6 +125,20 @@ fn new_case(
     }
 }
 
+/// The other meshes of `fixtures/models` and the shared data, given as their bare vertices only
+/// (no clouds): (row name, file, eye direction, up). Their meshes are the scans of other
+/// topologies of [`super::TOPOLOGY`] (several parts, genus 3, an open sheet), a teapot, a
+/// dragon whose centroid lies outside its body, and a head scan.
+const VERTICES_ONLY: &[(&str, &str, [f64; 3], [f64; 3])] = &[
+    ("teapot", "teapot.obj", [0.6, 0.5, 1.0], [0.0, 1.0, 0.0]),
+    ("dragon", "dragon.ply", [0.3, 0.3, 1.0], [0.0, 1.0, 0.0]),
+    ("cessna", "hoppe-cessna.obj", [0.8, 0.5, 0.6], [0.0, 0.0, 1.0]),
+    ("mechpart", "hoppe-mechpart.obj", [0.6, 0.5, 0.8], [0.0, 1.0, 0.0]),
+    ("club", "hoppe-club.obj", [0.3, 0.4, 1.0], [0.0, 1.0, 0.0]),
+    ("spider", "spider.stl", [0.6, -0.8, 0.7], [0.0, 0.0, 1.0]),
+    ("head", "lee-perry-smith-head.obj", [0.3, 0.2, 1.0], [0.0, 1.0, 0.0]),
+];
+
 /// The rows, their inputs made or found; and the inputs not found.
 pub(super) fn cases(
     root: &Path,
@@ -153,6 +167,17 @@ pub(super) fn cases(
                 Group::Cloud | Group::Topology => clouds.push(c),
             }
         }
+    }
+    for &(name, file, eye, up) in VERTICES_ONLY {
+        if !options.wants(name) {
+            continue;
+        }
+        let Some(path) = locate(root, file) else {
+            missing.push(file.to_owned());
+            continue;
+        };
+        let scan = read_scan(&path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        vertices.push(vertices_case(dir, name, &scan, path_str(&path)?, (eye, up))?);
     }
     let mut cgal = None;
     for t in TOPOLOGY.iter().filter(|t| options.wants(t.name)) {
@@ -215,15 +240,30 @@ fn model_cases(
         c.stem = format!("{name}-{n}");
         made.push(c);
     }
+    made.push(vertices_case(dir, name, &scan, &reference, (eye, up))?);
+    Ok(made)
+}
+
+/// The row of the mesh `scan` (named `name`, read from `reference`, seen from `(eye, up)`)
+/// given as its bare vertices: an XYZ of the vertices its triangles use, cached in `dir`.
+fn vertices_case(
+    dir: &Path,
+    name: &str,
+    scan: &Scan,
+    reference: &str,
+    (eye, up): ([f64; 3], [f64; 3]),
+) -> Result<Case> {
     let xyz = dir.join(format!("{name}-vertices.xyz"));
-    let points = used_points(&scan);
+    let points = used_points(scan);
     let n = points.len();
     cached_xyz(&xyz, || points)?;
     let label = format!("{name}, {} vertices", count_name(n));
-    let mut c = view(new_case(Group::Vertices, name, label, &xyz, &xyz, &reference), n);
+    let mut c = new_case(Group::Vertices, name, label, &xyz, &xyz, reference);
+    c.points = n;
+    c.eye = DVec3::from(eye);
+    c.up = DVec3::from(up);
     c.stem = format!("{name}-vertices");
-    made.push(c);
-    Ok(made)
+    Ok(c)
 }
 
 /// The input of the scan `t` and trimesh's reference for it, found, extracted (CGAL's data,

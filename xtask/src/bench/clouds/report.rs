@@ -316,7 +316,10 @@ pub(super) fn intro(
          has root mean square √3 σ). Clouds are written as XYZ (ten significant digits) and \
          cached under `target/xtask-bench/clouds/`, named by model, size and seed. The same \
          models are also given as their bare vertices (an XYZ of the vertices the triangles \
-         use, no triangles). Both programs read the same XYZ file. The scans of other \
+         use, no triangles), and so is every other mesh of the shared data and \
+         `fixtures/models` (the teapot, the dragon, Hoppe's cessna, mechanical part and club, \
+         the spider and the head scan: several parts, genus 3, an open sheet; as bare vertices \
+         only). Both programs read the same XYZ file. The scans of other \
          topologies give `hi fit` the mesh file and Poisson the points its triangles use, as \
          above (a point set with normals, CGAL's kitten and building, goes to both as positions only; CGAL's \
          files are extracted from `{CGAL_DATA}` into `target/xtask-bench/cgal/`); the torus \

@@ -142,11 +142,16 @@ fn push_part(
     let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
     attributes.insert(Valid(json::mesh::Semantic::Normals), acc);
 
-    let start = bin.len();
-    push_f32s(bin, mesh.uvs().iter().flat_map(|t| t.as_vec2().to_array()));
-    let view = push_view(root, buffer, bin, start, Target::ArrayBuffer);
-    let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
-    attributes.insert(Valid(json::mesh::Semantic::TexCoords(0)), acc);
+    // TEXCOORD_0 only for a mesh with texture coordinates: one with every UV at the origin
+    // (`TriangleMesh::from_triangles`, a subdivided polygon mesh) has none, and a reader gives
+    // a primitive without them UV (0, 0), as the mesh had.
+    if mesh.uvs().iter().any(|t| *t != glam::DVec2::ZERO) {
+        let start = bin.len();
+        push_f32s(bin, mesh.uvs().iter().flat_map(|t| t.as_vec2().to_array()));
+        let view = push_view(root, buffer, bin, start, Target::ArrayBuffer);
+        let acc = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
+        attributes.insert(Valid(json::mesh::Semantic::TexCoords(0)), acc);
+    }
 
     if let Some(colors) = mesh.colors() {
         let start = bin.len();
