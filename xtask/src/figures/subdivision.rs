@@ -106,21 +106,26 @@ fn limit_mesh(mesh: &PolyMesh, limit: &[LimitPoint]) -> Result<TriangleMesh> {
 }
 
 /// The limit surface of `scheme` on `shape`: the third step pushed to the limit (Loop,
-/// Catmull-Clark) or the fourth step.
+/// Catmull-Clark) or the fourth step; for the cube, one step more ([`CUBE_EXTRA_STEP`]).
 fn limit(scheme: Scheme, shape: Shape) -> Result<Vec<u8>> {
+    let extra = if matches!(shape, Shape::Cube | Shape::TriCube) { CUBE_EXTRA_STEP } else { 0 };
     let mesh = match scheme {
         Scheme::Loop(w) => {
-            let mesh = refined(scheme, shape, LAST_STEP)?;
+            let mesh = refined(scheme, shape, LAST_STEP + extra)?;
             limit_mesh(&mesh, &loop_limit(&mesh, w)?)?
         }
         Scheme::CatmullClark => {
-            let mesh = refined(scheme, shape, LAST_STEP)?;
+            let mesh = refined(scheme, shape, LAST_STEP + extra)?;
             limit_mesh(&mesh, &catmull_clark_limit(&mesh)?)?
         }
-        _ => refined(scheme, shape, LIMIT_STEPS)?.to_triangle_mesh()?,
+        _ => refined(scheme, shape, LIMIT_STEPS + extra)?.to_triangle_mesh()?,
     };
     glb(&mesh)
 }
+
+/// Steps added to the cube's limit surfaces: rounded into a near-sphere, its silhouette shows
+/// the facets of the steps that suffice for the star's spikes at the renders' 1200×900.
+const CUBE_EXTRA_STEP: usize = 1;
 
 /// The head of figure 4.35 after [`HEAD_STEPS`] steps of `scheme` (the control mesh for
 /// `None`).
@@ -328,8 +333,9 @@ pub(crate) const FIGURES: &[Figure] = &[
         LOOP,
         Shape::TriCube,
         Shape::TriStar,
-        "The triangulated cube and star after three Loop steps with every vertex moved to its limit position and \
-         given its exact limit normal (`loop_limit`: Loop's limit masks), so every vertex lies on the limit surface.",
+        "The triangulated cube and star after four and three Loop steps (the cube one more, so that its round \
+         silhouette shows no facets) with every vertex moved to its limit position and given its exact limit normal \
+         (`loop_limit`: Loop's limit masks), so every vertex lies on the limit surface.",
         BOTH_DATA
     ),
     steps!(
@@ -352,8 +358,9 @@ pub(crate) const FIGURES: &[Figure] = &[
         Scheme::Butterfly,
         Shape::TriCube,
         Shape::TriStar,
-        "The triangulated cube and star after four steps of the modified butterfly scheme (it has no closed-form \
-         limit; four steps are 256 triangles per control triangle). The control vertices are kept: checked when the \
+        "The triangulated cube and star after five and four steps of the modified butterfly scheme (the cube one \
+         more, so that its round silhouette shows no facets; it has no closed-form limit; four steps are 256 \
+         triangles per control triangle). The control vertices are kept: checked when the \
          figure is made.",
         BOTH_DATA
     ),
@@ -377,8 +384,9 @@ pub(crate) const FIGURES: &[Figure] = &[
         Scheme::Sqrt3,
         Shape::TriCube,
         Shape::TriStar,
-        "The triangulated cube and star after four √3 steps (81 triangles per control triangle; no closed-form \
-         limit is used).",
+        "The triangulated cube and star after five and four √3 steps (the cube one more, so that its round \
+         silhouette shows no facets; four steps are 81 triangles per control triangle; no closed-form limit is \
+         used).",
         BOTH_DATA
     ),
     steps!(
@@ -413,8 +421,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         29,
         "Limit surfaces (Catmull-Clark subdivision)",
         Scheme::CatmullClark,
-        "The cube and star, (a), (b) of quads and (c), (d) triangulated, after three Catmull-Clark steps with every \
-         vertex moved to its limit position and given its exact limit normal (`catmull_clark_limit`), so every \
+        "The cube and star, (a), (b) of quads and (c), (d) triangulated, after three Catmull-Clark steps (four for \
+         the cube, so that its round silhouette shows no facets) with every vertex moved to its limit position and given its exact limit normal (`catmull_clark_limit`), so every \
          vertex lies on the limit surface. The thesis's two pairs of panels, both lettered (a), (b), are lettered \
          (a)–(d) here."
     ),
@@ -450,8 +458,8 @@ pub(crate) const FIGURES: &[Figure] = &[
         34,
         "Limit surfaces (Doo-Sabin subdivision)",
         Scheme::DooSabin,
-        "The cube and star, (a), (b) of quads and (c), (d) triangulated, after four Doo-Sabin steps (no \
-         closed-form limit is used). The thesis's two pairs of panels, both lettered (a), (b), are lettered \
+        "The cube and star, (a), (b) of quads and (c), (d) triangulated, after four Doo-Sabin steps (five for the \
+         cube, so that its round silhouette shows no facets; no closed-form limit is used). The thesis's two pairs of panels, both lettered (a), (b), are lettered \
          (a)–(d) here."
     ),
     Figure {
