@@ -5,8 +5,6 @@
 //! normal); a pixel hit by one and missed by the other is allowed only on a silhouette.
 //! (The torus and a synthetic surface are checked in `hi-raytrace`'s own tests.)
 
-use std::f64::consts::PI;
-
 use glam::DVec3;
 use hi_curve::bezier::{BezierScheme, HermiteDegree};
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, Smoothing, fit};
@@ -15,12 +13,9 @@ use hi_scan::scan::Scan;
 
 /// Points on r = 1 + 0.15 sin 5θ cos 3φ (a Fibonacci lattice).
 fn bumpy_scan(n: usize) -> Scan {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    let points = (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let d = DVec3::new(s * (k as f64 * golden).cos(), s * (k as f64 * golden).sin(), z);
+    let points = hi_testkit::fibonacci_sphere(n)
+        .map(|d| {
+            let d = DVec3::from(d);
             let (theta, phi) = (d.z.acos(), d.y.atan2(d.x));
             d * (1.0 + 0.15 * (5.0 * theta).sin() * (3.0 * phi).cos())
         })

@@ -2,8 +2,6 @@
 //! The §5.8 geometry image of contours: rows of located scan points, each made into a
 //! harmonic contour and resampled to the columns by Theorem 5.3.
 
-use std::f64::consts::PI;
-
 use glam::DVec3;
 use hi_curve::HarmonicCurve;
 use hi_geomimage::contours::contour_image;
@@ -13,14 +11,7 @@ use hi_scan::scan::Scan;
 
 /// `n` points on the ellipsoid with semi-axes `axes` (a Fibonacci lattice).
 fn ellipsoid(n: usize, axes: DVec3) -> Vec<DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            axes * DVec3::new(s * (k as f64 * golden).cos(), s * (k as f64 * golden).sin(), z)
-        })
-        .collect()
+    hi_testkit::fibonacci_sphere(n).map(|d| axes * DVec3::from(d)).collect()
 }
 
 /// The distinct values of a cyclic row, in order (runs once, the wrap joined).

@@ -143,16 +143,10 @@ fn an_icosphere_against_the_sphere() {
 #[test]
 fn the_measurements_match_the_sphere() {
     // Points at known distances from the exact unit sphere: radius 1 + d.
-    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    let n = 4000;
     let offset = |k: usize| if k.is_multiple_of(2) { 0.01 } else { -0.02 };
-    let points: Vec<DVec3> = (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            DVec3::new(s * phi.cos(), s * phi.sin(), z) * (1.0 + offset(k))
-        })
+    let points: Vec<DVec3> = hi_testkit::fibonacci_sphere(4000)
+        .enumerate()
+        .map(|(k, d)| DVec3::from(d) * (1.0 + offset(k)))
         .collect();
     let sphere = hi_surface::sphere(1.0);
     let (exact, _) =

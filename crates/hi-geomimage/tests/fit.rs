@@ -15,14 +15,7 @@ use hi_surface::{ParamRange, ParamWindow};
 mod common;
 
 fn fibonacci(n: usize) -> Vec<DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            DVec3::new(s * (k as f64 * golden).cos(), s * (k as f64 * golden).sin(), z)
-        })
-        .collect()
+    hi_testkit::fibonacci_sphere(n).map(DVec3::from).collect()
 }
 
 #[test]

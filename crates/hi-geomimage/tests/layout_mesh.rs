@@ -33,14 +33,12 @@ fn topology(mesh: &TriangleMesh) -> (i64, bool, usize) {
 
 fn bumpy_surface(layout: Layout, rows: usize, cols: usize) -> HarmonicSurface<DVec3> {
     let golden = PI * (3.0 - 5f64.sqrt());
-    let n = 20_000;
-    let points = (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
+    let points = hi_testkit::fibonacci_sphere(20_000)
+        .enumerate()
+        .map(|(k, d)| {
+            let d = DVec3::from(d);
             let phi = k as f64 * golden;
-            let d = DVec3::new(s * phi.cos(), s * phi.sin(), z);
-            d * (1.0 + 0.15 * (5.0 * z.acos()).sin() * (3.0 * phi).cos())
+            d * (1.0 + 0.15 * (5.0 * d.z.acos()).sin() * (3.0 * phi).cos())
         })
         .collect();
     let options = FitOptions {

@@ -23,8 +23,6 @@ fn peanut_distance(x: DVec3) -> f64 {
 
 /// Points on the peanut: a Fibonacci sphere on each lobe, less what lies inside the other.
 fn peanut_points(noise: f64) -> Vec<DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    let n = 20_000;
     let mut k = 0u64;
     let mut jitter = || {
         k = k.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
@@ -32,11 +30,8 @@ fn peanut_points(noise: f64) -> Vec<DVec3> {
     };
     let mut points = Vec::new();
     for (a, c) in LOBES.iter().enumerate() {
-        for i in 0..n {
-            let z = 1.0 - (2 * i + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = i as f64 * golden;
-            let p = *c + DVec3::new(s * phi.cos(), s * phi.sin(), z);
+        for d in hi_testkit::fibonacci_sphere(20_000) {
+            let p = *c + DVec3::from(d);
             if p.distance(LOBES[1 - a]) > 1.0 {
                 points.push(*c + (p - *c) * (1.0 + jitter()));
             }

@@ -5,8 +5,6 @@
 //! along a ray has a closed form), two nested spheres (never star-shaped) and a half sphere
 //! (holes).
 
-use std::f64::consts::PI;
-
 use glam::DVec3;
 use hi_geomimage::Error;
 use hi_geomimage::spherical::{SphericalOptions, ray_direction, spherical_image};
@@ -14,15 +12,7 @@ use hi_surface::ParamRange;
 
 /// `n` points spread evenly over the unit sphere (a Fibonacci lattice).
 fn fibonacci(n: usize) -> Vec<DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            DVec3::new(s * phi.cos(), s * phi.sin(), z)
-        })
-        .collect()
+    hi_testkit::fibonacci_sphere(n).map(DVec3::from).collect()
 }
 
 fn options(rows: usize, cols: usize) -> SphericalOptions {

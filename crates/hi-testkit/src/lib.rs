@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 //! What the workspace's tests share: the one configuration of the property tests
-//! ([`proptest_config`]), and the one rule for checks that need something outside the
-//! repository, a peer program or a data set ([`skip`], [`shared_model`], [`cgal_demo_data`]).
+//! ([`proptest_config`]), the one rule for checks that need something outside the
+//! repository, a peer program or a data set ([`skip`], [`shared_model`], [`cgal_demo_data`]),
+//! and the points spread evenly over the sphere that the fitting tests sample
+//! ([`fibonacci_sphere`]).
 //! Only the tests depend on this crate (a dev-dependency by path), so nothing here reaches a
 //! user of the libraries.
 
@@ -33,6 +35,28 @@ pub fn proptest_config(cases: u32) -> Config {
     }
     config.failure_persistence = None;
     config
+}
+
+/// `n` unit directions spread evenly over the sphere (a Fibonacci lattice): point k at height
+/// z = 1 − (2k + 1)/n, turned by k·π(3 − √5) (the golden angle) about the z axis.
+///
+/// ```
+/// let points: Vec<[f64; 3]> = hi_testkit::fibonacci_sphere(1000).collect();
+/// assert_eq!(points.len(), 1000);
+/// // On the unit sphere, as many above the equator as below, centred at the origin.
+/// assert!(points.iter().all(|p| (p[0].hypot(p[1]).hypot(p[2]) - 1.0).abs() < 1e-12));
+/// assert_eq!(points.iter().filter(|p| p[2] > 0.0).count(), 500);
+/// let mean: f64 = points.iter().map(|p| p[0] + p[1] + p[2]).sum::<f64>() / 1000.0;
+/// assert!(mean.abs() < 1e-2);
+/// ```
+pub fn fibonacci_sphere(n: usize) -> impl Iterator<Item = [f64; 3]> {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n).map(move |k| {
+        let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+        let s = (1.0 - z * z).sqrt();
+        let phi = k as f64 * golden;
+        [s * phi.cos(), s * phi.sin(), z]
+    })
 }
 
 /// The variable that makes every check needing something outside the repository run (a peer

@@ -2,7 +2,6 @@
 //! Helpers shared by the end-to-end tests of the `hi` binary in `cli_compare.rs` and
 //! `cli_surface.rs`: temporary files, running `hi`, and reading its JSON.
 
-use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -224,13 +223,7 @@ pub(crate) fn ellipsoid_mesh(
 
 /// `n` points on the ellipsoid with semi-axes `axes` (a Fibonacci lattice), as XYZ text.
 pub(crate) fn ellipsoid_xyz(n: usize, axes: [f64; 3]) -> String {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            format!("{} {} {}\n", axes[0] * s * phi.cos(), axes[1] * s * phi.sin(), axes[2] * z)
-        })
+    hi_testkit::fibonacci_sphere(n)
+        .map(|[x, y, z]| format!("{} {} {}\n", axes[0] * x, axes[1] * y, axes[2] * z))
         .collect()
 }
