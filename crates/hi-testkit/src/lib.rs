@@ -4,8 +4,8 @@
 //! repository, a peer program or a data set ([`skip`], [`shared_model`], [`cgal_demo_data`]),
 //! and the points spread evenly over the sphere that the fitting tests sample
 //! ([`fibonacci_sphere`]).
-//! Only the tests depend on this crate (a dev-dependency by path), so nothing here reaches a
-//! user of the libraries.
+//! Only the tests and `xtask` depend on this crate (by path), so nothing here reaches a user of
+//! the libraries.
 
 use proptest::test_runner::{Config, RngSeed};
 

@@ -14,7 +14,6 @@
 //! [`super::clouds`] (point clouds at scanner scale and scans of any topology, time and peak
 //! memory, in a subsection of its own that `cargo xtask bench fit-clouds` rewrites alone).
 
-use std::f64::consts::PI;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
@@ -97,15 +96,7 @@ const REAL: &[&str] = &[
 
 /// `n` points spread over the surface r(d) = radius(d) in direction d (a Fibonacci lattice).
 fn star_points(n: usize, radius: impl Fn(DVec3) -> DVec3) -> Vec<DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            radius(DVec3::new(s * phi.cos(), s * phi.sin(), z))
-        })
-        .collect()
+    hi_testkit::fibonacci_sphere(n).map(|d| radius(DVec3::from(d))).collect()
 }
 
 /// The scans: (name, source, scan).

@@ -2,8 +2,6 @@
 //! Figure 5.12: a harmonic surface fitted to scattered points on a sphere through a
 //! geometry image (algorithm 2, §5.3), with built-in data.
 
-use std::f64::consts::PI;
-
 use anyhow::{Result, ensure};
 use glam::DVec3;
 use hi_geomimage::{ErrorMeasure, FitOptions, Layout, fit};
@@ -58,17 +56,9 @@ pub(crate) const FIGURES: &[Figure] = &[Figure {
     panels: &[Panel { suffix: "b", title: "(b) Surface", draw: |_| sphere_fit() }],
 }];
 
-/// `n` points spread evenly over the unit sphere.
+/// `n` points spread evenly over the unit sphere ([`hi_testkit::fibonacci_sphere`]).
 fn fibonacci(n: usize) -> Vec<DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n)
-        .map(|k| {
-            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-            let s = (1.0 - z * z).sqrt();
-            let phi = k as f64 * golden;
-            DVec3::new(s * phi.cos(), s * phi.sin(), z)
-        })
-        .collect()
+    hi_testkit::fibonacci_sphere(n).map(DVec3::from).collect()
 }
 
 /// Figure 5.12(b).

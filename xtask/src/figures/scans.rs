@@ -74,15 +74,9 @@ fn noise(k: usize) -> f64 {
     (mix(k as u64) >> 11) as f64 / (1u64 << 52) as f64 - 1.0
 }
 
-/// `n` directions spread evenly over the unit sphere (a Fibonacci lattice).
+/// `n` directions spread evenly over the unit sphere ([`hi_testkit::fibonacci_sphere`]).
 fn directions(n: usize) -> impl Iterator<Item = DVec3> {
-    let golden = PI * (3.0 - 5f64.sqrt());
-    (0..n).map(move |k| {
-        let z = 1.0 - (2 * k + 1) as f64 / n as f64;
-        let s = (1.0 - z * z).sqrt();
-        let phi = k as f64 * golden;
-        DVec3::new(s * phi.cos(), s * phi.sin(), z)
-    })
+    hi_testkit::fibonacci_sphere(n).map(DVec3::from)
 }
 
 /// Moves each point along its direction from the centroid by ±[`NOISE`] of the mean radius.
