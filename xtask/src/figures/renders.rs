@@ -146,7 +146,7 @@ pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Ve
                     (mesh.bounds().min, mesh.bounds().max),
                 ),
             };
-            render_mesh(mesh, &edges, &camera, Some((lo, hi)), from, MODEL_COLOR)
+            render_mesh(mesh, &edges, &camera, Some((lo, hi)), from, MODEL_COLOR, WHITE)
         })
         .collect()
 }
@@ -159,21 +159,13 @@ const CLOSE_UP_VIEW: DVec3 = DVec3::new(0.45, 2.0, 0.9);
 /// The colour of the models (linear RGB).
 const MODEL_COLOR: [f32; 3] = [0.72, 0.74, 0.78];
 
-/// The render of `mesh` with its `edges` drawn, through `camera`, on a floor under the box
-/// (`lo`, `hi`) (none for `None`), lit from `from` as [`render_models`] lights every model.
-fn render_mesh(
-    mesh: TriangleMesh,
-    edges: &[[u32; 2]],
-    camera: &Camera,
-    floor_under: Option<(DVec3, DVec3)>,
-    from: DVec3,
-    color: [f32; 3],
-) -> Result<Vec<u8>> {
-    render_mesh_on(mesh, edges, camera, floor_under, from, color, [1.0; 3])
-}
+/// The background of the renders (linear RGB), where no floor is seen.
+const WHITE: [f32; 3] = [1.0; 3];
 
-/// [`render_mesh`] on the background colour `background` (linear RGB).
-fn render_mesh_on(
+/// The render of `mesh` with its `edges` drawn, through `camera`, on a floor under the box
+/// (`lo`, `hi`) (none for `None`), lit from `from` as [`render_models`] lights every model,
+/// over `background` (linear RGB).
+fn render_mesh(
     mesh: TriangleMesh,
     edges: &[[u32; 2]],
     camera: &Camera,
@@ -231,7 +223,7 @@ pub(crate) fn render_close_up(glb: &[u8], keep: fn(DVec3) -> bool) -> Result<Vec
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let camera = Camera::fitting(&part, from, DVec3::Z, FOV, aspect, FILL)?;
     let b = mesh.bounds();
-    render_mesh(mesh, &edges, &camera, Some((b.min, b.max)), from, MODEL_COLOR)
+    render_mesh(mesh, &edges, &camera, Some((b.min, b.max)), from, MODEL_COLOR, WHITE)
 }
 
 /// A render of the point set `points` of figure `number`, each point a small ball of radius
@@ -260,7 +252,7 @@ pub(crate) fn render_points(number: (u32, u32), points: &[DVec3], size: f64) -> 
     let from = view(number);
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let camera = Camera::fitting(points, from, DVec3::Z, FOV, aspect, FILL)?;
-    render_mesh_on(mesh, &[], &camera, None, from, POINT_COLOR, floor_shade(from)?)
+    render_mesh(mesh, &[], &camera, None, from, POINT_COLOR, floor_shade(from)?)
 }
 
 /// The colour of data points (linear RGB): a blue, as the point sets of the plots.

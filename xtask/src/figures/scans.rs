@@ -326,14 +326,16 @@ fn real_scan(file: &str) -> Result<Scan> {
 /// The data set of figure `number`: the points of the real model `file` (the vertices its
 /// triangles use), each a small ball, seen as its surface is ([`real_glb`]).
 fn real_points(number: (u32, u32), file: &str) -> Result<Vec<u8>> {
-    let scan = real_scan(file)?;
+    super::renders::render_points(number, &used_points(&real_scan(file)?), 0.0035)
+}
+
+/// The points of `scan` its triangles use (all of them for a point set).
+pub(crate) fn used_points(scan: &Scan) -> Vec<DVec3> {
     let mut used = vec![scan.triangles.is_empty(); scan.points.len()];
     for &k in scan.triangles.iter().flatten() {
         used[k as usize] = true;
     }
-    let points: Vec<DVec3> =
-        scan.points.iter().zip(&used).filter(|(_, u)| **u).map(|(p, _)| *p).collect();
-    super::renders::render_points(number, &points, 0.0035)
+    scan.points.iter().zip(&used).filter(|(_, u)| **u).map(|(p, _)| *p).collect()
 }
 
 /// The fit of the real model `file` of `fixtures/models` ([`real_scan`]) by

@@ -20,6 +20,7 @@ use super::report::count_name;
 use super::{
     BIG, CGAL_DATA, Case, GROWTH_MODEL, Group, NOISE, SEED, Scale, Source, TOPOLOGY, Topo,
 };
+use crate::figures::scans::used_points;
 
 /// Extracts the CGAL files [`TOPOLOGY`] uses into `target/xtask-bench/cgal/` (once); the
 /// folder, or why not.
@@ -51,17 +52,6 @@ fn cgal_data(root: &Path) -> std::result::Result<PathBuf, String> {
         return Err(format!("tar could not extract {} from {CGAL_DATA}", wanted.join(", ")));
     }
     Ok(dir)
-}
-
-/// The points of `scan` its triangles use (all of them for a point set).
-fn used_points(scan: &Scan) -> Vec<DVec3> {
-    let mut used = vec![scan.triangles.is_empty(); scan.points.len()];
-    for t in &scan.triangles {
-        for &k in t {
-            used[k as usize] = true;
-        }
-    }
-    scan.points.iter().zip(&used).filter(|(_, u)| **u).map(|(p, _)| *p).collect()
 }
 
 /// The cloud of `n` points of the mesh `scan` (named `name`), from the cache or made now.
