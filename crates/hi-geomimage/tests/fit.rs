@@ -324,3 +324,21 @@ fn every_layout_faces_outwards() {
         );
     }
 }
+
+#[test]
+fn a_point_listed_twice_is_one_point() {
+    // An ellipsoid's points, and the same points each listed twice (as a mesh's vertices are,
+    // written triangle by triangle): one surface, to the last bit.
+    let points: Vec<DVec3> =
+        fibonacci(3_000).into_iter().map(|p| p * DVec3::new(1.4, 1.0, 0.8)).collect();
+    let once = Scan { points: points.clone(), ..Scan::default() };
+    let twice = Scan { points: points.iter().flat_map(|&p| [p, p]).collect(), ..Scan::default() };
+    let a = fit(&once, &FitOptions::default(), &mut |_| {}).unwrap();
+    let b = fit(&twice, &FitOptions::default(), &mut |_| {}).unwrap();
+    assert_eq!(a.report.method, Method::ShrinkWrap);
+    assert_eq!(a.largest().surface.points(), b.largest().surface.points());
+    assert!(!a.report.method_reason.contains("repeat"), "{}", a.report.method_reason);
+    let said = "3000 points that repeat another exactly taken once";
+    assert!(b.report.method_reason.contains(said), "{}", b.report.method_reason);
+    assert_eq!(b.report.points, 6_000);
+}

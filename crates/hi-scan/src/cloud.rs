@@ -212,6 +212,74 @@ pub fn summarise(points: &[DVec3], normals: Option<&[DVec3]>, cell: f64) -> Resu
     Ok(Summary { points: out_points, normals: out_normals, counts, cell })
 }
 
+/// The distinct points of `points`, each once, in the order they first appear, with the
+/// mean of their normals (as [`summarise`] averages a cell's) and how many times each was
+/// listed: a mesh's vertices written triangle by triangle (an STL file, a mesh whose seams
+/// repeat their vertices) list most points several times, and a neighbourhood of k points
+/// would hold fewer than k distinct ones. The [`Summary::cell`] is 0. Points equal as numbers
+/// are one point (−0 and +0 alike).
+///
+/// # Errors
+///
+/// [`Error::NonFinite`] for a non-finite point; [`Error::InvalidOption`] for a normal count
+/// other than the point count.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::cloud::merge_duplicates;
+///
+/// let points = [DVec3::X, DVec3::Y, DVec3::X, DVec3::new(-0.0, 1.0, 0.0)];
+/// let merged = merge_duplicates(&points, None).unwrap();
+/// assert_eq!(merged.points, vec![DVec3::X, DVec3::Y]);
+/// assert_eq!(merged.counts, vec![2, 2]);
+/// ```
+pub fn merge_duplicates(points: &[DVec3], normals: Option<&[DVec3]>) -> Result<Summary, Error> {
+    if let Some(n) = normals
+        && n.len() != points.len()
+    {
+        return Err(Error::InvalidOption {
+            name: "normals",
+            value: n.len() as f64,
+            expected: "one normal per point",
+        });
+    }
+    if let Some(k) = points.iter().position(|p| !p.is_finite()) {
+        return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
+    }
+    // +0.0 turns −0 into +0.
+    let key = |p: DVec3| (p + DVec3::ZERO).to_array().map(f64::to_bits);
+    let mut order: Vec<([u64; 3], u32)> = points
+        .par_iter()
+        .map(|p| key(*p))
+        .zip(0..u32::try_from(points.len()).unwrap_or(u32::MAX))
+        .collect();
+    order.par_sort_unstable();
+    // (first index, members) of each distinct point, then in the order of first appearance.
+    let mut groups: Vec<(u32, &[([u64; 3], u32)])> = order
+        .chunk_by(|a, b| a.0 == b.0)
+        .map(|members| (members[0].1, members))
+        .collect();
+    groups.sort_unstable_by_key(|g| g.0);
+    let out_points = groups.iter().map(|&(first, _)| points[first as usize]).collect();
+    let out_normals = normals.map(|given| {
+        groups
+            .iter()
+            .map(|(_, members)| {
+                members
+                    .iter()
+                    .map(|&(_, i)| given[i as usize].normalize_or_zero())
+                    .sum::<DVec3>()
+                    .normalize_or_zero()
+            })
+            .collect()
+    });
+    let counts =
+        groups.iter().map(|(_, members)| u32::try_from(members.len()).unwrap_or(u32::MAX)).collect();
+    Ok(Summary { points: out_points, normals: out_normals, counts, cell: 0.0 })
+}
+
 /// The indices of `points` ordered cell by cell on a grid of about 256 cells along the longest
 /// side of their bounding box (in the scan's order within a cell): nearest-point and
 /// closest-point queries made in this order find their answers near the last ones, in cache.

@@ -109,6 +109,7 @@ fn mesh_sources(
                 share(texels, part.area_fraction, kept),
                 size,
                 options.layout,
+                true,
             )
         })?;
         let mut repair = part.closed.repair;
@@ -262,7 +263,7 @@ fn point_sources_on(
     let mut planned = planned;
     for (k, part) in planned.iter_mut().enumerate() {
         let image = clock.run(StageKind::GeometryImage, (k, n), || {
-            let layout = rescue.then_some(options.layout);
+            let layout = (options.layout, rescue);
             settled_part_image(part, &surface, reps, &mls, (texels, kept, size), layout)
         })?;
         out.push(Sourced {
@@ -327,20 +328,18 @@ fn wrapped_source(
 /// The image of one part of a point set's zero set in [`point_sources_on`]: sampled from its
 /// parameterisation with its `share` of the texels (`texels`, the parts' area `kept`, the
 /// user's `size`), settled onto the patches of `surface` and refined by moving least squares;
-/// with `rescue` (a layout), closed as a sphere in it should its sheet or torus map fail.
+/// in `layout`, closed as a sphere should its sheet map squeeze part of it to nothing, or, with
+/// `rescue`, should its sheet or torus map fail.
 fn settled_part_image(
     part: &mut PlannedPart,
     surface: &PointSurface,
     reps: &[DVec3],
     mls: &MovingLeastSquares,
     (texels, kept, size): (usize, f64, Option<(usize, usize)>),
-    rescue: Option<Layout>,
+    (layout, rescue): (Layout, bool),
 ) -> Result<ShrinkWrapImage, Error> {
     let texels = share(texels, part.area_fraction, kept);
-    let image = match rescue {
-        Some(layout) => part_image_or_sphere(part, texels, size, layout)?,
-        None => part_image(part, texels, size)?,
-    };
+    let image = part_image_or_sphere(part, texels, size, layout, rescue)?;
     let (r, c) = (image.image.rows(), image.image.cols());
     let mut settled = settle(
         surface,
@@ -452,14 +451,12 @@ fn ray_sources(
 /// The images of the scan's parts by the method asked for (`Auto`: a mesh's parts if they can
 /// stand for it, else the points'); see the module documentation.
 pub(super) fn sources(
-    scan: &Scan,
-    (points, triangles): (&[DVec3], &[[u32; 3]]),
+    (points, normals, triangles): (&[DVec3], Option<&[DVec3]>, &[[u32; 3]]),
     options: &FitOptions,
     (rows, cols): (usize, usize),
     clock: &mut Clock<'_>,
 ) -> Result<Sources, Error> {
     let texels = Domain::Sphere(options.layout).distinct_texels(rows, cols);
-    let normals = if triangles.is_empty() { scan.normals.as_deref() } else { None };
     Ok(match options.method {
         Method::Radial | Method::Contours => {
             ray_sources(points, triangles, options, (rows, cols), clock)?

@@ -44,7 +44,7 @@ use std::time::Instant;
 
 use glam::DVec3;
 use hi_curve::ReductionDeviation;
-use hi_scan::cloud::{cell_for_count, summarise};
+use hi_scan::cloud::{cell_for_count, merge_duplicates, summarise};
 use hi_scan::distance::{Distances, bounding_diagonal};
 use hi_scan::implicit::{CELL, MovingLeastSquares, PointSurface};
 use hi_scan::repair::{MeshParts, Repair, mesh_parts};
@@ -65,7 +65,7 @@ use crate::shrinkwrap::{ShrinkWrapImage, ShrinkWrapOptions, settle, shrink_wrap}
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
 use images::{Sourced, Sources, leave_out_guesswork, sources};
-use parts::{PlannedPart, drop_fragments, part_image, part_image_or_sphere, plan};
+use parts::{PlannedPart, drop_fragments, part_image_or_sphere, plan};
 use report::{measure_error, part_report, row_points};
 use surfaces::{Surfaced, filled_on_grid, regularisation_for, surface_of};
 
@@ -509,6 +509,30 @@ fn referenced(scan: &Scan) -> (Cow<'_, [DVec3]>, Vec<[u32; 3]>, usize) {
     (Cow::Owned(points), triangles, unused)
 }
 
+/// A point set's `points` each once, with the scan's normals (averaged over a point's
+/// copies), and how many copies were merged: a point listed twice (a mesh's vertices written
+/// triangle by triangle, as an STL file or a mesh's seams list them) is one point, or the
+/// nearest neighbours about it would be fewer distinct points than the local fits need, and
+/// the fit would change with the copies. A mesh's points (`triangles` not empty) as they are,
+/// without normals.
+#[expect(clippy::type_complexity, reason = "the three results named in the documentation")]
+fn distinct<'a>(
+    scan: &'a Scan,
+    points: Cow<'a, [DVec3]>,
+    triangles: &[[u32; 3]],
+) -> Result<(Cow<'a, [DVec3]>, Option<Cow<'a, [DVec3]>>, usize), Error> {
+    if !triangles.is_empty() {
+        return Ok((points, None, 0));
+    }
+    let normals = scan.normals.as_deref().filter(|n| n.len() == points.len());
+    let merged = merge_duplicates(&points, normals)?;
+    let repeats = points.len() - merged.points.len();
+    if repeats == 0 {
+        return Ok((points, normals.map(Cow::Borrowed), 0));
+    }
+    Ok((Cow::Owned(merged.points), merged.normals.map(Cow::Owned), repeats))
+}
+
 /// Times the stages of a fit and tells the progress display.
 struct Clock<'a> {
     stages: Vec<Stage>,
@@ -608,6 +632,8 @@ pub fn fit(
 ) -> Result<Fit, Error> {
     check_options(options)?;
     let (points, triangles, unused_points) = referenced(scan);
+    let listed = points.len();
+    let (points, normals, repeats) = distinct(scan, points, &triangles)?;
     if points.len() < 4 {
         return Err(Error::TooFewPoints { found: points.len(), needed: 4 });
     }
@@ -620,7 +646,11 @@ pub fn fit(
         }
     });
     let mut clock = Clock { stages: Vec::new(), on_stage };
-    let mut sources = sources(scan, (&points, &triangles), options, size, &mut clock)?;
+    let mut sources =
+        sources((&points, normals.as_deref(), &triangles), options, size, &mut clock)?;
+    if repeats > 0 {
+        sources.reason += &format!("; {repeats} points that repeat another exactly taken once");
+    }
     leave_out_guesswork(&mut sources, options.max_hole_fraction)?;
     let Sources { parts: sourced, dropped, method, reason, image_points } = sources;
     let (how, noise) = regularisation_for(options, method, &image_points);
@@ -635,7 +665,7 @@ pub fn fit(
     let report = FitReport {
         method,
         method_reason: reason,
-        points: points.len(),
+        points: listed,
         unused_points,
         image_points: image_points.len(),
         dropped_points: scan.dropped_points,

@@ -296,6 +296,15 @@ pub(crate) struct PartImage {
 /// layout; the torus's shorter side).
 const MIN_SIDE: usize = 16;
 
+/// A sheet's map onto the square with a stretch efficiency ([`FlatQuality`]) below this gives
+/// some part of the surface a billionth of its share of the texels or less: none, in any
+/// image (a handle of a cup-shaped part, cut and squeezed against a side of the square). Such
+/// a part is closed as a sphere instead ([`part_image_or_sphere`]). The maps of terrains and of ragged scans lie far above (10⁻⁶
+/// to 1).
+///
+/// [`FlatQuality`]: crate::flat::FlatQuality
+const MIN_SHEET_EFFICIENCY: f64 = 1e-9;
+
 /// The image of `part` over its domain, with about `texels` distinct texels (`resolution`, if
 /// given, for the sphere's layouts: rows × columns as the user asked).
 pub(crate) fn part_image(
@@ -352,18 +361,33 @@ pub(crate) fn part_image(
     }
 }
 
-/// [`part_image`], and should a sheet's or a torus's map fail (a fold its solve cannot undo,
-/// on a ragged zero set), the part closed as a sphere instead (its boundary capped, its
-/// handles cut) and mapped over the sphere in `layout`: `part`'s surface, domain and reason
-/// are changed to say so. The sphere's own failure is returned as it is.
+/// [`part_image`], and should a sheet's map squeeze part of it to nothing
+/// ([`MIN_SHEET_EFFICIENCY`]), or, with `any_failure`, a sheet's or a torus's map fail (a fold
+/// its solve cannot undo, on a ragged zero set), the part closed as a sphere instead (its
+/// boundary capped, its handles cut) and mapped over the sphere in `layout`: `part`'s
+/// surface, domain and reason are changed to say so. The sphere's own failure is returned as
+/// it is.
 pub(crate) fn part_image_or_sphere(
     part: &mut PlannedPart,
     texels: usize,
     resolution: Option<(usize, usize)>,
     layout: Layout,
+    any_failure: bool,
 ) -> Result<PartImage, Error> {
     let failed = match part_image(part, texels, resolution) {
-        Err(e) if !matches!(part.domain, Domain::Sphere(_)) => e,
+        Ok(image)
+            if part.domain == Domain::Sheet
+                && image.quality.stretch_efficiency() < MIN_SHEET_EFFICIENCY =>
+        {
+            Error::Topology {
+                what: format!(
+                    "its map onto the square leaves part of it next to no texels (a stretch \
+                     efficiency of {:.0e}: a handle or a long limb squeezed against a side)",
+                    image.quality.stretch_efficiency()
+                ),
+            }
+        }
+        Err(e) if any_failure && !matches!(part.domain, Domain::Sphere(_)) => e,
         done => return done,
     };
     let Ok(closed) = close_part(&part.part, Closing::Sphere) else {
@@ -488,7 +512,7 @@ mod tests {
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
         part.domain = Domain::Sheet;
         let sheet_error = part_image(&part, 32 * 32, None).unwrap_err().to_string();
-        let image = part_image_or_sphere(&mut part, 32 * 32, None, Layout::FlatOctahedron)
+        let image = part_image_or_sphere(&mut part, 32 * 32, None, Layout::FlatOctahedron, true)
             .expect("the sphere's map");
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
         assert!(part.why.contains("not an open sheet"), "{}", part.why);
