@@ -522,4 +522,71 @@ mod tests {
             assert!((p.x.abs() + p.y.abs() + p.z.abs() - 1.0).abs() < 1e-9, "{p}");
         }
     }
+
+    /// A sheet with a long limb (a dome of 20 × 20 cells, and from a hole of 2 × 2 cells in its
+    /// middle a square tube 40 cells long, capped): the disc map squeezes the limb until it
+    /// has no texels, so the part is closed as a sphere at once, and says why.
+    #[test]
+    fn a_sheet_whose_map_squeezes_a_limb_is_fitted_as_a_sphere() {
+        let h = 1.0 / 20.0;
+        let dome = |i: i32, j: i32| {
+            let (x, y) = (f64::from(i) * h, f64::from(j) * h);
+            DVec3::new(x, y, 0.3 * x * (1.0 - x) * y * (1.0 - y))
+        };
+        let mut p: Vec<DVec3> = Vec::new();
+        let mut at = std::collections::HashMap::new();
+        let mut t: Vec<[u32; 3]> = Vec::new();
+        let hole = |i: i32, j: i32| (9..11).contains(&i) && (9..11).contains(&j);
+        for i in 0..20 {
+            for j in 0..20 {
+                if hole(i, j) {
+                    continue;
+                }
+                let mut v = |a: i32, b: i32| {
+                    *at.entry((a, b)).or_insert_with(|| {
+                        p.push(dome(a, b));
+                        (p.len() - 1) as u32
+                    })
+                };
+                let [a, b, c, d] = [v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)];
+                t.extend([[a, b, c], [a, c, d]]);
+            }
+        }
+        // The hole's rim, counter-clockwise seen from above, and the tube's rings above it.
+        let rim = [(9, 9), (10, 9), (11, 9), (11, 10), (11, 11), (10, 11), (9, 11), (9, 10)];
+        let mut below: Vec<u32> = rim.iter().map(|k| at[k]).collect();
+        for level in 1..=40 {
+            let ring: Vec<u32> = rim
+                .iter()
+                .map(|&(i, j)| {
+                    p.push(dome(i, j) + DVec3::Z * (f64::from(level) * h));
+                    (p.len() - 1) as u32
+                })
+                .collect();
+            for k in 0..8 {
+                let (a, b) = (below[k], below[(k + 1) % 8]);
+                let (c, d) = (ring[(k + 1) % 8], ring[k]);
+                // The tube's outside faces away from its axis; the dome's top is +z.
+                t.extend([[a, c, b], [a, d, c]]);
+            }
+            below = ring;
+        }
+        let top = p.len() as u32;
+        p.push(dome(10, 10) + DVec3::Z * (41.0 * h));
+        for k in 0..8 {
+            t.push([below[k], top, below[(k + 1) % 8]]);
+        }
+        let parts = mesh_parts(&p, &t).unwrap();
+        assert_eq!(parts.parts.len(), 1);
+        let (mut planned, _) = plan(&parts, Boundary::Auto, Layout::FlatOctahedron, 0.0, 4);
+        let mut part = planned.swap_remove(0);
+        assert_eq!(part.domain, Domain::Sheet, "{}", part.why);
+        let sheet = part_image(&part, 64 * 64, None).expect("a map, squeezed");
+        let efficiency = sheet.quality.stretch_efficiency();
+        assert!(efficiency < MIN_SHEET_EFFICIENCY, "{efficiency:e}");
+        part_image_or_sphere(&mut part, 64 * 64, None, Layout::FlatOctahedron, false)
+            .expect("the sphere's map");
+        assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
+        assert!(part.why.contains("next to no texels"), "{}", part.why);
+    }
 }
