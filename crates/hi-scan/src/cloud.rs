@@ -257,10 +257,8 @@ pub fn merge_duplicates(points: &[DVec3], normals: Option<&[DVec3]>) -> Result<S
         .collect();
     order.par_sort_unstable();
     // (first index, members) of each distinct point, then in the order of first appearance.
-    let mut groups: Vec<(u32, &[([u64; 3], u32)])> = order
-        .chunk_by(|a, b| a.0 == b.0)
-        .map(|members| (members[0].1, members))
-        .collect();
+    let mut groups: Vec<(u32, &[([u64; 3], u32)])> =
+        order.chunk_by(|a, b| a.0 == b.0).map(|members| (members[0].1, members)).collect();
     groups.sort_unstable_by_key(|g| g.0);
     let out_points = groups.iter().map(|&(first, _)| points[first as usize]).collect();
     let out_normals = normals.map(|given| {
@@ -275,8 +273,10 @@ pub fn merge_duplicates(points: &[DVec3], normals: Option<&[DVec3]>) -> Result<S
             })
             .collect()
     });
-    let counts =
-        groups.iter().map(|(_, members)| u32::try_from(members.len()).unwrap_or(u32::MAX)).collect();
+    let counts = groups
+        .iter()
+        .map(|(_, members)| u32::try_from(members.len()).unwrap_or(u32::MAX))
+        .collect();
     Ok(Summary { points: out_points, normals: out_normals, counts, cell: 0.0 })
 }
 
