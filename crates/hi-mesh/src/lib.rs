@@ -10,6 +10,7 @@
 //! | what | where |
 //! |---|---|
 //! | indexed triangle meshes with normals, UVs and optional vertex colours | [`TriangleMesh`] |
+//! | a coarse mesh of a smooth surface drawn smooth: curved PN triangles (Vlachos et al. 2001) | [`TriangleMesh::curved`] |
 //! | values → colours: the thesis's blue → purple ramp, viridis, cool–warm, with a legend | [`ColorMap`], [`ColorLegend`], [`Palette`] |
 //! | OBJ and glTF 2.0 (`.gltf`, `.glb`) files of a mesh or of a scene of named meshes, read-back checks | [`export`] |
 //! | polygon meshes with half-edge adjacency; subdivision surfaces of §4.5 (Loop, butterfly, √3, Catmull-Clark, Doo-Sabin) | [`PolyMesh`], [`subdivision`] |
@@ -44,6 +45,7 @@
 //! format left out with [`Error::FeatureDisabled`], naming the feature.
 
 mod colormap;
+mod curved;
 mod error;
 pub mod export;
 mod polygon_soup;

@@ -50,7 +50,7 @@ pub struct TriangleMesh {
     uvs: Vec<DVec2>,
     colors: Option<Vec<[f32; 3]>>,
     triangles: Vec<[u32; 3]>,
-    legend: Option<ColorLegend>,
+    pub(crate) legend: Option<ColorLegend>,
 }
 
 impl TriangleMesh {

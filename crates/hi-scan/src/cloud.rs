@@ -250,14 +250,16 @@ pub fn merge_duplicates(points: &[DVec3], normals: Option<&[DVec3]>) -> Result<S
     }
     // +0.0 turns −0 into +0.
     let key = |p: DVec3| (p + DVec3::ZERO).to_array().map(f64::to_bits);
-    let mut order: Vec<([u64; 3], u32)> = points
+    // (the point's bits, its index), sorted.
+    type Keyed = ([u64; 3], u32);
+    let mut order: Vec<Keyed> = points
         .par_iter()
         .map(|p| key(*p))
         .zip(0..u32::try_from(points.len()).unwrap_or(u32::MAX))
         .collect();
     order.par_sort_unstable();
     // (first index, members) of each distinct point, then in the order of first appearance.
-    let mut groups: Vec<(u32, &[([u64; 3], u32)])> =
+    let mut groups: Vec<(u32, &[Keyed])> =
         order.chunk_by(|a, b| a.0 == b.0).map(|members| (members[0].1, members)).collect();
     groups.sort_unstable_by_key(|g| g.0);
     let out_points = groups.iter().map(|&(first, _)| points[first as usize]).collect();

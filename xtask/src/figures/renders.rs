@@ -41,6 +41,11 @@ const FLOOR_COLOR: [f32; 3] = [1.0, 1.0, 1.0];
 /// The vertical field of view (radians).
 const FOV: f64 = 0.6;
 
+/// Each triangle of §5.9's models cut into this many squared on its PN patch
+/// ([`render_models`]): a quad of the 48 × 16 grid spans up to about 60 pixels of the render,
+/// and its outline in 4 cubic pieces shows no corner.
+const PN_LEVEL: usize = 4;
+
 /// The mesh a `.glb` file holds (one mesh, one triangle primitive, as the figures write) and
 /// the edges of its second primitive of lines, if it has one.
 fn mesh_from_glb(bytes: &[u8]) -> Result<(TriangleMesh, Vec<[u32; 2]>)> {
@@ -117,9 +122,25 @@ fn webp(scene: &Scene, camera: &Camera) -> Result<Vec<u8>> {
 /// When the panels show one object at about one size (every panel's bounding box at least half
 /// the diagonal of all of theirs: a subdivision series, a surface and its curvature), one
 /// camera frames them all, so that they compare; otherwise each panel is framed alone.
+///
+/// The models of §5.9's comparisons (5.31–5.43), a coarse sampling of a smooth surface with its
+/// exact normals, are drawn as curved PN triangles ([`TriangleMesh::curved`], [`PN_LEVEL`]):
+/// the same vertices and normals, without the polygonal outline and shadows of their flat
+/// triangles. Not the doubled Möbius strip (5.35), whose models cover the strip twice: two
+/// coverings curved each its own way would show through each other.
 pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Vec<u8>>> {
-    let (meshes, edges): (Vec<TriangleMesh>, Vec<Vec<[u32; 2]>>) =
-        glbs.iter().map(|g| mesh_from_glb(g)).collect::<Result<Vec<_>>>()?.into_iter().unzip();
+    let (meshes, edges): (Vec<TriangleMesh>, Vec<Vec<[u32; 2]>>) = glbs
+        .iter()
+        .map(|g| {
+            let (mesh, edges) = mesh_from_glb(g)?;
+            Ok(match number {
+                (5, 31..=34 | 36..=43) if edges.is_empty() => (mesh.curved(PN_LEVEL)?, edges),
+                _ => (mesh, edges),
+            })
+        })
+        .collect::<Result<Vec<_>>>()?
+        .into_iter()
+        .unzip();
     let from = view(number);
     let aspect = f64::from(WIDTH) / f64::from(HEIGHT);
     let diagonal = |m: &TriangleMesh| {
