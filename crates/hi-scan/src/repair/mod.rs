@@ -320,6 +320,19 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
     // 6. Close the holes (for a disc, all but the widest).
     let mut filled = vec![false; kept.len()];
     let mut loops = boundary_loops(&kept, positions.len());
+    // Closing the holes leaves the genus as it is: a part with more handles than step 7 cuts
+    // (or a torus of another genus) fails here, before its holes are filled at a cost.
+    let boundary: i64 = loops.iter().map(|l| l.len() as i64).sum();
+    let genus =
+        (2 - euler_characteristic(positions.len(), kept.len(), boundary) - loops.len() as i64) / 2;
+    let hopeless = match closing {
+        Closing::Torus => genus != 1,
+        Closing::Sphere | Closing::Disc => genus > MAX_HANDLES as i64,
+    };
+    if hopeless {
+        let open = i64::from(closing == Closing::Disc && !loops.is_empty());
+        return Err(genus_error(closing, 2 - 2 * genus - open, open));
+    }
     let open = if closing == Closing::Disc {
         let widest = (0..loops.len()).max_by(|&a, &b| {
             loop_measures(&loops[a], &positions)
@@ -365,19 +378,7 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
     let e = (3 * kept.len() as i64 + boundary_edges) / 2;
     let chi = positions.len() as i64 - e + kept.len() as i64;
     if chi != chi_wanted {
-        let b = i64::from(open.is_some());
-        return Err(Error::Topology {
-            what: format!(
-                "the surface has genus {} once its holes are closed (Euler characteristic {chi}), not the genus {} a {} needs",
-                (2 - chi - b) / 2,
-                if closing == Closing::Torus { 1 } else { 0 },
-                match closing {
-                    Closing::Sphere => "sphere",
-                    Closing::Torus => "torus",
-                    Closing::Disc => "disc",
-                }
-            ),
-        });
+        return Err(genus_error(closing, chi, i64::from(open.is_some())));
     }
 
     // 9. Outward, for a closed surface.
@@ -388,6 +389,23 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
         repair.flipped = true;
     }
     Ok(ClosedMesh { positions, triangles: kept, scan_vertex, filled, repair })
+}
+
+/// The error of [`close_part`] for a closed surface of Euler characteristic `chi` with `open`
+/// boundary loops (1 for a disc's, else 0), of another genus than `closing` needs.
+fn genus_error(closing: Closing, chi: i64, open: i64) -> Error {
+    Error::Topology {
+        what: format!(
+            "the surface has genus {} once its holes are closed (Euler characteristic {chi}), not the genus {} a {} needs",
+            (2 - chi - open) / 2,
+            if closing == Closing::Torus { 1 } else { 0 },
+            match closing {
+                Closing::Sphere => "sphere",
+                Closing::Torus => "torus",
+                Closing::Disc => "disc",
+            }
+        ),
+    }
 }
 
 /// Closes the mesh (`points`, `triangles`) into a genus-0 surface: its largest part

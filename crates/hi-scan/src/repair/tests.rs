@@ -257,3 +257,47 @@ fn caps_of_long_holes_stay_small_flat_and_well_shaped() {
         }
     }
 }
+
+/// A plate with 6 × 6 round holes through it, as a closed mesh (the zero set of its signed
+/// distance, [`crate::surfacenets`]): a surface of genus 36, more handles than
+/// [`MAX_HANDLES`]. Closed as a sphere or a disc it fails (the handles are left uncut), as a
+/// torus too, each naming the genus.
+#[test]
+fn a_part_of_more_handles_than_are_cut_names_its_genus() {
+    let h = 0.5;
+    let dims = [56, 56, 9];
+    let origin = DVec3::new(-2.0, -2.0, -2.0);
+    let mut values = Vec::with_capacity(dims.iter().product());
+    for k in 0..dims[2] {
+        for j in 0..dims[1] {
+            for i in 0..dims[0] {
+                let p = origin + DVec3::new(i as f64, j as f64, k as f64) * h;
+                let plate =
+                    ((p.x - 12.0).abs() - 12.0).max((p.y - 12.0).abs() - 12.0).max(p.z.abs() - 1.0);
+                let hole = (0..36)
+                    .map(|n| {
+                        let c =
+                            DVec3::new(2.0 + 4.0 * (n % 6) as f64, 2.0 + 4.0 * (n / 6) as f64, 0.0);
+                        (p - c).truncate().length() - 1.0
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                values.push(plate.max(-hole));
+            }
+        }
+    }
+    let grid = crate::surfacenets::Grid { origin, spacing: h, dims, values: &values };
+    let (p, t) = crate::surfacenets::surface_nets(&grid).unwrap();
+    let parts = mesh_parts(&p, &t).unwrap();
+    assert_eq!(parts.parts.len(), 1);
+    let part = &parts.parts[0];
+    assert_eq!(part_topology(part).genus, 36);
+    for (closing, needs) in [
+        (Closing::Sphere, "genus 0 a sphere"),
+        (Closing::Disc, "genus 0 a disc"),
+        (Closing::Torus, "genus 1 a torus"),
+    ] {
+        let message = close_part(part, closing).unwrap_err().to_string();
+        assert!(message.contains("genus 36 once its holes are closed"), "{message}");
+        assert!(message.contains(needs), "{message}");
+    }
+}
