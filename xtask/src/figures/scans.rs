@@ -224,6 +224,38 @@ fn head_point(head: &RadialHead, dir: DVec3, pointed: bool) -> DVec3 {
     dir * r
 }
 
+/// The control mesh of the head (figures 1.1 and 4.35): the geodesic sphere of
+/// [`CONTROL_LEVELS`] cuts of the octahedron (512 triangles, 258 vertices), its directions drawn
+/// towards the face by a conformal zoom ([`FACE_ZOOM`]), each vertex on the head's surface along
+/// its direction ([`head_point`]): a coarse closed triangle mesh of Lee Perry-Smith's head, as
+/// the thesis's control mesh of the mannequin was coarse.
+pub(crate) fn head_control() -> Result<(Vec<DVec3>, Vec<[u32; 3]>)> {
+    let head = radial_head()?;
+    let (directions, faces) = super::surfaces::geodesic(CONTROL_LEVELS);
+    let points = directions.into_iter().map(|d| head_point(head, toward_face(d), false)).collect();
+    Ok((points, faces))
+}
+
+/// Cuts of the octahedron in the head's control mesh ([`head_control`]).
+const CONTROL_LEVELS: u32 = 3;
+
+/// The scale of the stereographic plane from the back of the head (−y) in [`toward_face`]: the
+/// face's vertices 1/0.6² = 2.8 times as dense as on the sphere, the back's as much sparser,
+/// every triangle's shape kept (the map is conformal).
+const FACE_ZOOM: f64 = 0.6;
+
+/// The unit direction `d` moved towards the face (+y): projected stereographically from −y onto
+/// the plane y = 0, scaled by [`FACE_ZOOM`] and projected back; −y itself stays.
+fn toward_face(d: DVec3) -> DVec3 {
+    let lift = 1.0 + d.y;
+    if lift <= 1e-12 {
+        return d;
+    }
+    let (a, b) = (FACE_ZOOM * d.x / lift, FACE_ZOOM * d.z / lift);
+    let r2 = a * a + b * b;
+    DVec3::new(2.0 * a, 1.0 - r2, 2.0 * b) / (1.0 + r2)
+}
+
 /// The scan of the head (standing in for the mannequin), or of the head with pointed ears (Spock).
 pub(crate) fn head_scan(pointed: bool) -> Result<Scan> {
     scan(if pointed { Model::Pointed } else { Model::Head })

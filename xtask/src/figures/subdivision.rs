@@ -136,64 +136,10 @@ fn head_stage(scheme: Option<Scheme>) -> Result<Vec<u8>> {
     }
 }
 
-/// A stand-in for Hoppe's mannequin head: a closed triangle mesh of 16 meridians and 9 rings
-/// (288 triangles) on an egg-shaped head, facing +y, with a nose, brows, eye sockets, ears,
-/// a narrower jaw and chin. Coarse, like the thesis's control mesh, so that the schemes differ.
-fn head() -> Result<PolyMesh> {
-    head_with(false)
-}
-
-/// [`head`], or with `pointed` ears: narrow bumps raised towards the crown (a stand-in for the
-/// thesis's Spock, figure 5.30).
-pub(crate) fn head_with(pointed: bool) -> Result<PolyMesh> {
-    const MERIDIANS: usize = 16;
-    const RINGS: usize = 9;
-    /// A smooth bump of height `h` and angular radius `w` about direction `d` (unit).
-    fn bump(p: DVec3, d: DVec3, h: f64, w: f64) -> f64 {
-        let c = p.dot(d).clamp(-1.0, 1.0);
-        h * (-(c.acos() / w).powi(2)).exp()
-    }
-    let shape = |theta: f64, phi: f64| -> DVec3 {
-        // The unit direction: θ from the crown (+z) down, φ from the face (+y) round.
-        let dir = DVec3::new(theta.sin() * phi.sin(), theta.sin() * phi.cos(), theta.cos());
-        let mut r = 1.0;
-        r += bump(dir, DVec3::new(0.0, 0.97, -0.24).normalize(), 0.32, 0.22); // nose
-        r += bump(dir, DVec3::new(0.0, 0.9, 0.44).normalize(), 0.08, 0.45); // brow
-        for side in [-1.0, 1.0] {
-            r -= bump(dir, DVec3::new(0.38 * side, 0.88, 0.22).normalize(), 0.1, 0.18); // eye
-            if pointed {
-                r += bump(dir, DVec3::new(side, -0.1, 0.45).normalize(), 0.45, 0.28); // ear
-            } else {
-                r += bump(dir, DVec3::new(side, -0.1, 0.0).normalize(), 0.12, 0.2); // ear
-            }
-        }
-        r += bump(dir, DVec3::new(0.0, 0.75, -0.66).normalize(), 0.1, 0.25); // chin
-        // A narrower jaw, an egg-shaped skull.
-        let jaw = 1.0 - 0.22 * (-dir.z).max(0.0);
-        DVec3::new(0.78 * jaw * dir.x, 0.9 * jaw * dir.y, 1.1 * dir.z) * r
-    };
-    let mut positions = vec![shape(0.0, 0.0)];
-    for ring in 1..=RINGS {
-        let theta = PI * ring as f64 / (RINGS + 1) as f64;
-        for m in 0..MERIDIANS {
-            positions.push(shape(theta, 2.0 * PI * m as f64 / MERIDIANS as f64));
-        }
-    }
-    positions.push(shape(PI, 0.0));
-    let bottom = (positions.len() - 1) as u32;
-    let at = |ring: usize, m: usize| (1 + (ring - 1) * MERIDIANS + m % MERIDIANS) as u32;
-    let mut faces: Vec<[u32; 3]> = Vec::new();
-    for m in 0..MERIDIANS {
-        // φ grows clockwise seen from +z (from +y towards +x): counter-clockwise about the
-        // outward normal is (pole, next, this) at the crown.
-        faces.push([0, at(1, m + 1), at(1, m)]);
-        for ring in 1..RINGS {
-            let (a, b, c, d) = (at(ring, m), at(ring, m + 1), at(ring + 1, m + 1), at(ring + 1, m));
-            faces.push([a, b, c]);
-            faces.push([a, c, d]);
-        }
-        faces.push([bottom, at(RINGS, m), at(RINGS, m + 1)]);
-    }
+/// The head's control mesh (figures 1.1 and 4.35): a coarse closed triangle mesh of Lee
+/// Perry-Smith's head scan ([`super::scans::head_control`]), so that the schemes differ.
+pub(crate) fn head() -> Result<PolyMesh> {
+    let (positions, faces) = super::scans::head_control()?;
     let mesh = PolyMesh::try_new(positions, &faces).context("the head mesh")?;
     ensure!(signed_volume(&mesh) > 0.0, "the head's faces point inwards");
     Ok(mesh)
@@ -467,8 +413,10 @@ pub(crate) const FIGURES: &[Figure] = &[
         caption: "Subdivision of the mannequin head",
         drawn: "(a) The control mesh; (b)–(g) two steps of each scheme on it, triangles for every scheme as in the \
                 thesis, each drawn flat with its edges; (e), interpolating √3, is not in the thesis.",
-        data: "stand-in for Hoppe's mannequin head (not available): a closed head of 288 triangles built in code \
-               (16 meridians, 9 rings, with nose, brows, eye sockets, ears and chin; `xtask/src/figures/subdivision.rs`).",
+        data: "stand-in for Hoppe's mannequin head (not available): Lee Perry-Smith's head scan (`fixtures/models`, \
+               CC BY 3.0, as in figures 5.10–5.20) as a closed control mesh of 512 triangles, 258 vertices: the octahedron \
+               cut three times, its directions drawn towards the face by a conformal zoom (the face's vertices 2.8 times \
+               as dense), each vertex on the scan's surface along its direction (`xtask/src/figures/scans.rs`, `head_control`).",
         format: Format::Glb,
         views: &[],
         panels: &[

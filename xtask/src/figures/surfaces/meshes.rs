@@ -196,7 +196,7 @@ const BEAD_LEVELS: u32 = 0;
 
 /// The octahedron (`PolyMesh::octahedron`) with its edges halved `levels` times (each face cut into 4 each time) and
 /// every vertex pushed out to the unit sphere, its faces wound outwards.
-fn geodesic(levels: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+pub(crate) fn geodesic(levels: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let octahedron = PolyMesh::octahedron();
     let mut vertices = octahedron.positions().to_vec();
     let mut faces: Vec<[u32; 3]> = octahedron.faces().map(|f| [f[0], f[1], f[2]]).collect();

@@ -44,7 +44,7 @@ use hi_surface::{ParamRange, ParamWindow};
 use meshes::{control_mesh, parametric_mesh, with_markers};
 
 pub(crate) use colours::{colour_bar, colour_bar_svg, has_colour_bar};
-pub(crate) use meshes::{ball, beads};
+pub(crate) use meshes::{ball, beads, geodesic};
 
 /// The fraction of the parametric surface's area whose curvature the colour scale spans.
 const COVERAGE: f64 = 0.95;
