@@ -21,7 +21,7 @@ use std::io::Cursor;
 use std::sync::OnceLock;
 
 use anyhow::{Context, Result, ensure};
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 use hi_geomimage::{ErrorMeasure, Fit, FitOptions, GeometryImage, Layout, Smoothing, fit};
 use hi_mesh::TriangleMesh;
 use hi_scan::scan::Scan;
@@ -290,6 +290,28 @@ fn fitted(scan: &Scan, setup: Setup, measure: bool) -> Result<Fit> {
     Ok(fit(scan, &options, &mut |_| {})?)
 }
 
+/// [`fitted`] on the scan of `model`. For the octahedral layouts the head is fitted turned to
+/// look up (+z, [`FACE_UP`]): the face then lies about the layout's centre, and the seams of the
+/// octahedron's lower half, where its unfolding folds, run over the back of the head rather than
+/// down the nose and mouth; the fitted surfaces are turned back (a harmonic surface turns with its
+/// grid), the images stay as fitted.
+fn fitted_model(model: Model, setup: Setup, measure: bool) -> Result<Fit> {
+    let scan = scan(model)?;
+    if !matches!(setup.layout, Layout::Octahedron | Layout::FlatOctahedron) {
+        return fitted(&scan, setup, measure);
+    }
+    let turned = Scan { points: scan.points.iter().map(|p| FACE_UP * *p).collect(), ..scan };
+    let mut result = fitted(&turned, setup, measure)?;
+    for part in &mut result.parts {
+        let back = part.surface.points().iter().map(|p| FACE_UP.transpose() * *p).collect();
+        part.surface = HarmonicSurface::try_from_flat(part.surface.m(), part.surface.n(), back)?;
+    }
+    Ok(result)
+}
+
+/// The quarter turn about x that takes the head's face (+y) to +z ([`fitted_model`]).
+const FACE_UP: DMat3 = DMat3::from_cols(DVec3::X, DVec3::Z, DVec3::NEG_Y);
+
 /// The mesh of `surface` over the window that covers the object once, `per_texel` quads per
 /// texel along each axis; its triangles must face outwards (every layout makes pᵤ × pᵥ point
 /// outwards), all but a few at the octahedron's seams.
@@ -337,7 +359,7 @@ pub(crate) fn ensure_outward(mesh: &TriangleMesh, min: f64, what: &str) -> Resul
 
 /// The harmonic surface of a fit, meshed with 2×2 quads per texel.
 fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
-    let result = fitted(&scan(model)?, setup, false)?;
+    let result = fitted_model(model, setup, false)?;
     glb(&covering_mesh(&result.largest().surface, setup.layout, 2)?)
 }
 
@@ -414,7 +436,7 @@ fn real_fit(scan: &Scan, file: &str, measure: bool) -> Result<Fit> {
 /// The texels of a fit's image joined directly: one quad per texel, with normals from the
 /// faces (what the geometry image gives without harmonic interpolation).
 fn texel_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
-    let result = fitted(&scan(model)?, setup, false)?;
+    let result = fitted_model(model, setup, false)?;
     // Meshing the surface at its own grid puts the vertices on the texels exactly.
     let mesh = covering_mesh(&result.largest().surface, setup.layout, 1)?;
     let p = mesh.positions();
@@ -467,7 +489,7 @@ fn image_png(image: &GeometryImage, rows: usize, tiles: u32) -> Result<Vec<u8>> 
 /// repeated `tiles` × `tiles` (2 shows one period and the neighbouring copies that harmonic
 /// interpolation treats as its continuation).
 fn fit_png(model: Model, setup: Setup, half: bool, tiles: u32) -> Result<Vec<u8>> {
-    let result = fitted(&scan(model)?, setup, false)?;
+    let result = fitted_model(model, setup, false)?;
     let image = result.largest().source.image();
     image_png(image, if half { image.rows() / 2 } else { image.rows() }, tiles)
 }
@@ -678,7 +700,8 @@ pub(crate) const FIGURES: &[Figure] = &[
                 texel). (b) The same after a periodic Gaussian of σ = 1 texel on the image. (c) The harmonic \
                 surface through the smoothed image, over the whole period. (d) Panel (c) framed on the face. \
                 Smoothing and interpolation across the wrapped edges of the square join far-apart texels and \
-                leave seams, as in the thesis.",
+                leave seams, as in the thesis; the head is fitted turned to look up, so that the face lies about \
+                the layout's centre and the seams of the octahedron's lower half run over the back of the head.",
         data: "the head scan of figure 5.10 (mannequin stand-in).",
         format: Format::Glb,
         views: &[Panel {
@@ -843,7 +866,7 @@ fn table() -> Result<String> {
     };
     for (figure, model, setup) in rows {
         let scan = scan(model)?;
-        let result = fitted(&scan, setup, true)?;
+        let result = fitted_model(model, setup, true)?;
         line(
             figure,
             model.name(),
