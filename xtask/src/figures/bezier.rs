@@ -15,7 +15,7 @@ use hi_surface::bezier::SurfaceBezier;
 use hi_surface::{HarmonicSurface, MeshOptions, torus};
 
 use super::glb::glb;
-use super::scans::{ensure_outward, head_scan};
+use super::scans::{ensure_outward, face_up, head_scan, turned_back};
 use super::{Figure, Format, Panel, Table};
 
 /// Samples per patch side in the meshes.
@@ -83,9 +83,12 @@ fn torus_figure(scheme: BezierScheme, colored: bool) -> Result<Vec<u8>> {
 /// A head scan through §5.8's pipeline ("combined results"): its scan, a flattened
 /// octahedron image of contours of located points (Theorem 5.3 to the columns), Gaussian
 /// smoothing, a reduction to a quarter by Theorem 5.3, and the thesis's cubic patches; the
-/// patches of one cover.
+/// patches of one cover. The head is fitted turned to look up, so that the layout's seams run
+/// over the back of the head, and its surface turned back.
 fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
-    let scan = head_scan(pointed)?;
+    // Turned to look up, so that the flattened octahedron's seams run over the back of the
+    // head, not down its face; the surface turned back ([`super::scans::face_up`]).
+    let scan = face_up(head_scan(pointed)?);
     let options = FitOptions {
         method: Method::Contours,
         layout: Layout::FlatOctahedron,
@@ -98,9 +101,7 @@ fn head_patches(pointed: bool) -> Result<(SurfaceBezier<DVec3>, Vec<usize>)> {
     let fitted = fit(&scan, &options, &mut |_| {})?;
     ensure!(fitted.report.non_star_fraction < 0.05, "the head is not star-shaped about its centre");
     ensure!(fitted.report.surface_size == (HEAD_IMAGE, HEAD_IMAGE), "reduced to a quarter");
-    let b = fitted
-        .largest()
-        .surface
+    let b = turned_back(&fitted.largest().surface)?
         .to_bezier(BezierScheme::ThesisCubic, hi_curve::bezier::DEFAULT_TOLERANCE)?;
     ensure!(b.report.max_deviation <= b.report.bound, "deviation above its bound");
     let u = Layout::FlatOctahedron.covering_window();
@@ -121,7 +122,8 @@ const HEAD_DRAWN: &str = "§5.8's combined pipeline on the head's scan: a 48×48
     contours through the scan points the rays located, made rectangular by Theorem 5.3 (`hi fit --texels contours`), \
     smoothed by a Gaussian of σ = 1 texel, reduced to 24×24 by Theorem 5.3, and converted to the thesis's bicubic \
     patches (§5.7, 576 in all, the 288 of one cover drawn): (a) shaded, (b) one colour per patch. Each patch is \
-    sampled 4×4 with its own vertices.";
+    sampled 4×4 with its own vertices. The head is fitted turned to look up, so that the layout's seams run over the \
+    back of the head rather than down the face, and its surface turned back.";
 
 /// The figures of this module.
 pub(crate) const FIGURES: &[Figure] = &[

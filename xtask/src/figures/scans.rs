@@ -300,13 +300,23 @@ fn fitted_model(model: Model, setup: Setup, measure: bool) -> Result<Fit> {
     if !matches!(setup.layout, Layout::Octahedron | Layout::FlatOctahedron) {
         return fitted(&scan, setup, measure);
     }
-    let turned = Scan { points: scan.points.iter().map(|p| FACE_UP * *p).collect(), ..scan };
-    let mut result = fitted(&turned, setup, measure)?;
+    let mut result = fitted(&face_up(scan), setup, measure)?;
     for part in &mut result.parts {
-        let back = part.surface.points().iter().map(|p| FACE_UP.transpose() * *p).collect();
-        part.surface = HarmonicSurface::try_from_flat(part.surface.m(), part.surface.n(), back)?;
+        part.surface = turned_back(&part.surface)?;
     }
     Ok(result)
+}
+
+/// The scan of a head turned to look up ([`FACE_UP`]).
+pub(crate) fn face_up(scan: Scan) -> Scan {
+    Scan { points: scan.points.iter().map(|p| FACE_UP * *p).collect(), ..scan }
+}
+
+/// A surface fitted to [`face_up`]'s scan turned back to the head's frame: a harmonic surface
+/// turns with its grid.
+pub(crate) fn turned_back(surface: &HarmonicSurface<DVec3>) -> Result<HarmonicSurface<DVec3>> {
+    let back = surface.points().iter().map(|p| FACE_UP.transpose() * *p).collect();
+    Ok(HarmonicSurface::try_from_flat(surface.m(), surface.n(), back)?)
 }
 
 /// The quarter turn about x that takes the head's face (+y) to +z ([`fitted_model`]).
