@@ -7,7 +7,10 @@
 //! ([`cell_for_count`]: the cell at which about so many cells are occupied), and averaging within
 //! a cell also takes the scanner's noise down by about the square root of the points in it.
 //!
-//! Both steps cost O(n log n) in the n points (a sort of the points' cell keys) and hold O(n)
+//! Before either, a point listed more than once is taken once ([`merge_duplicates`]): the
+//! vertices of a mesh written triangle by triangle repeat each point several times.
+//!
+//! These steps cost O(n log n) in the n points (a sort of the points' cell keys) and hold O(n)
 //! extra memory (a key and an index per point, 16 bytes); the result does not depend on the
 //! number of threads (each cell's points are summed in the order the scan lists them).
 
