@@ -35,7 +35,7 @@ fn control_points(p: [DVec3; 3], n: [DVec3; 3], straight: [bool; 3]) -> [DVec3; 
     [b210, b120, b021, b012, b102, b201, e + (e - v) / 2.0]
 }
 
-/// The point of the PN triangle at barycentric coordinates (a, b, c) of its corners.
+/// The point of the PN triangle at barycentric coordinates (u, v, w) of its corners.
 fn point(p: [DVec3; 3], b: &[DVec3; 7], (u, v, w): (f64, f64, f64)) -> DVec3 {
     let [b210, b120, b021, b012, b102, b201, b111] = *b;
     p[0] * u * u * u
@@ -46,7 +46,7 @@ fn point(p: [DVec3; 3], b: &[DVec3; 7], (u, v, w): (f64, f64, f64)) -> DVec3 {
         + 6.0 * b111 * u * v * w
 }
 
-/// The quadratic normal of the PN triangle at (a, b, c) (Vlachos et al. 2001, §3.2): the mid-edge
+/// The quadratic normal of the PN triangle at (u, v, w) (Vlachos et al. 2001, §3.2): the mid-edge
 /// normals are the corners' reflected across the plane normal to the edge, so that an
 /// inflection along the edge shows in the shading.
 fn normal(p: [DVec3; 3], n: [DVec3; 3], (u, v, w): (f64, f64, f64)) -> DVec3 {

@@ -524,7 +524,7 @@ fn distinct<'a>(
     if !triangles.is_empty() {
         return Ok((points, None, 0));
     }
-    let normals = scan.normals.as_deref().filter(|n| n.len() == points.len());
+    let normals = scan.normals.as_deref();
     let merged = merge_duplicates(&points, normals)?;
     let repeats = points.len() - merged.points.len();
     if repeats == 0 {

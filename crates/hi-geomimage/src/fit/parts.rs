@@ -299,8 +299,8 @@ const MIN_SIDE: usize = 16;
 /// A sheet's map onto the square with a stretch efficiency ([`FlatQuality`]) below this gives
 /// some part of the surface a billionth of its share of the texels or less: none, in any
 /// image (a handle of a cup-shaped part, cut and squeezed against a side of the square). Such
-/// a part is closed as a sphere instead ([`part_image_or_sphere`]). The maps of terrains and of ragged scans lie far above (10⁻⁶
-/// to 1).
+/// a part is closed as a sphere instead ([`part_image_or_sphere`]). The maps of terrains and
+/// of ragged scans lie far above (10⁻⁶ to 1).
 ///
 /// [`FlatQuality`]: crate::flat::FlatQuality
 const MIN_SHEET_EFFICIENCY: f64 = 1e-9;
