@@ -627,8 +627,14 @@ mod tests {
     fn the_head_is_closed_and_outward() {
         let head = head().expect("valid");
         assert!(head.is_closed(), "closed");
-        assert_eq!(head.n_faces(), 288, "2·16 pole triangles + 2·16·8 ring triangles");
+        assert_eq!(head.n_faces(), 512, "the octahedron's 8 faces cut into 4 three times");
+        assert_eq!(head.n_vertices(), 258, "V = F/2 + 2");
         assert!(signed_volume(&head) > 0.0, "outward");
+        // The zoom takes the half of the sphere facing +y from the stereographic disc of
+        // radius 1/0.6 about the face, the cap y > (1 − r²)/(1 + r²) = −0.47 of the sphere's
+        // directions: about 74 % of evenly spread vertices lie in front of the head's centre.
+        let front = head.positions().iter().filter(|p| p.y > 0.0).count() as f64 / 258.0;
+        assert!((0.68..0.80).contains(&front), "{front}");
     }
 
     #[test]
