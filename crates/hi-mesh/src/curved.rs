@@ -142,15 +142,15 @@ impl TriangleMesh {
     /// # Examples
     ///
     /// ```
-    /// use glam::{DVec2, DVec3};
-    /// use hi_mesh::TriangleMesh;
+    /// use glam::DVec2;
+    /// use hi_mesh::{PolyMesh, TriangleMesh};
     ///
     /// // An octahedron with the unit sphere's normals: the curved mesh's new vertices lie
     /// // nearer the sphere than the flat faces do (a face's centre is 1/√3 = 0.58 from the
     /// // centre).
-    /// let p: Vec<DVec3> = vec![DVec3::X, DVec3::Y, DVec3::Z, -DVec3::X, -DVec3::Y, -DVec3::Z];
-    /// let t = vec![[0, 1, 2], [1, 3, 2], [3, 4, 2], [4, 0, 2],
-    ///              [1, 0, 5], [3, 1, 5], [4, 3, 5], [0, 4, 5]];
+    /// let poly = PolyMesh::octahedron();
+    /// let p = poly.positions().to_vec();
+    /// let t = poly.faces().map(|f| [f[0], f[1], f[2]]).collect();
     /// let octahedron = TriangleMesh::try_new(p.clone(), p, vec![DVec2::ZERO; 6], t)?;
     /// let curved = octahedron.curved(4)?;
     /// assert_eq!(curved.n_triangles(), 16 * 8);

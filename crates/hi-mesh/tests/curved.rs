@@ -6,22 +6,14 @@
 use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
-use hi_mesh::{ColorMap, ColorScale, Palette, TriangleMesh};
+use hi_mesh::{ColorMap, ColorScale, Palette, PolyMesh, TriangleMesh};
 
 /// The unit sphere as a subdivided octahedron (`levels` midpoint splits, the new vertices
 /// pushed onto the sphere), with the sphere's normals.
 fn sphere(levels: usize) -> TriangleMesh {
-    let mut p: Vec<DVec3> = vec![DVec3::X, DVec3::Y, DVec3::Z, -DVec3::X, -DVec3::Y, -DVec3::Z];
-    let mut t: Vec<[u32; 3]> = vec![
-        [0, 1, 2],
-        [1, 3, 2],
-        [3, 4, 2],
-        [4, 0, 2],
-        [1, 0, 5],
-        [3, 1, 5],
-        [4, 3, 5],
-        [0, 4, 5],
-    ];
+    let octahedron = PolyMesh::octahedron();
+    let mut p = octahedron.positions().to_vec();
+    let mut t: Vec<[u32; 3]> = octahedron.faces().map(|f| [f[0], f[1], f[2]]).collect();
     for _ in 0..levels {
         let mut mid: HashMap<(u32, u32), u32> = HashMap::new();
         let mut split = |a: u32, b: u32, p: &mut Vec<DVec3>| {

@@ -174,15 +174,7 @@ pub fn cell_for_count(points: &[DVec3], target: usize) -> Result<f64, Error> {
 /// assert_eq!(s.counts, vec![2, 2]);
 /// ```
 pub fn summarise(points: &[DVec3], normals: Option<&[DVec3]>, cell: f64) -> Result<Summary, Error> {
-    if let Some(n) = normals
-        && n.len() != points.len()
-    {
-        return Err(Error::InvalidOption {
-            name: "normals",
-            value: n.len() as f64,
-            expected: "one normal per point",
-        });
-    }
+    crate::error::check_points(points, normals)?;
     let origin = grid_origin(points, cell)?;
     // Each point's cell key beside its index, sorted: a cell's points stay in the scan's order
     // (ties are broken by the index), so the sums do not depend on threads.
@@ -239,18 +231,7 @@ pub fn summarise(points: &[DVec3], normals: Option<&[DVec3]>, cell: f64) -> Resu
 /// assert_eq!(merged.counts, vec![2, 2]);
 /// ```
 pub fn merge_duplicates(points: &[DVec3], normals: Option<&[DVec3]>) -> Result<Summary, Error> {
-    if let Some(n) = normals
-        && n.len() != points.len()
-    {
-        return Err(Error::InvalidOption {
-            name: "normals",
-            value: n.len() as f64,
-            expected: "one normal per point",
-        });
-    }
-    if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
-    }
+    crate::error::check_points(points, normals)?;
     // +0.0 turns −0 into +0.
     let key = |p: DVec3| (p + DVec3::ZERO).to_array().map(f64::to_bits);
     // (the point's bits, its index), sorted.

@@ -112,3 +112,25 @@ impl fmt::Display for NonFiniteInput {
         }
     }
 }
+
+/// Checks a point set and its normals, if it has them: one normal per point
+/// ([`Error::InvalidOption`] naming the count), every point finite ([`Error::NonFinite`] naming
+/// the first that is not).
+pub(crate) fn check_points(
+    points: &[glam::DVec3],
+    normals: Option<&[glam::DVec3]>,
+) -> Result<(), Error> {
+    if let Some(n) = normals
+        && n.len() != points.len()
+    {
+        return Err(Error::InvalidOption {
+            name: "normals",
+            value: n.len() as f64,
+            expected: "one normal per point",
+        });
+    }
+    match points.iter().position(|p| !p.is_finite()) {
+        Some(k) => Err(Error::NonFinite { what: NonFiniteInput::Point(k) }),
+        None => Ok(()),
+    }
+}

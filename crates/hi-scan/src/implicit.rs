@@ -140,18 +140,7 @@ impl PointSurface {
         normals: Option<&[DVec3]>,
         neighbours: usize,
     ) -> Result<Self, Error> {
-        if let Some(n) = normals
-            && n.len() != points.len()
-        {
-            return Err(Error::InvalidOption {
-                name: "normals",
-                value: n.len() as f64,
-                expected: "one normal per point",
-            });
-        }
-        if let Some(k) = points.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinite { what: NonFiniteInput::Point(k) });
-        }
+        crate::error::check_points(points, normals)?;
         if points.len() < neighbours.max(8) {
             return Err(Error::TooFewPoints { found: points.len(), needed: neighbours.max(8) });
         }

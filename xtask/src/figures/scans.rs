@@ -290,13 +290,12 @@ fn fitted(scan: &Scan, setup: Setup, measure: bool) -> Result<Fit> {
     Ok(fit(scan, &options, &mut |_| {})?)
 }
 
-/// [`fitted`] on the scan of `model`. For the octahedral layouts the head is fitted turned to
+/// [`fitted`] on a head's `scan`. For the octahedral layouts the head is fitted turned to
 /// look up (+z, [`FACE_UP`]): the face then lies about the layout's centre, and the seams of the
 /// octahedron's lower half, where its unfolding folds, run over the back of the head rather than
 /// down the nose and mouth; the fitted surfaces are turned back (a harmonic surface turns with its
 /// grid), the images stay as fitted.
-fn fitted_model(model: Model, setup: Setup, measure: bool) -> Result<Fit> {
-    let scan = scan(model)?;
+fn fitted_head(scan: Scan, setup: Setup, measure: bool) -> Result<Fit> {
     if !matches!(setup.layout, Layout::Octahedron | Layout::FlatOctahedron) {
         return fitted(&scan, setup, measure);
     }
@@ -319,7 +318,7 @@ pub(crate) fn turned_back(surface: &HarmonicSurface<DVec3>) -> Result<HarmonicSu
     Ok(HarmonicSurface::try_from_flat(surface.m(), surface.n(), back)?)
 }
 
-/// The quarter turn about x that takes the head's face (+y) to +z ([`fitted_model`]).
+/// The quarter turn about x that takes the head's face (+y) to +z ([`fitted_head`]).
 const FACE_UP: DMat3 = DMat3::from_cols(DVec3::X, DVec3::Z, DVec3::NEG_Y);
 
 /// The mesh of `surface` over the window that covers the object once, `per_texel` quads per
@@ -369,7 +368,7 @@ pub(crate) fn ensure_outward(mesh: &TriangleMesh, min: f64, what: &str) -> Resul
 
 /// The harmonic surface of a fit, meshed with 2×2 quads per texel.
 fn harmonic_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
-    let result = fitted_model(model, setup, false)?;
+    let result = fitted_head(scan(model)?, setup, false)?;
     glb(&covering_mesh(&result.largest().surface, setup.layout, 2)?)
 }
 
@@ -446,7 +445,7 @@ fn real_fit(scan: &Scan, file: &str, measure: bool) -> Result<Fit> {
 /// The texels of a fit's image joined directly: one quad per texel, with normals from the
 /// faces (what the geometry image gives without harmonic interpolation).
 fn texel_glb(model: Model, setup: Setup) -> Result<Vec<u8>> {
-    let result = fitted_model(model, setup, false)?;
+    let result = fitted_head(scan(model)?, setup, false)?;
     // Meshing the surface at its own grid puts the vertices on the texels exactly.
     let mesh = covering_mesh(&result.largest().surface, setup.layout, 1)?;
     let p = mesh.positions();
@@ -499,7 +498,7 @@ fn image_png(image: &GeometryImage, rows: usize, tiles: u32) -> Result<Vec<u8>> 
 /// repeated `tiles` × `tiles` (2 shows one period and the neighbouring copies that harmonic
 /// interpolation treats as its continuation).
 fn fit_png(model: Model, setup: Setup, half: bool, tiles: u32) -> Result<Vec<u8>> {
-    let result = fitted_model(model, setup, false)?;
+    let result = fitted_head(scan(model)?, setup, false)?;
     let image = result.largest().source.image();
     image_png(image, if half { image.rows() / 2 } else { image.rows() }, tiles)
 }
@@ -876,15 +875,9 @@ fn table() -> Result<String> {
     };
     for (figure, model, setup) in rows {
         let scan = scan(model)?;
-        let result = fitted_model(model, setup, true)?;
-        line(
-            figure,
-            model.name(),
-            scan.points.len(),
-            &result,
-            &format!("{:?}", setup.layout),
-            setup.smooth,
-        )?;
+        let points = scan.points.len();
+        let result = fitted_head(scan, setup, true)?;
+        line(figure, model.name(), points, &result, &format!("{:?}", setup.layout), setup.smooth)?;
     }
     for (figure, file) in [("5.21", "spot.obj"), ("5.22", "duck.obj"), ("5.23", "wuson.off")] {
         let scan = real_scan(file)?;
