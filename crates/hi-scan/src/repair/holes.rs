@@ -3,6 +3,7 @@
 //! found and closed by faired rings of triangles.
 
 use glam::DVec3;
+use hi_par::*;
 
 use super::handles::directed_edges;
 use super::{ADDED_VERTEX, Repair};
@@ -137,7 +138,9 @@ const CAP_RINGS_MAX: usize = 64;
 /// [`fill_hole`]. The neighbours of the loops' vertices in the mesh, which each cap's fairing
 /// holds fixed, are found in one pass over the triangles before any cap is added (each vertex
 /// of a mesh whose pinched vertices are split lies on one loop at most, so a cap changes no
-/// other loop's neighbours).
+/// other loop's neighbours). The caps are independent and made in parallel; each cap's new
+/// vertices are numbered after those of the caps of the loops before it, and the caps are
+/// added in the loops' order, so that the mesh is the same as one cap after another.
 pub(super) fn fill_holes(
     loops: &[Vec<u32>],
     faces: &mut Vec<[u32; 3]>,
@@ -148,8 +151,75 @@ pub(super) fn fill_holes(
     let mut around: std::collections::HashMap<u32, Vec<u32>> =
         loops.iter().flatten().map(|&v| (v, Vec::new())).collect();
     gather_neighbours(faces, &mut around);
-    for lp in loops {
-        fill_hole(lp, &around, faces, positions, scan_vertex, filled);
+    let mut next = positions.len();
+    let firsts: Vec<usize> = loops
+        .iter()
+        .map(|lp| {
+            let first = next;
+            next += CapShape::of(lp, positions).vertices();
+            first
+        })
+        .collect();
+    let old: &[DVec3] = positions;
+    let caps: Vec<Cap> = loops
+        .par_iter()
+        .zip(firsts.par_iter())
+        .map(|(lp, &f)| fill_hole(lp, &around, old, f))
+        .collect();
+    for cap in caps {
+        scan_vertex.resize(scan_vertex.len() + cap.positions.len(), ADDED_VERTEX);
+        positions.extend(cap.positions);
+        faces.extend(cap.triangles);
+    }
+    filled.resize(faces.len(), true);
+}
+
+/// A hole's cap ([`fill_hole`]): its new vertices, numbered on from the index it was given,
+/// and its triangles.
+struct Cap {
+    positions: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
+}
+
+/// The size of a hole's cap ([`fill_hole`]), from its loop alone.
+struct CapShape {
+    /// The loop's centroid.
+    centre: DVec3,
+    /// Rings of new vertices inside the loop.
+    rings: usize,
+    /// Vertices on each ring.
+    count: usize,
+}
+
+impl CapShape {
+    /// The cap of the loop `lp` of a mesh with vertices `positions`.
+    fn of(lp: &[u32], positions: &[DVec3]) -> Self {
+        let m = lp.len();
+        let at = |k: u32| positions[k as usize];
+        let centre = lp.iter().map(|&k| at(k)).sum::<DVec3>() / m as f64;
+        let perimeter = (0..m).map(|i| at(lp[i]).distance(at(lp[(i + 1) % m]))).sum::<f64>();
+        // The spacing of the first ring's vertices: the loop's own, or wider for a long loop.
+        let edge = perimeter / m.min(CAP_RING_MAX) as f64;
+        let radius = lp.iter().map(|&k| at(k).distance(centre)).sum::<f64>() / m as f64;
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "clamped to 0..=CAP_RINGS_MAX"
+        )]
+        let rings = if edge > 0.0 {
+            (radius / edge).round().clamp(0.0, CAP_RINGS_MAX as f64) as usize
+        } else {
+            0
+        };
+        // Every ring as many vertices as the first: with the umbrella operator's equal weights,
+        // rings of equal counts settle evenly spaced (rings that thin out inwards would be
+        // drawn towards the centre, leaving long triangles at the rim).
+        CapShape { centre, rings, count: m.min(CAP_RING_MAX) }
+    }
+
+    /// The new vertices of the cap: its rings' and the centre.
+    fn vertices(&self) -> usize {
+        self.rings * self.count + 1
     }
 }
 
@@ -190,87 +260,64 @@ fn zip_rings(outer: &[u32], inner: &[u32]) -> Vec<[u32; 3]> {
     out
 }
 
-/// Closes the boundary loop `lp` (in the order the mesh's triangles run along it) by rings of
-/// new vertices shrinking towards its centroid, one ring per mean edge length of the loop's
+/// The cap closing the boundary loop `lp` (in the order the mesh's triangles run along it) of
+/// a mesh with vertices `old`, its new vertices numbered from `first_new`: rings of new
+/// vertices shrinking towards the loop's centroid, one ring per mean edge length of the loop's
 /// radius (at most [`CAP_RINGS_MAX`]), each of as many vertices as the loop (a loop longer
 /// than [`CAP_RING_MAX`] edges: that many, on rings spaced as widely as their vertices, so
-/// that the cap's size is bounded), joined by [`zip_rings`], then a fan around the centroid. The new vertices
-/// are moved first to the discrete membrane (each the mean of its neighbours, by Gauss–Seidel
-/// sweeps, the loop fixed: as flat as its border allows), then to the thin plate the surface
-/// around it continues into: the umbrella operator applied twice vanishes at every new vertex
-/// (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about it fixed), so the
-/// cap leaves the rim along the surface's own tangent plane, with no crease for the harmonic
-/// surface to ring on. `around` holds the loop's vertices' neighbours in the mesh
-/// ([`fill_holes`]).
+/// that the cap's size is bounded), joined by [`zip_rings`], then a fan around the centroid.
+/// The new vertices are moved first to the discrete membrane (each the mean of its neighbours,
+/// by Gauss–Seidel sweeps, the loop fixed: as flat as its border allows), then to the thin
+/// plate the surface around it continues into: the umbrella operator applied twice vanishes at
+/// every new vertex (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about
+/// it fixed), so the cap leaves the rim along the surface's own tangent plane, with no crease
+/// for the harmonic surface to ring on. `around` holds the loop's vertices' neighbours in the
+/// mesh ([`fill_holes`]).
 fn fill_hole(
     lp: &[u32],
     around: &std::collections::HashMap<u32, Vec<u32>>,
-    faces: &mut Vec<[u32; 3]>,
-    positions: &mut Vec<DVec3>,
-    scan_vertex: &mut Vec<u32>,
-    filled: &mut Vec<bool>,
-) {
+    old: &[DVec3],
+    first_new: usize,
+) -> Cap {
     let m = lp.len();
-    let at = |k: u32, positions: &[DVec3]| positions[k as usize];
-    let centre = lp.iter().map(|&k| at(k, positions)).sum::<DVec3>() / m as f64;
-    let perimeter =
-        (0..m).map(|i| at(lp[i], positions).distance(at(lp[(i + 1) % m], positions))).sum::<f64>();
-    // The spacing of the first ring's vertices: the loop's own, or wider for a long loop.
-    let edge = perimeter / m.min(CAP_RING_MAX) as f64;
-    let radius = lp.iter().map(|&k| at(k, positions).distance(centre)).sum::<f64>() / m as f64;
-    #[expect(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "clamped to 0..=CAP_RINGS_MAX"
-    )]
-    let rings = if edge > 0.0 {
-        (radius / edge).round().clamp(0.0, CAP_RINGS_MAX as f64) as usize
-    } else {
-        0
-    };
+    let CapShape { centre, rings, count } = CapShape::of(lp, old);
+    let at = |k: u32| old[k as usize];
     // The loop's point at the fraction s of the way round (by vertex index, from lp[0]).
-    let on_loop = |s: f64, positions: &[DVec3]| {
+    let on_loop = |s: f64| {
         let x = s * m as f64;
         #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "in 0..m")]
         let i = (x.floor() as usize).min(m - 1);
-        at(lp[i], positions).lerp(at(lp[(i + 1) % m], positions), x - i as f64)
+        at(lp[i]).lerp(at(lp[(i + 1) % m]), x - i as f64)
     };
-    let first_new = positions.len();
-    let first_face = faces.len();
+    let mut new: Vec<DVec3> = Vec::with_capacity(rings * count + 1);
+    let mut triangles: Vec<[u32; 3]> = Vec::new();
+    let index = |new: &Vec<DVec3>| u32::try_from(first_new + new.len()).unwrap_or(u32::MAX);
     let mut outer: Vec<u32> = lp.to_vec();
-    // Every ring as many vertices as the first: with the umbrella operator's equal weights,
-    // rings of equal counts settle evenly spaced (rings that thin out inwards would be drawn
-    // towards the centre, leaving long triangles at the rim).
-    let count = m.min(CAP_RING_MAX);
     for k in 1..=rings {
         let t = k as f64 / (rings + 1) as f64;
         let inner: Vec<u32> = (0..count)
             .map(|j| {
-                let index = u32::try_from(positions.len()).unwrap_or(u32::MAX);
-                let p = on_loop(j as f64 / count as f64, positions).lerp(centre, t);
-                positions.push(p);
-                scan_vertex.push(ADDED_VERTEX);
-                index
+                let i = index(&new);
+                new.push(on_loop(j as f64 / count as f64).lerp(centre, t));
+                i
             })
             .collect();
-        faces.extend(zip_rings(&outer, &inner));
+        triangles.extend(zip_rings(&outer, &inner));
         outer = inner;
     }
-    let c = u32::try_from(positions.len()).unwrap_or(u32::MAX);
-    positions.push(centre);
-    scan_vertex.push(ADDED_VERTEX);
+    let c = index(&new);
+    new.push(centre);
     let n = outer.len();
     for i in 0..n {
-        faces.push([outer[(i + 1) % n], outer[i], c]);
+        triangles.push([outer[(i + 1) % n], outer[i], c]);
     }
-    filled.resize(faces.len(), true);
     // The membrane: the new vertices' neighbours, then Gauss–Seidel sweeps.
-    let free = positions.len() - first_new;
+    let free = new.len();
     if free <= 1 {
-        return;
+        return Cap { positions: new, triangles };
     }
     let mut neighbours: Vec<Vec<u32>> = vec![Vec::new(); free];
-    for t in &faces[first_face..] {
+    for t in &triangles {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
             for (x, y) in [(a, b), (b, a)] {
@@ -283,29 +330,35 @@ fn fill_hole(
     let sweeps = (4 * (rings + 1) * (rings + 1)).clamp(20, 2000);
     for _ in 0..sweeps {
         for (i, list) in neighbours.iter().enumerate() {
-            let mean =
-                list.iter().map(|&k| positions[k as usize]).sum::<DVec3>() / list.len() as f64;
-            positions[first_new + i] = mean;
+            let mean = list
+                .iter()
+                .map(|&k| if k as usize >= first_new { new[k as usize - first_new] } else { at(k) })
+                .sum::<DVec3>()
+                / list.len() as f64;
+            new[i] = mean;
         }
     }
     // The loop's vertices' neighbours on both sides: the mesh's, and the cap's.
     let mut rim: std::collections::HashMap<u32, Vec<u32>> =
         lp.iter().map(|&v| (v, around.get(&v).cloned().unwrap_or_default())).collect();
-    gather_neighbours(&faces[first_face..], &mut rim);
-    fair(lp, &rim, positions, first_new, &neighbours, FAIRING_ITERATIONS);
+    gather_neighbours(&triangles, &mut rim);
+    fair(lp, &rim, (old, &mut new), first_new, &neighbours, FAIRING_ITERATIONS);
+    Cap { positions: new, triangles }
 }
 
-/// The thin-plate fairing of a hole's cap (see [`fill_hole`]): the cap's new vertices (from
-/// `first_new`, with their `neighbours`; `around_loop` holds the loop's vertices' neighbours on
-/// both sides) placed where the umbrella operator
+/// The thin-plate fairing of a hole's cap (see [`fill_hole`]): the cap's new vertices `new`
+/// (numbered from `first_new`, with their `neighbours`; the mesh's vertices `old`;
+/// `around_loop` holds the loop's vertices' neighbours on both sides) placed where the umbrella
+/// operator
 /// U(v) = mean of v's neighbours − v vanishes, in the least-squares sense, at every vertex of
 /// the cap and of the loop `lp` (the loop and the rest of the mesh fixed), by conjugate
 /// gradients on the normal equations (CGLS, three coordinates at once, from the membrane the
-/// caller placed them on), at most `iterations` steps.
+/// caller placed them on), until their residual has fallen by a factor of 10⁸, at most
+/// `iterations` steps.
 fn fair(
     lp: &[u32],
     around_loop: &std::collections::HashMap<u32, Vec<u32>>,
-    positions: &mut [DVec3],
+    (old, new): (&[DVec3], &mut [DVec3]),
     first_new: usize,
     neighbours: &[Vec<u32>],
     iterations: usize,
@@ -331,7 +384,7 @@ fn fair(
                 if k as usize >= first_new {
                     coefficients.push((k as usize - first_new, c));
                 } else {
-                    fixed += positions[k as usize] * c;
+                    fixed += old[k as usize] * c;
                 }
             }
             (coefficients, fixed)
@@ -350,7 +403,7 @@ fn fair(
         out
     };
     let dot = |a: &[DVec3], b: &[DVec3]| -> DVec3 { a.iter().zip(b).map(|(x, y)| *x * *y).sum() };
-    let mut x: Vec<DVec3> = positions[first_new..first_new + free].to_vec();
+    let mut x: Vec<DVec3> = new.to_vec();
     // r = b − A x with b = −fixed.
     let ax = apply(&x);
     let mut r: Vec<DVec3> = rows.iter().zip(&ax).map(|((_, f), a)| -*f - *a).collect();
@@ -359,7 +412,7 @@ fn fair(
     let mut gamma = dot(&s, &s);
     let start = gamma.max_element();
     for _ in 0..iterations {
-        if gamma.max_element() <= 1e-24 * start.max(f64::MIN_POSITIVE) {
+        if gamma.max_element() <= 1e-16 * start.max(f64::MIN_POSITIVE) {
             break;
         }
         let q = apply(&p);
@@ -380,6 +433,6 @@ fn fair(
         gamma = next;
     }
     if x.iter().all(|v| v.is_finite()) {
-        positions[first_new..first_new + free].copy_from_slice(&x);
+        new.copy_from_slice(&x);
     }
 }

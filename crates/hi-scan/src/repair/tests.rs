@@ -301,3 +301,29 @@ fn a_part_of_more_handles_than_are_cut_names_its_genus() {
         assert!(message.contains(needs), "{message}");
     }
 }
+
+/// The caps of several holes, made together (in parallel, each numbering its new vertices
+/// after the caps before it), are the caps made one hole at a time: the same vertices in the
+/// same order and the same triangles. Two annuli side by side, their four rims filled.
+#[test]
+fn holes_filled_together_are_holes_filled_one_by_one() {
+    let (p1, t1) = annulus(40, 3);
+    let (mut p, mut t) = annulus(24, 2);
+    let shift = p.len() as u32;
+    p.extend(p1.iter().map(|q| *q + DVec3::new(5.0, 0.0, 0.3 * q.x * q.y)));
+    t.extend(t1.iter().map(|f| f.map(|k| k + shift)));
+    let loops = boundary_loops(&t, p.len());
+    assert_eq!(loops.len(), 4);
+    let n = p.len();
+    let (mut pa, mut ta, mut sa, mut fa) = (p.clone(), t.clone(), vec![0; n], vec![false; t.len()]);
+    fill_holes(&loops, &mut ta, &mut pa, &mut sa, &mut fa);
+    let mut fb = vec![false; t.len()];
+    let (mut pb, mut tb, mut sb) = (p, t, vec![0; n]);
+    for lp in &loops {
+        fill_holes(std::slice::from_ref(lp), &mut tb, &mut pb, &mut sb, &mut fb);
+    }
+    assert_eq!(ta, tb);
+    assert_eq!(pa, pb);
+    assert_eq!((sa, fa), (sb, fb));
+    assert!(boundary_loops(&ta, pa.len()).is_empty(), "every rim closed");
+}
