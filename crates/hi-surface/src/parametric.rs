@@ -195,7 +195,10 @@ fn torus_surface(u: f64, v: f64) -> DVec3 {
 }
 
 /// Doubled Möbius strip: (sin s·(2 − t sin(s/2)), cos s·(2 − t sin(s/2)), t cos(s/2)) with
-/// s = 4πu and t = v − ½: u ∈ [0, 1] goes round twice, so the data is periodic in u.
+/// s = 4πu and t = v − ½: u ∈ [0, 1] goes round twice, so the data is periodic in u. The
+/// point (u + ½, v) is (u, 1 − v): the window v ∈ [0, ½] covers the strip once, one half of
+/// its width on each round, the halves meeting along the centre line t = 0 (the sample row
+/// v = ½, which the harmonic surface passes through).
 fn mobius(u: f64, v: f64) -> DVec3 {
     let (s, t) = (2.0 * TAU * u, v - 0.5);
     let w = 2.0 - t * (s / 2.0).sin();
@@ -227,13 +230,16 @@ fn shell(u: f64, v: f64) -> DVec3 {
     DVec3::new(a * theta.cos(), a * theta.sin(), (r * r - 1.0) + (r - 1.0) * rho.sin())
 }
 
-/// Another shell: ((r−1) sin ρ, (r−1)(1 + cos ρ) sin(θ·sin(2ρ + π/2)),
-/// (r−1)(1 + cos ρ) cos(θ·sin(2ρ + π/2))) with θ = 6πu, ρ = 2πv, r = eᵘ; read literally from
-/// the extracted text.
+/// Another shell: ((r−1) sin ρ, (r−1)(1 + cos ρ) sin φ, (r−1)(1 + cos ρ) cos φ) with
+/// φ = θ − sin(2ρ + π/2), θ = 6πu, ρ = 2πv, r = eᵘ: a whorl coiled three times about the
+/// x axis, its cross-section twisted back and forth by a radian. Reconstructed: the extracted
+/// text reads "sin(θ sin(2ρ+π/2)", and it drops every minus sign ("r 1" for r − 1); read as a
+/// product, θ·sin(2ρ + π/2), the angle would swing through ±6π across every cross-section, a
+/// stack of discs that no 24×4 samples describe and not the shell the text discusses.
 fn shell2(u: f64, v: f64) -> DVec3 {
     let (theta, rho, r) = (3.0 * TAU * u, TAU * v, u.exp());
     let a = (r - 1.0) * (1.0 + rho.cos());
-    let phi = theta * (2.0 * rho + PI / 2.0).sin();
+    let phi = theta - (2.0 * rho + PI / 2.0).sin();
     DVec3::new((r - 1.0) * rho.sin(), a * phi.sin(), a * phi.cos())
 }
 
@@ -304,7 +310,7 @@ pub fn test_surfaces() -> Vec<ParametricSurface> {
         s("partial-sphere", "5.32", "Partial sphere", (24, 4), full, false, partial_sphere),
         s("torus", "5.33", "Torus", (24, 4), full, true, torus_surface),
         s("sphere", "5.34", "Sphere", (24, 4), [0.0, 1.0, 0.0, 0.5], true, sphere_surface),
-        s("mobius", "5.35", "Doubled Möbius strip", (24, 4), full, false, mobius),
+        s("mobius", "5.35", "Doubled Möbius strip", (24, 4), [0.0, 1.0, 0.0, 0.5], false, mobius),
         s("revolution", "5.36", "Surface of revolution", (24, 4), full, false, revolution),
         s("shell", "5.37", "Shell", (24, 4), full, false, shell),
         s("shell2", "5.38", "Another shell", (24, 4), full, false, shell2),

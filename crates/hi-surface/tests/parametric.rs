@@ -61,3 +61,48 @@ fn comparison_matches_the_thesis_findings() {
     // Non-periodic data is where harmonic interpolation fails (figures 5.36–5.39).
     assert!(cmp("revolution").gaussian_max > 10.0);
 }
+
+/// The doubled Möbius strip's window v ∈ [0, ½] covers the strip once: (u + ½, v) is the point
+/// (u, 1 − v), and the two halves of the window meet along the centre line v = ½, which the
+/// harmonic surface reproduces exactly (that row of samples is the circle of radius 2 twice
+/// round, a trigonometric polynomial of degree 2 in u), so they meet with no gap.
+#[test]
+fn the_moebius_window_covers_the_strip_once_with_no_gap() {
+    let s = test_surface("mobius").unwrap();
+    assert_eq!((s.window.v.start, s.window.v.end), (0.0, 0.5));
+    let h = s.harmonic();
+    for k in 0..50 {
+        let u = f64::from(k) / 100.0 + 0.003;
+        for v in [0.1, 0.3, 0.45] {
+            assert!((s.eval(u + 0.5, v) - s.eval(u, 1.0 - v)).length() < 1e-12, "{u} {v}");
+        }
+        let (a, b) = (h.eval(u, 0.5), h.eval(u + 0.5, 0.5));
+        assert!((a - b).length() < 1e-9, "{u}: {a} and {b}");
+        assert!((a.length() - 2.0).abs() < 1e-9 && a.z.abs() < 1e-9, "{u}: {a}");
+    }
+}
+
+/// Another shell (figure 5.38), as reconstructed: a whorl about the x axis whose cross-section
+/// turns by θ − cos 2ρ, so that a cross-section's angle about the axis stays within a radian
+/// of θ (where the literal product θ·cos 2ρ would sweep ±6π), and whose size grows as eᵘ − 1.
+#[test]
+fn another_shell_is_a_whorl() {
+    let s = test_surface("shell2").unwrap();
+    for k in 1..40 {
+        let u = f64::from(k) / 40.0;
+        let theta = 6.0 * std::f64::consts::PI * u;
+        for j in 0..16 {
+            let v = (f64::from(j) + 0.25) / 16.0;
+            let p = s.eval(u, v);
+            let rho = std::f64::consts::TAU * v;
+            let a = u.exp() - 1.0;
+            // Distance from the axis and along it: the circle of radius a through the axis.
+            assert!((p.x - a * rho.sin()).abs() < 1e-12);
+            assert!(((p.y * p.y + p.z * p.z).sqrt() - a * (1.0 + rho.cos())).abs() < 1e-12);
+            // The angle about the axis, within a radian of θ.
+            let turn = (p.y.atan2(p.z) - theta).rem_euclid(std::f64::consts::TAU);
+            let off = turn.min(std::f64::consts::TAU - turn);
+            assert!(off <= 1.0 + 1e-9, "{u} {v}: {off}");
+        }
+    }
+}

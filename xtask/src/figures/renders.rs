@@ -123,18 +123,21 @@ fn webp(scene: &Scene, camera: &Camera) -> Result<Vec<u8>> {
 /// the diagonal of all of theirs: a subdivision series, a surface and its curvature), one
 /// camera frames them all, so that they compare; otherwise each panel is framed alone.
 ///
-/// The models of §5.9's comparisons (5.31–5.43), a coarse sampling of a smooth surface with its
-/// exact normals, are drawn as curved PN triangles ([`TriangleMesh::curved`], [`PN_LEVEL`]):
-/// the same vertices and normals, without the polygonal outline and shadows of their flat
-/// triangles. Not the doubled Möbius strip (5.35), whose models cover the strip twice: two
-/// coverings curved each its own way would show through each other.
+/// The models of §5.9's comparisons (5.31–5.43) and of 4.1, a coarse sampling of a smooth
+/// surface with its exact normals, and the limit surfaces of chapter 4's subdivision schemes
+/// (4.13, 4.17, 4.22, 4.29, 4.34), a few steps of the scheme with their vertex normals, are
+/// drawn as curved PN triangles ([`TriangleMesh::curved`], [`PN_LEVEL`]): the same vertices
+/// and normals, without the polygonal outline and shadows of their flat triangles. The steps
+/// of a scheme (4.11, 4.12, …) stay the polyhedra they are.
 pub(crate) fn render_models(number: (u32, u32), glbs: &[&[u8]]) -> Result<Vec<Vec<u8>>> {
     let (meshes, edges): (Vec<TriangleMesh>, Vec<Vec<[u32; 2]>>) = glbs
         .iter()
         .map(|g| {
             let (mesh, edges) = mesh_from_glb(g)?;
             Ok(match number {
-                (5, 31..=34 | 36..=43) if edges.is_empty() => (mesh.curved(PN_LEVEL)?, edges),
+                (4, 1 | 13 | 17 | 22 | 29 | 34) | (5, 31..=43) if edges.is_empty() => {
+                    (mesh.curved(PN_LEVEL)?, edges)
+                }
                 _ => (mesh, edges),
             })
         })

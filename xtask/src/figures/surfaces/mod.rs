@@ -94,16 +94,19 @@ struct Spec {
 
 /// The comparisons of figures 5.31–5.43 and their mesh resolutions: two quads per sample along
 /// u and four along v (the harmonic surface varies slowly in v, through 4 samples), three per
-/// sample and 12 around the tubes of the knots.
+/// sample and 12 around the tubes of the knots; the flat Möbius strip four per sample along u
+/// (its rim is curved within its plane, where curved triangles cannot round it; half its v
+/// range drawn, at the same density), and the second shell eight along v (its cross-sections
+/// twist, and its opening is one of them).
 const SPECS: [Spec; 13] = [
     Spec { name: "plane", figure: "5.31", n_u: 48, n_v: 16 },
     Spec { name: "partial-sphere", figure: "5.32", n_u: 48, n_v: 16 },
     Spec { name: "torus", figure: "5.33", n_u: 48, n_v: 16 },
     Spec { name: "sphere", figure: "5.34", n_u: 48, n_v: 16 },
-    Spec { name: "mobius", figure: "5.35", n_u: 48, n_v: 16 },
+    Spec { name: "mobius", figure: "5.35", n_u: 96, n_v: 8 },
     Spec { name: "revolution", figure: "5.36", n_u: 48, n_v: 16 },
     Spec { name: "shell", figure: "5.37", n_u: 48, n_v: 16 },
-    Spec { name: "shell2", figure: "5.38", n_u: 48, n_v: 16 },
+    Spec { name: "shell2", figure: "5.38", n_u: 48, n_v: 32 },
     Spec { name: "klein", figure: "5.39", n_u: 48, n_v: 16 },
     Spec { name: "overhand", figure: "5.40", n_u: 72, n_v: 12 },
     Spec { name: "solomon", figure: "5.41", n_u: 72, n_v: 12 },
@@ -295,7 +298,7 @@ pub(crate) const FIGURES: &[Figure] = &[
         4,
         "Comparison of Moëbius strip and harmonic surface",
         "(a) Moëbius strip",
-        "§5.9 surface `mobius` of `hi_surface::parametric`: the doubled Möbius strip (twice round, so periodic in u), sampled at 24×4 points."
+        "§5.9 surface `mobius` of `hi_surface::parametric`: the doubled Möbius strip (twice round, so periodic in u), sampled at 24×4 points; window v ∈ [0, ½], which covers the strip once (half its width on each round, the halves meeting along the centre line)."
     ),
     comparison!(
         36,
