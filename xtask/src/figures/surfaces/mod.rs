@@ -96,22 +96,24 @@ struct Spec {
 /// u and four along v (the harmonic surface varies slowly in v, through 4 samples), three per
 /// sample and 12 around the tubes of the knots; the flat Möbius strip four per sample along u
 /// (its rim is curved within its plane, where curved triangles cannot round it; half its v
-/// range drawn, at the same density), and the second shell eight along v (its cross-sections
-/// twist, and its opening is one of them).
+/// range drawn, at the same density); eight along v for the second shell (its cross-sections
+/// twist, and its opening is one of them) and for the open tubes of 5.36, 5.39 and 5.43 (their
+/// ends are cross-sections, circles that a curved triangle rounds only where the surface's
+/// normal leans towards the circle's centre).
 const SPECS: [Spec; 13] = [
     Spec { name: "plane", figure: "5.31", n_u: 48, n_v: 16 },
     Spec { name: "partial-sphere", figure: "5.32", n_u: 48, n_v: 16 },
     Spec { name: "torus", figure: "5.33", n_u: 48, n_v: 16 },
     Spec { name: "sphere", figure: "5.34", n_u: 48, n_v: 16 },
     Spec { name: "mobius", figure: "5.35", n_u: 96, n_v: 8 },
-    Spec { name: "revolution", figure: "5.36", n_u: 48, n_v: 16 },
+    Spec { name: "revolution", figure: "5.36", n_u: 48, n_v: 32 },
     Spec { name: "shell", figure: "5.37", n_u: 48, n_v: 16 },
     Spec { name: "shell2", figure: "5.38", n_u: 48, n_v: 32 },
-    Spec { name: "klein", figure: "5.39", n_u: 48, n_v: 16 },
+    Spec { name: "klein", figure: "5.39", n_u: 48, n_v: 32 },
     Spec { name: "overhand", figure: "5.40", n_u: 72, n_v: 12 },
     Spec { name: "solomon", figure: "5.41", n_u: 72, n_v: 12 },
     Spec { name: "solomon-fine", figure: "5.42", n_u: 96, n_v: 12 },
-    Spec { name: "revolution-periodic", figure: "5.43", n_u: 48, n_v: 16 },
+    Spec { name: "revolution-periodic", figure: "5.43", n_u: 48, n_v: 32 },
 ];
 
 /// What figures 5.31–5.43 draw.
