@@ -152,19 +152,20 @@ pub(super) fn fill_holes(
         loops.iter().flatten().map(|&v| (v, Vec::new())).collect();
     gather_neighbours(faces, &mut around);
     let mut next = positions.len();
-    let firsts: Vec<usize> = loops
+    let shapes: Vec<(CapShape, usize)> = loops
         .iter()
         .map(|lp| {
+            let shape = CapShape::of(lp, positions);
             let first = next;
-            next += CapShape::of(lp, positions).vertices();
-            first
+            next += shape.vertices();
+            (shape, first)
         })
         .collect();
     let old: &[DVec3] = positions;
     let caps: Vec<Cap> = loops
         .par_iter()
-        .zip(firsts.par_iter())
-        .map(|(lp, &f)| fill_hole(lp, &around, old, f))
+        .zip(shapes.par_iter())
+        .map(|(lp, (shape, first))| fill_hole(lp, shape, &around, old, *first))
         .collect();
     for cap in caps {
         scan_vertex.resize(scan_vertex.len() + cap.positions.len(), ADDED_VERTEX);
@@ -271,16 +272,16 @@ fn zip_rings(outer: &[u32], inner: &[u32]) -> Vec<[u32; 3]> {
 /// plate the surface around it continues into: the umbrella operator applied twice vanishes at
 /// every new vertex (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about
 /// it fixed), so the cap leaves the rim along the surface's own tangent plane, with no crease
-/// for the harmonic surface to ring on. `around` holds the loop's vertices' neighbours in the
-/// mesh ([`fill_holes`]).
+/// for the harmonic surface to ring on. `shape` is the cap's size ([`CapShape::of`] the loop);
+/// `around` holds the loop's vertices' neighbours in the mesh ([`fill_holes`]).
 fn fill_hole(
     lp: &[u32],
+    &CapShape { centre, rings, count }: &CapShape,
     around: &std::collections::HashMap<u32, Vec<u32>>,
     old: &[DVec3],
     first_new: usize,
 ) -> Cap {
     let m = lp.len();
-    let CapShape { centre, rings, count } = CapShape::of(lp, old);
     let at = |k: u32| old[k as usize];
     // The loop's point at the fraction s of the way round (by vertex index, from lp[0]).
     let on_loop = |s: f64| {
