@@ -179,17 +179,26 @@ impl BasisPieces {
         let mut breaks = dedup_sorted(all);
         breaks.push(1.0);
         let data = |t: f64| [0, 1, 2].map(|o| sigma.deriv(0, t, o));
+        // σ's quintic on each of its own pieces, made once: every σₖ on every piece of the
+        // basis is a part of one of them.
+        let ends: Vec<[f64; 3]> = own.iter().map(|&b| data(b)).collect();
+        let quintics: Vec<BezierCurve<f64>> = own
+            .windows(2)
+            .zip(ends.windows(2))
+            .map(|(b, e)| BezierCurve::new(quintic_hermite(e[0], e[1], b[1] - b[0]).to_vec()))
+            .collect();
         let mut ctrl = Vec::with_capacity((breaks.len() - 1) * n * 6);
         for w in breaks.windows(2) {
             let (u0, u1) = (w[0], w[1]);
             for k in 0..n {
-                // σₖ on [u0, u1] is σ on [u0 − k/n, u1 − k/n]: find σ's piece holding it.
+                // σₖ on [u0, u1] is σ on [u0 − k/n, u1 − k/n]: find σ's piece holding it, the
+                // first [b₀, b₁] with b₀ ≤ mid ≤ b₁ (mid ≥ own[0] by construction).
                 let shift = k as f64 / nf;
                 let mid = (0.5 * (u0 + u1) - shift - own[0]).rem_euclid(1.0) + own[0];
-                let i = own.windows(2).position(|p| p[0] <= mid && mid <= p[1]).unwrap_or(0);
+                let after = own.partition_point(|&b| b < mid);
+                let i = if after < own.len() { after.saturating_sub(1) } else { 0 };
                 let (b0, b1) = (own[i], own[i + 1]);
-                let piece = quintic_hermite(data(b0), data(b1), b1 - b0);
-                let curve = BezierCurve::new(piece.to_vec());
+                let curve = &quintics[i];
                 // Local parameters of [u0, u1] − shift inside [b0, b1], unwrapped near mid.
                 let offset = mid - (0.5 * (u0 + u1) - shift);
                 let (s0, s1) = (
