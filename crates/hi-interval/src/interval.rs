@@ -149,6 +149,7 @@ impl Interval {
     /// assert!(Interval::point(f64::INFINITY).is_empty());
     /// ```
     #[must_use]
+    #[inline]
     pub fn point(x: f64) -> Self {
         if x.is_finite() { Self { lo: lo0(x), hi: hi0(x) } } else { Self::EMPTY }
     }
@@ -202,6 +203,7 @@ impl Interval {
 
     /// Is this a single point `[x, x]`?
     #[must_use]
+    #[inline]
     pub fn is_point(self) -> bool {
         self.lo == self.hi
     }
@@ -216,12 +218,14 @@ impl Interval {
     /// assert!(!Interval::ENTIRE.contains(f64::INFINITY));
     /// ```
     #[must_use]
+    #[inline]
     pub fn contains(self, x: f64) -> bool {
         x.is_finite() && self.lo <= x && x <= self.hi
     }
 
     /// Is `self` a subset of `other`? (The empty set is a subset of everything.)
     #[must_use]
+    #[inline]
     pub fn is_subset(self, other: Self) -> bool {
         self.is_empty() || (other.lo <= self.lo && self.hi <= other.hi)
     }
@@ -230,6 +234,7 @@ impl Interval {
     ///
     /// An infinite endpoint of `other` counts as open, so everything is interior to ENTIRE.
     #[must_use]
+    #[inline]
     pub fn is_interior(self, other: Self) -> bool {
         self.is_empty()
             || ((other.lo < self.lo || other.lo == f64::NEG_INFINITY)
@@ -238,6 +243,7 @@ impl Interval {
 
     /// Do the two intervals share a point?
     #[must_use]
+    #[inline]
     pub fn overlaps(self, other: Self) -> bool {
         !self.intersection(other).is_empty()
     }
@@ -261,6 +267,7 @@ impl Interval {
     /// assert!(Interval::new(f64::MAX, f64::MAX).mid().is_finite());
     /// ```
     #[must_use]
+    #[inline]
     pub fn mid(self) -> f64 {
         if self.is_empty() {
             return f64::NAN;
@@ -279,12 +286,14 @@ impl Interval {
 
     /// Width w(X) = xᵤ − xₗ (§5.6), rounded up; `0` for the empty interval.
     #[must_use]
+    #[inline]
     pub fn width(self) -> f64 {
         if self.is_empty() { 0.0 } else { sub_up(self.hi, self.lo) }
     }
 
     /// Radius: the smallest `r` with X ⊆ [m − r, m + r] for `m = self.mid()`, rounded up.
     #[must_use]
+    #[inline]
     pub fn rad(self) -> f64 {
         if self.is_empty() {
             return 0.0;
@@ -303,6 +312,7 @@ impl Interval {
     /// assert_eq!(Interval::new(-3.0, 2.0).mag(), 3.0);
     /// ```
     #[must_use]
+    #[inline]
     pub fn mag(self) -> f64 {
         if self.is_empty() { 0.0 } else { self.lo.abs().max(self.hi.abs()) }
     }
@@ -317,6 +327,7 @@ impl Interval {
     /// assert_eq!(Interval::new(-3.0, 2.0).mig(), 0.0);
     /// ```
     #[must_use]
+    #[inline]
     pub fn mig(self) -> f64 {
         if self.is_empty() || (self.lo <= 0.0 && 0.0 <= self.hi) {
             0.0
@@ -327,6 +338,7 @@ impl Interval {
 
     /// Convex hull X ∪ Y (the smallest interval containing both).
     #[must_use]
+    #[inline]
     pub fn hull(self, other: Self) -> Self {
         if self.is_empty() {
             return other;
@@ -348,6 +360,7 @@ impl Interval {
     /// assert!(a.intersection(Interval::new(3.0, 4.0)).is_empty());
     /// ```
     #[must_use]
+    #[inline]
     pub fn intersection(self, other: Self) -> Self {
         let lo = self.lo.max(other.lo);
         let hi = self.hi.min(other.hi);
@@ -372,12 +385,14 @@ impl Interval {
 
     /// Absolute value {|x| : x ∈ X} = [⟨X⟩, |X|].
     #[must_use]
+    #[inline]
     pub fn abs(self) -> Self {
         if self.is_empty() { self } else { Self { lo: lo0(self.mig()), hi: self.mag() } }
     }
 
     /// Pointwise minimum {min(x, y)}: `[min(xₗ, yₗ), min(xᵤ, yᵤ)]`.
     #[must_use]
+    #[inline]
     pub fn min(self, other: Self) -> Self {
         if self.is_empty() || other.is_empty() {
             return Self::EMPTY;
@@ -387,6 +402,7 @@ impl Interval {
 
     /// Pointwise maximum {max(x, y)}: `[max(xₗ, yₗ), max(xᵤ, yᵤ)]`.
     #[must_use]
+    #[inline]
     pub fn max(self, other: Self) -> Self {
         if self.is_empty() || other.is_empty() {
             return Self::EMPTY;
@@ -565,6 +581,7 @@ fn pow_up(x: f64, mut k: u32) -> f64 {
 
 impl Neg for Interval {
     type Output = Self;
+    #[inline]
     fn neg(self) -> Self {
         if self.is_empty() { self } else { Self { lo: lo0(-self.hi), hi: hi0(-self.lo) } }
     }

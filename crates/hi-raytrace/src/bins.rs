@@ -18,7 +18,9 @@
 //!   projection. The triangles are listed in a uniform grid over the plane normal to the light,
 //!   each cell's list ordered by how far its triangles reach towards the light; a shadow ray
 //!   reads only its origin's cell, and there only the triangles reaching beyond its origin
-//!   whose projections may hold it, and never the triangle it leaves.
+//!   whose projections may hold it, and never the triangle it leaves. A mesh lying in a plane
+//!   x, y or z = const (a floor) answers at once for a ray that starts off that plane and moves
+//!   away from it: no triangle of it can be met at t > 0.
 //!
 //! Both give what the BVH gives: a candidate list holds every triangle the exact test could
 //! accept (their boxes are widened well beyond rounding), and the test is the same. A camera
@@ -354,6 +356,8 @@ pub(crate) struct LightGrid {
     flat: Vec<[f64; 3]>,
     edge_on: Vec<bool>,
     slack: f64,
+    /// When every vertex has the same coordinate `z` along axis `k` (a floor): `(k, z)`.
+    plane: Option<(usize, f64)>,
 }
 
 impl LightGrid {
@@ -467,7 +471,13 @@ impl LightGrid {
                 area.abs() <= slack * extent
             })
             .collect();
+        let positions = mesh.mesh().positions();
+        let plane = (0..3).find_map(|k| {
+            let z = positions.first()?[k];
+            positions.iter().all(|p| p[k] == z).then_some((k, z))
+        });
         Some(LightGrid {
+            plane,
             direction,
             axes,
             origin,
@@ -487,6 +497,13 @@ impl LightGrid {
     /// cannot meet.
     pub(crate) fn occluded(&self, mesh: &MeshObject, ray: &Ray, skip: Option<usize>) -> bool {
         debug_assert!(ray.dir == self.direction, "a light grid's ray goes along its light");
+        // A mesh in a plane z = const (a floor) cannot meet a ray that starts off that plane
+        // and moves away from it: the exact test would put the meeting at t < 0.
+        if let Some((k, z)) = self.plane
+            && (ray.origin[k] - z) * ray.dir[k] > 0.0
+        {
+            return false;
+        }
         let q = [ray.origin.dot(self.axes[0]), ray.origin.dot(self.axes[1])];
         let mut cell = [0usize; 2];
         for i in 0..2 {
@@ -499,15 +516,18 @@ impl LightGrid {
         }
         let c = cell[1] * self.size[0] + cell[0];
         let list = &self.triangles[self.offsets[c] as usize..self.offsets[c + 1] as usize];
-        let Some(sheared) = ShearedRay::new(ray) else {
+        if list.is_empty() {
             return false;
-        };
+        }
         let (positions, triangles) = (mesh.mesh().positions(), mesh.mesh().triangles());
         // The origin's coordinate along the light: a point at t on the ray has it plus t.
         let depth = ray.origin.dot(self.direction);
         // A triangle wholly behind the origin along the light (by more than a slack far above
         // rounding) cannot be met, nor can any after it in the list.
         let ahead = list.partition_point(|&(far, _)| far - depth >= -self.slack);
+        // The ray's shear, made for the first triangle that passes the tests below (most rays
+        // need none).
+        let mut sheared: Option<Option<ShearedRay>> = None;
         list[..ahead].iter().any(|&(_, tri)| {
             if skip == Some(tri as usize) {
                 return false;
@@ -536,7 +556,9 @@ impl LightGrid {
                 }
             }
             let [a, b, c] = t.map(|k| positions[k as usize]);
-            sheared.intersect(a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max)
+            sheared
+                .get_or_insert_with(|| ShearedRay::new(ray))
+                .is_some_and(|s| s.intersect(a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max))
         })
     }
 }
@@ -790,6 +812,31 @@ mod tests {
             }
         }
         assert!(blocked > 5_000 && free > 5_000, "{blocked} blocked, {free} free");
+    }
+
+    /// The floor of the test scene (z = −1.3) is known to be flat, the sphere not; a shadow
+    /// ray leaving the floor's top is free of it at once, one from below it still meets it
+    /// (and both answers are the exact test's).
+    #[test]
+    fn a_flat_mesh_frees_the_rays_that_leave_it() {
+        let (scene, _) = scene();
+        let grid = |i: usize| {
+            let Geometry::Mesh(m) = &scene.objects()[i].geometry else { panic!() };
+            (m, LightGrid::new(m, DVec3::new(-0.7, -1.0, 2.0)).unwrap())
+        };
+        let ((sphere, sphere_grid), (floor, floor_grid)) = (grid(0), grid(2));
+        assert_eq!(floor_grid.plane, Some((2, -1.3)));
+        assert_eq!(sphere_grid.plane, None);
+        let dir = floor_grid.direction;
+        for (z, blocked) in [(-1.3 + 1e-12, false), (-1.3 - 1e-6, true), (-1.0, false)] {
+            let ray =
+                Ray { origin: DVec3::new(0.1, 0.2, z), dir, t_min: 0.0, t_max: f64::INFINITY };
+            assert_eq!(floor_grid.occluded(floor, &ray, None), blocked, "from z = {z}");
+            assert_eq!(floor.occluded(&ray), blocked, "the exact test from z = {z}");
+        }
+        // The sphere's grid still reads its cells.
+        let up = Ray { origin: DVec3::new(0.0, 0.0, -3.0), dir, t_min: 0.0, t_max: f64::INFINITY };
+        assert_eq!(sphere_grid.occluded(sphere, &up, None), sphere.occluded(&up));
     }
 
     /// A mesh whose bins or grid would hold more entries than allowed gets none (and keeps its

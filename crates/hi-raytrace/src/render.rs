@@ -212,7 +212,9 @@ fn sample_offset(x: u32, y: u32, s: u32, n: u32) -> (f64, f64) {
     let h = mix((u64::from(x) << 32) ^ u64::from(y) ^ 0x5EED_2005);
     let (rx, ry) =
         ((h >> 11) as f64 / (1u64 << 53) as f64, (mix(h) >> 11) as f64 / (1u64 << 53) as f64);
-    ((radical_inverse(s) + rx).fract(), (sobol_second(s) + ry).fract())
+    // (Both sums lie in [0, 2): wrapping by one subtraction is `fract`, without its call.)
+    let wrap = |a: f64| if a >= 1.0 { a - 1.0 } else { a };
+    (wrap(radical_inverse(s) + rx), wrap(sobol_second(s) + ry))
 }
 
 /// Renders `scene` through `camera`. `progress`, if given, is called after each tile with the
@@ -343,6 +345,7 @@ fn render_tile(
         vec![None; rays.len()]
     };
     let binned: Vec<bool> = (0..scene.objects().len()).map(|i| accel.screen.binned(i)).collect();
+    let all_binned = binned.iter().all(|&b| b);
     // Samples `from..to` of the `spp` of pixel (x, y), added to `sum`; returns the
     // spread of these samples in their widest channel.
     let mut samples = |x: u32, y: u32, from: u32, to: u32, sum: &mut [f64; 3]| {
@@ -358,7 +361,12 @@ fn render_tile(
                     _ => None,
                 }
             });
-            let color = match scene.intersect_after(ray, on_mesh, |i| !binned[i]) {
+            let hit = if all_binned {
+                on_mesh
+            } else {
+                scene.intersect_after(ray, on_mesh, |i| !binned[i])
+            };
+            let color = match hit {
                 Some(hit) => {
                     counts.hits += 1;
                     // The triangle the shadow rays leave, when the hit is on a mesh.
