@@ -266,7 +266,7 @@ pub(crate) struct Generated {
     /// The renders not drawn.
     pub(crate) skipped: Vec<String>,
     /// The time each figure (or table) took, by label.
-    pub(crate) times: Vec<(String, std::time::Duration)>,
+    pub(crate) times: Times,
 }
 
 /// Draws every figure (or, with `Some`, those `only` names: the others' files count as
@@ -293,10 +293,56 @@ pub(crate) fn generate(
     } else {
         ProgressBar::hidden()
     };
-    let mut outputs = Vec::with_capacity(count + 1);
+    // The tables (mostly one thread's work, a few seconds) are computed beside the figures,
+    // whose renders keep every core busy but for their gaps.
+    let (drawn, computed) = std::thread::scope(|scope| {
+        let tables = scope.spawn(compute_tables);
+        let drawn = draw_figures(&figures, &chosen, renders, &bar, count);
+        bar.set_message("the tables");
+        let computed = tables.join().map_err(|_| anyhow::anyhow!("computing the tables panicked"));
+        (drawn, computed)
+    });
+    let (mut outputs, skipped, mut times) = drawn?;
+    let (computed, table_times) = computed??;
+    times.extend(table_times);
+    bar.finish_and_clear();
+    outputs.push((INDEX.to_owned(), index(&figures, &computed).into_bytes()));
+    let sizes = image_sizes(&figures, &outputs);
+    outputs
+        .push((html::GALLERY.to_owned(), html::gallery(&figures, &computed, &sizes).into_bytes()));
+    outputs.push((html::VIEWER.to_owned(), html::VIEWER_PAGE.as_bytes().to_vec()));
+    Ok(Generated { files: outputs, skipped, times })
+}
+
+/// The time each figure or table took, by label.
+type Times = Vec<(String, std::time::Duration)>;
+
+/// Every table, with the time each took.
+fn compute_tables() -> Result<(Vec<(Table, String)>, Times)> {
+    let mut computed = Vec::new();
+    let mut times = Vec::new();
+    for table in tables() {
+        let start = std::time::Instant::now();
+        let body = (table.make)().with_context(|| format!("computing table {}", table.anchor))?;
+        computed.push((table, body));
+        times.push((format!("table {}", table.anchor), start.elapsed()));
+    }
+    Ok((computed, times))
+}
+
+/// The files of the `chosen` figures (`count` panels and views), the names of those left out,
+/// and the time each figure took; the renders only with [`Renders::Draw`].
+fn draw_figures(
+    figures: &[Figure],
+    chosen: &dyn Fn(&Figure) -> bool,
+    renders: Renders,
+    bar: &ProgressBar,
+    count: usize,
+) -> Result<(Vec<Output>, Vec<String>, Times)> {
+    let mut outputs = Vec::with_capacity(count + 3);
     let mut skipped = Vec::new();
     let mut times = Vec::new();
-    for figure in &figures {
+    for figure in figures {
         let start = std::time::Instant::now();
         if !chosen(figure) {
             skipped.extend(figure.entries().into_iter().flat_map(|(_, file, shown, model)| {
@@ -353,21 +399,7 @@ pub(crate) fn generate(
         }
         times.push((figure.label(), start.elapsed()));
     }
-    let mut computed = Vec::new();
-    for table in tables() {
-        let start = std::time::Instant::now();
-        bar.set_message(format!("table {}", table.anchor));
-        let body = (table.make)().with_context(|| format!("computing table {}", table.anchor))?;
-        computed.push((table, body));
-        times.push((format!("table {}", table.anchor), start.elapsed()));
-    }
-    bar.finish_and_clear();
-    outputs.push((INDEX.to_owned(), index(&figures, &computed).into_bytes()));
-    let sizes = image_sizes(&figures, &outputs);
-    outputs
-        .push((html::GALLERY.to_owned(), html::gallery(&figures, &computed, &sizes).into_bytes()));
-    outputs.push((html::VIEWER.to_owned(), html::VIEWER_PAGE.as_bytes().to_vec()));
-    Ok(Generated { files: outputs, skipped, times })
+    Ok((outputs, skipped, times))
 }
 
 /// The width and height of every image the gallery shows, from its bytes among `outputs`, or
@@ -678,16 +710,25 @@ fn keys(root: &Path) -> Result<BTreeMap<String, String>> {
     Ok(keys)
 }
 
-/// Prints the time the figures took, and the ten slowest.
+/// Prints the time the figures took, the ten slowest figures, and the tables' time (computed
+/// beside the figures, so that their time overlaps theirs).
 fn print_times(times: &[(String, std::time::Duration)], total: std::time::Duration) {
-    let mut slowest: Vec<&(String, std::time::Duration)> = times.iter().collect();
+    let (tables, figures): (Vec<_>, Vec<_>) =
+        times.iter().partition(|(label, _)| label.starts_with("table "));
+    let mut slowest = figures;
     slowest.sort_by_key(|t| std::cmp::Reverse(t.1));
     let list: Vec<String> = slowest
         .iter()
         .take(10)
         .map(|(label, time)| format!("{label} {:.1} s", time.as_secs_f64()))
         .collect();
-    println!("figures: drawn in {:.0} s; the slowest: {}", total.as_secs_f64(), list.join(", "));
+    let tables: f64 = tables.iter().map(|(_, t)| t.as_secs_f64()).sum();
+    let slowest =
+        if list.is_empty() { String::new() } else { format!("; the slowest: {}", list.join(", ")) };
+    println!(
+        "figures: drawn in {:.0} s{slowest}; the tables, alongside: {tables:.0} s",
+        total.as_secs_f64()
+    );
 }
 
 #[cfg(test)]
