@@ -91,11 +91,11 @@ pub(super) fn cut_handles(
         // Every block's loop at every size of block (a loop may fit a block of one grid and
         // not the next, and the roots differ), shortest first; as many of them cut at once as
         // are disjoint and, together, do not separate the surface.
-        let mut found: Vec<(f64, Vec<u32>)> = HANDLE_BLOCKS
-            .iter()
-            .chain(&[f64::INFINITY])
-            .flat_map(|&side| handle_loops(faces, positions, side))
-            .collect();
+        // The sizes side by side (the largest blocks, one of them the whole mesh, are each one
+        // thread's work), their loops in the sizes' order.
+        let sides: Vec<f64> = HANDLE_BLOCKS.iter().copied().chain([f64::INFINITY]).collect();
+        let mut found: Vec<(f64, Vec<u32>)> =
+            sides.par_iter().flat_map_iter(|&side| handle_loops(faces, positions, side)).collect();
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let wanted = usize::try_from((chi_wanted - chi) / 2)
             .unwrap_or(0)
