@@ -519,15 +519,15 @@ impl LightGrid {
         if list.is_empty() {
             return false;
         }
+        let Some(sheared) = ShearedRay::new(ray) else {
+            return false;
+        };
         let (positions, triangles) = (mesh.mesh().positions(), mesh.mesh().triangles());
         // The origin's coordinate along the light: a point at t on the ray has it plus t.
         let depth = ray.origin.dot(self.direction);
         // A triangle wholly behind the origin along the light (by more than a slack far above
         // rounding) cannot be met, nor can any after it in the list.
         let ahead = list.partition_point(|&(far, _)| far - depth >= -self.slack);
-        // The ray's shear, made for the first triangle that passes the tests below (most rays
-        // need none).
-        let mut sheared: Option<Option<ShearedRay>> = None;
         list[..ahead].iter().any(|&(_, tri)| {
             if skip == Some(tri as usize) {
                 return false;
@@ -556,9 +556,7 @@ impl LightGrid {
                 }
             }
             let [a, b, c] = t.map(|k| positions[k as usize]);
-            sheared
-                .get_or_insert_with(|| ShearedRay::new(ray))
-                .is_some_and(|s| s.intersect(a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max))
+            sheared.intersect(a, b, c, ray.t_max).is_some_and(|h| h.t < ray.t_max)
         })
     }
 }
