@@ -2,39 +2,45 @@
 //! How noisy a scan is: the scatter of its points about the smooth surface they sample,
 //! estimated from the points alone (for the regularisation of `hi-geomimage`'s geometry images).
 //!
-//! About each of up to 2 000 points spread over the scan, its k = 24 nearest neighbours are
-//! fitted, in the frame of their principal axes, by a quadric height field
-//! h(x, y) = a + bx + cy + dx² + exy + fy² (least squares), and so are its 12 nearest alone;
-//! the residual's root mean square, corrected for the six fitted parameters
-//! (× √(k / (k − 6))), is that neighbourhood's scatter at each scale. Each scale's median over
-//! the neighbourhoods (which ignores the few that straddle an edge or two sheets), divided by
-//! the median of √(χ²ᵥ/ν) for ν = k − 6 degrees of freedom (Wilson–Hilferty), estimates
-//! σ² + mₖ², where σ is the noise and mₖ the part of the surface no quadric follows: its
-//! third-order terms, whose residual grows as r³ with the neighbourhood's radius r ∝ √k, so
-//! that m₂₄² = 8 m₁₂². The two scales eliminate it: σ² = (8 s₁₂² − s₂₄²) / 7, clamped to
-//! [0, s₁₂²]. A clean sample of a smooth surface thus gives nearly 0 however sparse it is (a
-//! quadric over 24 points of a mesh's few thousand vertices misses the curvature by far more
-//! than its rounding), and a noisy one its noise.
-
+//! About each of up to 2 000 points spread over the scan, its k nearest neighbours are fitted,
+//! in the frame of their principal axes, by a quadric height field
+//! h(x, y) = a + bx + cy + dx² + exy + fy² (least squares), at four scales k = 8, 12, 16 and 24
+//! (the nearest k of the same 24); the residual's root mean square, corrected for the six
+//! fitted parameters (× √(k / (k − 6))), is that neighbourhood's scatter at scale k. Each
+//! scale's median over the neighbourhoods (which ignores the few that straddle an edge or two
+//! sheets), divided by the median of √(χ²ᵥ/ν) for ν = k − 6 degrees of freedom
+//! (Wilson–Hilferty), estimates sₖ² = σ² + mₖ², where σ is the noise and mₖ the part of the
+//! surface no quadric follows. The noise is the same at every scale; the surface's part grows
+//! with the neighbourhood: as r³ on a smooth, evenly sampled surface (mₖ² ∝ k³, the radius r
+//! growing as √k), as r at a crease (mₖ² ∝ k), and in between where the sampling is uneven, as
+//! in the vertices of a mesh refined where it curves. So sₖ² = σ² + c kᵖ is fitted to the four
+//! scales for each p = 1, 1.25, …, 3 (least squares weighted by 1/sₖ², with σ², c ≥ 0), and
+//! the best fit's σ is the noise, at most s₈. A clean sample of a smooth surface thus gives
+//! nearly 0 however sparse or uneven it is (a quadric over 24 of a mesh's few thousand vertices
+//! misses the curvature by far more than its rounding), and a noisy one its noise, the floor
+//! that sₖ levels off to at the small scales. Noise well below the surface's own departure at
+//! the smallest scale (a sparse sample, noise of a tenth of its spacing or less) cannot be told
+//! from the shape and is not seen: then the estimate is low rather than high, and the
+//! regularisation it sets smooths less, not away the detail of a clean sparse scan.
 use std::num::NonZero;
 
 use glam::{DMat3, DVec3};
 use hi_par::*;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
-/// Neighbours per local fit, at the larger scale.
-const K: usize = 24;
+/// The scales: neighbours per local fit, the largest last.
+const SCALES: [usize; 4] = [8, 12, 16, 24];
 
-/// Neighbours per local fit, at the smaller scale.
-const K_SMALL: usize = 12;
+/// Neighbours per local fit at the largest scale.
+const K: usize = SCALES[SCALES.len() - 1];
 
 /// Neighbourhoods examined at most.
 const SAMPLES: usize = 2000;
 
-/// The scan's noise: the scatter of its points about a local quadric at two scales, the
-/// surface's own departure from a quadric eliminated between them (see the module
-/// documentation), in the units of the points; 0 for fewer than K = 24 points or a scan with
-/// no neighbourhood that can be fitted.
+/// The scan's noise: the scatter of its points about a local quadric at four scales, the
+/// surface's own departure from a quadric, which grows with the scale, separated from it (see
+/// the module documentation), in the units of the points; 0 for fewer than 24 points or a
+/// scan with no neighbourhood that can be fitted.
 ///
 /// # Examples
 ///
@@ -78,7 +84,7 @@ pub fn noise_estimate(points: &[DVec3]) -> f64 {
     };
     let k = NonZero::new(K).unwrap_or(NonZero::<usize>::MIN);
     let step = points.len().div_ceil(SAMPLES).max(1);
-    let (mut small, mut large): (Vec<f64>, Vec<f64>) = (0..points.len())
+    let residuals: Vec<[f64; SCALES.len()]> = (0..points.len())
         .step_by(step)
         .collect::<Vec<_>>()
         .par_iter()
@@ -87,18 +93,65 @@ pub fn noise_estimate(points: &[DVec3]) -> f64 {
                 tree.query(&points[i].to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
             // Nearest first.
             let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
-            Some((quadric_residual(hood.get(..K_SMALL)?)?, quadric_residual(&hood)?))
+            let mut scatter = [0.0; SCALES.len()];
+            for (s, &k) in scatter.iter_mut().zip(&SCALES) {
+                *s = quadric_residual(hood.get(..k)?)?;
+            }
+            Some(scatter)
         })
-        .unzip();
-    if small.is_empty() {
+        .collect();
+    if residuals.is_empty() {
         return 0.0;
     }
-    let s_small = median(&mut small) / chi_median_ratio(K_SMALL - 6);
-    let s_large = median(&mut large) / chi_median_ratio(K - 6);
-    // σ² + m² at each scale, m₂₄² = 8 m₁₂² (the module documentation).
-    let ratio = ((K as f64) / (K_SMALL as f64)).powi(3);
-    let sigma2 = (ratio * s_small * s_small - s_large * s_large) / (ratio - 1.0);
-    sigma2.clamp(0.0, s_small * s_small).sqrt()
+    let mut column = vec![0.0; residuals.len()];
+    let scatter: [f64; SCALES.len()] = std::array::from_fn(|s| {
+        for (c, r) in column.iter_mut().zip(&residuals) {
+            *c = r[s];
+        }
+        median(&mut column) / chi_median_ratio(SCALES[s] - 6)
+    });
+    noise_from_scales(&scatter)
+}
+
+/// σ from the median scatter sₖ at each of [`SCALES`]: the σ of the fit sₖ² = σ² + c kᵖ
+/// (σ², c ≥ 0) with the least residual weighted by 1/sₖ², over p = 1, 1.25, …, 3; at most s₈.
+fn noise_from_scales(scatter: &[f64; SCALES.len()]) -> f64 {
+    let top = scatter.iter().copied().fold(0.0, f64::max);
+    if scatter[0] <= 0.0 || !top.is_finite() {
+        // A scatter of exactly 0 at the smallest scale: the points lie on quadrics.
+        return 0.0;
+    }
+    // In units of the largest, so that the weights 1/sₖ² are of one size in any units.
+    let s2: Vec<f64> = scatter.iter().map(|s| (s / top).powi(2)).collect();
+    let mut best = (f64::INFINITY, 0.0);
+    for step in 0..=8 {
+        let p = 1.0 + 0.25 * f64::from(step);
+        let kp: Vec<f64> = SCALES.iter().map(|&k| (k as f64).powf(p)).collect();
+        // Weighted least squares for (σ², c), weights 1/sₖ², by the 2 × 2 normal equations;
+        // a negative unknown is set to 0 and the other fitted alone.
+        let (mut a11, mut a12, mut a22, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for (y, x) in s2.iter().zip(&kp) {
+            let w = 1.0 / y;
+            a11 += w;
+            a12 += w * x;
+            a22 += w * x * x;
+            b1 += w * y;
+            b2 += w * x * y;
+        }
+        let det = a11 * a22 - a12 * a12;
+        let (mut sigma2, mut c) = ((b1 * a22 - b2 * a12) / det, (a11 * b2 - a12 * b1) / det);
+        if !(det > 0.0 && sigma2.is_finite() && c.is_finite()) || c < 0.0 {
+            (sigma2, c) = (b1 / a11, 0.0);
+        }
+        if sigma2 < 0.0 {
+            (sigma2, c) = (0.0, b2 / a22);
+        }
+        let misfit: f64 = s2.iter().zip(&kp).map(|(y, x)| (sigma2 + c * x - y).powi(2) / y).sum();
+        if misfit < best.0 {
+            best = (misfit, sigma2);
+        }
+    }
+    best.1.clamp(0.0, s2[0]).sqrt() * top
 }
 
 /// The median of `values` (reordered), which must not be empty.
