@@ -241,22 +241,37 @@ pub fn auto_resolution(points: usize) -> (usize, usize) {
 }
 
 /// The image size [`fit`] picks for a point set of `points` points: square, a multiple of 32,
-/// about two distinct texels per point (half the texels of a doubled layout), from 64² to 512².
-/// A point set's texels are projections onto the surface its points sample, no denser than
-/// the points themselves can support.
+/// from 64² to 512². A point set's texels are projections onto the surface its points sample,
+/// so a dense cloud needs no more texels than points: about two distinct texels per point (half
+/// the texels of a doubled layout). A sparse set needs more: between its points the texels
+/// follow the local quadrics, and its sparsest parts (a leg or a horn, which even a good
+/// parameterisation samples a few times less densely than the body) must still see every
+/// point; so up to [`SPARSE_SIDE`]² it gets twelve distinct texels per point, half as many
+/// again as a mesh's vertices get (a point set has no triangles to say where its surface runs
+/// between its points).
 ///
 /// # Examples
 ///
 /// ```
 /// use hi_geomimage::fit::auto_resolution_points;
 ///
-/// assert_eq!(auto_resolution_points(3_000), (128, 128));
-/// assert_eq!(auto_resolution_points(18_000), (288, 288));
+/// assert_eq!(auto_resolution_points(500), (128, 128));
+/// assert_eq!(auto_resolution_points(3_000), (288, 288));
+/// assert_eq!(auto_resolution_points(18_000), (320, 320));
+/// assert_eq!(auto_resolution_points(50_000), (448, 448));
+/// assert_eq!(auto_resolution_points(200_000), (512, 512));
 /// ```
 #[must_use]
 pub fn auto_resolution_points(points: usize) -> (usize, usize) {
-    auto_resolution(points / 4)
+    let dense = auto_resolution(points / 4).0;
+    let sparse = auto_resolution(points.saturating_mul(3) / 2).0.min(SPARSE_SIDE);
+    let side = dense.max(sparse);
+    (side, side)
 }
+
+/// The largest side [`auto_resolution_points`] gives a sparse point set beyond two distinct
+/// texels per point.
+pub const SPARSE_SIDE: usize = 320;
 
 /// How many distinct located points the rows of a §5.8 image had.
 #[derive(Clone, Copy, Debug, PartialEq)]
