@@ -89,9 +89,9 @@ fn a_sparse_clean_sample_of_a_curved_surface_has_no_noise() {
 fn the_vertices_of_a_mesh_refined_where_it_curves_have_no_noise() {
     // Wuson's vertices (the fixture) lie on its mesh exactly, so their noise is 0; the mesh is
     // dense where it curves and sparse where it is flat, so the surface's departure from a
-    // quadric grows with the neighbourhood more slowly than r³ (as r² here). Two scales and
-    // the r³ law took that slower growth for noise of 0.12 % of the diagonal; the fit over four
-    // scales finds under a hundredth of that.
+    // quadric grows with the neighbourhood more slowly than r³. Two scales and the r³ law took
+    // that slower growth for noise of 0.14 % of the diagonal; the fit over four scales finds
+    // under a hundredth of that.
     let path =
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/models/wuson.off");
     let scan = hi_scan::scan::read_scan(&path).unwrap();
