@@ -75,7 +75,7 @@ fn the_noise_estimate_finds_the_noise_in_any_units() {
 #[test]
 fn a_sparse_clean_sample_of_a_curved_surface_has_no_noise() {
     // 1 500 points on a thin torus: 24 neighbours span a third of the tube's circumference, where
-    // a quadric misses the circle by far more than rounding. The two scales tell that apart
+    // a quadric misses the circle by far more than rounding. The scales tell that apart
     // from noise: the clean sample's estimate is below a tenth of the noise that a sample with
     // σ = 0.003 gets.
     let clean = noise_estimate(&torus_points(1_500, 1.0, 0.25, 0.0, 5));
