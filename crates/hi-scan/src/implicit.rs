@@ -474,7 +474,8 @@ impl PointSurface {
     /// passes from one to the other), meshed by [`crate::surfacenets`]: an open or closed
     /// mesh whose triangles wind counter-clockwise seen from the side the patches face.
     /// A cell of [`CELL`] point spacings follows every detail the points resolve; a coarser one
-    /// gives a coarser mesh at less cost.
+    /// gives a coarser mesh at less cost. Only the grid's band is stored (see
+    /// [`crate::surfacenets`]): the memory grows with the surface, not with the volume.
     ///
     /// # Errors
     ///
@@ -532,9 +533,8 @@ impl PointSurface {
         if nodes > crate::surfacenets::MAX_NODES {
             return Err(Error::Degenerate { what: "the points are too sparse for their extent" });
         }
-        let [nx, ny, _] = dims;
-        let index = |i: usize, j: usize, k: usize| i + nx * (j + ny * k);
-        let mut band = vec![false; nodes];
+        // The band's nodes are marked +∞, then given their value or NaN.
+        let mut grid = crate::surfacenets::SparseGrid::new(origin, h, dims);
         for patch in &self.patches {
             let p = patch.origin;
             #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
@@ -546,41 +546,28 @@ impl PointSurface {
                     for di in -b..=b + 1 {
                         // The padding keeps these positive.
                         let at = [c[0] + di, c[1] + dj, c[2] + dk].map(isize::unsigned_abs);
-                        band[index(at[0], at[1], at[2])] = true;
+                        grid.set(at[0], at[1], at[2], f64::INFINITY);
                     }
                 }
             }
         }
-        let node_at = |t: usize| {
-            let (i, j, k) = (t % nx, t / nx % ny, t / nx / ny);
-            origin + DVec3::new(i as f64, j as f64, k as f64) * h
-        };
         // Known within the band, where the node's foot on the nearest point's tangent plane is
         // near that point (Hoppe's test: the zero set stops where the points do, at the rims of
         // holes).
         let reach = REACH * h;
-        let values: Vec<f64> = band
-            .par_iter()
-            .enumerate()
-            .map(|(t, &in_band)| {
-                if !in_band {
-                    return f64::NAN;
-                }
-                let (f, off, local) = self.signed_with_spacing(node_at(t));
-                // A node much farther from the surface than a cell is no witness of where the
-                // surface is: between two sheets, where the nearest point passes from one to
-                // the other, the height jumps across zero without a surface there.
-                let near = f.abs() <= NEAR * h.max(local);
-                if off <= reach.max(2.0 * local) && near { f } else { f64::NAN }
-            })
-            .collect();
-        drop(band);
-        crate::surfacenets::surface_nets(&crate::surfacenets::Grid {
-            origin,
-            spacing: h,
-            dims,
-            values: &values,
-        })
+        grid.update(|x, value| {
+            if *value != f64::INFINITY {
+                return;
+            }
+            let (f, off, local) = self.signed_with_spacing(x);
+            // A node much farther from the surface than a cell is no witness of where the
+            // surface is: between two sheets, where the nearest point passes from one to
+            // the other, the height jumps across zero without a surface there.
+            let near = f.abs() <= NEAR * h.max(local);
+            *value =
+                if off <= reach.max(2.0 * local) && near && f.is_finite() { f } else { f64::NAN };
+        });
+        Ok(grid.surface_nets())
     }
 }
 

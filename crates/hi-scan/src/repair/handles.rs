@@ -283,9 +283,8 @@ fn handle_loops(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Vec<(f6
 /// The shortest loop found in the faces `block` of a closed mesh that does not separate them:
 /// its length and vertices. A few roots are tried ([`HANDLE_ROOTS`]).
 fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<(f64, Vec<u32>)> {
-    use std::collections::HashMap;
     // Local vertices and undirected edges of the block, with the faces on each.
-    let mut local: HashMap<u32, u32> = HashMap::new();
+    let mut local: rustc_hash::FxHashMap<u32, u32> = rustc_hash::FxHashMap::default();
     let mut verts: Vec<u32> = Vec::new();
     let mut id = |v: u32, verts: &mut Vec<u32>| {
         *local.entry(v).or_insert_with(|| {
@@ -309,13 +308,9 @@ fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<
         list.push((a, b, pair[0].1, pair.get(1).map(|x| x.1)));
     }
     let n = verts.len();
-    let mut adjacency: Vec<Vec<(u32, f64)>> = vec![Vec::new(); n];
-    for &(a, b, _, _) in &list {
-        let w =
-            positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize]);
-        adjacency[a as usize].push((b, w));
-        adjacency[b as usize].push((a, w));
-    }
+    let adjacency = Adjacency::new(n, &list, |a, b| {
+        positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize])
+    });
     let mut best: Option<(f64, Vec<u32>)> = None;
     let mut root = 0u32;
     for _ in 0..HANDLE_ROOTS {
@@ -341,7 +336,7 @@ fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<
 /// to the other). `None` when every loop of the tree separates the faces.
 fn loop_through(
     root: u32,
-    adjacency: &[Vec<(u32, f64)>],
+    adjacency: &Adjacency,
     edges: &[(u32, u32, u32, Option<u32>)],
     n_faces: usize,
 ) -> Option<(f64, Vec<u32>)> {
@@ -357,7 +352,7 @@ fn loop_through(
         if d > dist[v as usize] {
             continue;
         }
-        for &(w, len) in &adjacency[v as usize] {
+        for &(w, len) in adjacency.of(v) {
             let nd = d + len;
             if nd < dist[w as usize] {
                 dist[w as usize] = nd;
@@ -376,7 +371,7 @@ fn loop_through(
             if tree(a, b) || !da.is_finite() || !db.is_finite() {
                 return None;
             }
-            let w = adjacency[a as usize].iter().find(|x| x.0 == b).map_or(0.0, |x| x.1);
+            let w = adjacency.of(a).iter().find(|x| x.0 == b).map_or(0.0, |x| x.1);
             Some((da + db + w, a, b, f, g))
         })
         .collect();
@@ -422,6 +417,54 @@ fn loop_through(
     let mut lp: Vec<u32> = pa[..=pa.len() - common].to_vec();
     lp.extend(pb[..pb.len() - common].iter().rev());
     (lp.len() >= 3).then_some((length, lp))
+}
+
+/// The edges of a block's vertices with their lengths, each vertex's in one slice (in the
+/// order of the edge list: each edge a–b gives a its entry b and b its entry a).
+struct Adjacency {
+    /// Where each vertex's neighbours start in `to`, and where the last one's end.
+    start: Vec<usize>,
+    /// Each vertex's neighbours and the lengths of the edges to them.
+    to: Vec<(u32, f64)>,
+}
+
+impl Adjacency {
+    /// The adjacency of `n` vertices joined by the edges (a, b, …) of `edges`, each of the
+    /// length `length(a, b)`.
+    fn new(
+        n: usize,
+        edges: &[(u32, u32, u32, Option<u32>)],
+        length: impl Fn(u32, u32) -> f64,
+    ) -> Self {
+        let mut start = vec![0usize; n + 1];
+        for &(a, b, _, _) in edges {
+            start[a as usize + 1] += 1;
+            start[b as usize + 1] += 1;
+        }
+        for k in 1..=n {
+            start[k] += start[k - 1];
+        }
+        let mut next = start.clone();
+        let mut to = vec![(0u32, 0.0f64); start[n]];
+        for &(a, b, _, _) in edges {
+            let w = length(a, b);
+            to[next[a as usize]] = (b, w);
+            next[a as usize] += 1;
+            to[next[b as usize]] = (a, w);
+            next[b as usize] += 1;
+        }
+        Self { start, to }
+    }
+
+    /// The number of vertices.
+    fn len(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// The neighbours of vertex `v` and the lengths of the edges to them.
+    fn of(&self, v: u32) -> &[(u32, f64)] {
+        &self.to[self.start[v as usize]..self.start[v as usize + 1]]
+    }
 }
 
 /// An `f64` distance ordered for the heap (distances are finite and non-negative).
