@@ -75,7 +75,8 @@ fn mesh_sources(
 ) -> Result<Result<Sources, String>, Error> {
     let parts: MeshParts = clock.run(StageKind::Parts, (0, 1), || mesh_parts(points, triangles))?;
     let (planned, dropped) = clock.run(StageKind::Parts, (0, 1), || {
-        plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+        let floor = (PART_FLOOR, PART_MIN_VERTICES);
+        plan(&parts, options.boundary, options.layout, floor, MAX_HANDLES)
     });
     let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
     if planned.is_empty() || (!force && kept < MIN_AREA_KEPT) {
@@ -215,14 +216,17 @@ fn point_sources_on(
         *finer = cell < CELL * surface.spacing();
         // A zero set whose parts cannot be made surfaces (tunnels beyond counting between the
         // walls of a thin part, or a cloud too sparse for its grid) is taken again on a coarser
-        // grid.
+        // grid; on the coarsest, more handles are cut before the rays are taken instead.
         let mut planned = Err(hi_scan::Error::Degenerate { what: "no zero set" });
         let mut fragments = (0, 0);
-        for coarser in ZERO_SET_COARSER {
+        for (k, coarser) in ZERO_SET_COARSER.into_iter().enumerate() {
+            let last = k + 1 == ZERO_SET_COARSER.len();
+            let handles = if last { COARSEST_GRID_HANDLES } else { MAX_HANDLES };
             planned = surface.zero_set(coarser * cell).and_then(|(v, t)| mesh_parts(&v, &t)).map(
                 |mut parts| {
                     fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
-                    plan(&parts, options.boundary, options.layout, PART_FLOOR, PART_MIN_VERTICES)
+                    let floor = (PART_FLOOR, PART_MIN_VERTICES);
+                    plan(&parts, options.boundary, options.layout, floor, handles)
                 },
             );
             if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {

@@ -15,7 +15,8 @@
 
 use glam::DVec3;
 use hi_scan::repair::{
-    ClosedMesh, Closing, MeshPart, MeshParts, Topology, close_part, part_topology, shortest_handle,
+    ClosedMesh, Closing, MeshPart, MeshParts, Topology, close_part_cutting, part_topology,
+    shortest_handle,
 };
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
@@ -112,6 +113,8 @@ pub(crate) struct PlannedPart {
     /// The part as the scan has it, before repair: closed again as a sphere should its
     /// domain's map fail ([`part_image_or_sphere`]).
     pub(crate) part: MeshPart,
+    /// The most handles its closing may cut ([`plan`]'s).
+    pub(crate) max_handles: usize,
 }
 
 /// The surfaces a part may become, best first, and why.
@@ -162,13 +165,13 @@ fn choices(
 
 /// The parts of `parts` to fit, each made the surface its topology asks for, and those left
 /// out: parts with less than `floor` of the area or fewer than `min_vertices` vertices, and
-/// parts that cannot be made any surface.
+/// parts that cannot be made any surface with up to `max_handles` handles cut.
 pub(crate) fn plan(
     parts: &MeshParts,
     boundary: Boundary,
     layout: Layout,
-    floor: f64,
-    min_vertices: usize,
+    (floor, min_vertices): (f64, usize),
+    max_handles: usize,
 ) -> (Vec<PlannedPart>, Vec<DroppedPart>) {
     let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
     let outcomes: Vec<Result<PlannedPart, DroppedPart>> = parts
@@ -195,7 +198,7 @@ pub(crate) fn plan(
             let topology = part_topology(part);
             let mut last = String::new();
             for (closing, domain, why) in choices(&topology, boundary, layout) {
-                match close_part(part, closing) {
+                match close_part_cutting(part, closing, max_handles) {
                     Ok(closed) if closing == Closing::Torus && is_tunnel(&closed, part.area) => {
                         last = format!(
                             "its handle's shortest loop is under {TORUS_MIN_EDGES} edges or {:.0} % of the square root of its area: two sheets that nearly touch, not a ring",
@@ -212,6 +215,7 @@ pub(crate) fn plan(
                             area_fraction,
                             why,
                             part: part.clone(),
+                            max_handles,
                         });
                     }
                     Err(e) => last = format!("not a {}: {e}", domain.name()),
@@ -390,7 +394,7 @@ pub(crate) fn part_image_or_sphere(
         Err(e) if any_failure && !matches!(part.domain, Domain::Sphere(_)) => e,
         done => return done,
     };
-    let Ok(closed) = close_part(&part.part, Closing::Sphere) else {
+    let Ok(closed) = close_part_cutting(&part.part, Closing::Sphere, part.max_handles) else {
         return Err(failed);
     };
     part.why = format!(
@@ -430,7 +434,7 @@ pub(crate) fn outward_samples(parts: &[PlannedPart]) -> (Vec<DVec3>, Vec<DVec3>)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use hi_scan::repair::mesh_parts;
+    use hi_scan::repair::{MAX_HANDLES, mesh_parts};
 
     /// An octahedron of radius 1 about the origin and a tetrahedron of size 0.1 about (5, 0, 0):
     /// two parts, the octahedron first (larger).
@@ -506,7 +510,8 @@ mod tests {
     #[test]
     fn a_part_whose_sheet_map_fails_is_fitted_as_a_sphere() {
         let parts = two_parts();
-        let (mut planned, dropped) = plan(&parts, Boundary::Auto, Layout::FlatOctahedron, 0.0, 4);
+        let (mut planned, dropped) =
+            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES);
         assert!(dropped.is_empty());
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
@@ -578,7 +583,8 @@ mod tests {
         }
         let parts = mesh_parts(&p, &t).unwrap();
         assert_eq!(parts.parts.len(), 1);
-        let (mut planned, _) = plan(&parts, Boundary::Auto, Layout::FlatOctahedron, 0.0, 4);
+        let (mut planned, _) =
+            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES);
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sheet, "{}", part.why);
         let sheet = part_image(&part, 64 * 64, None).expect("a map, squeezed");

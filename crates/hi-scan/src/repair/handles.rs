@@ -66,13 +66,14 @@ pub(super) fn euler_characteristic(vertices: usize, faces: usize, boundary_edges
 /// its genus is above 0, cuts the shortest non-separating loops found ([`handle_loops`], in
 /// blocks of every size of [`HANDLE_BLOCKS`] and over the whole mesh; several at once when
 /// they are disjoint and do not separate the surface together, [`independent_loops`]) and
-/// closes both sides of each cut.
+/// closes both sides of each cut; at most `max_handles` in all.
 pub(super) fn cut_handles(
     faces: &mut Vec<[u32; 3]>,
     positions: &mut Vec<DVec3>,
     scan_vertex: &mut Vec<u32>,
     filled: &mut Vec<bool>,
     chi_wanted: i64,
+    max_handles: usize,
     repair: &mut Repair,
 ) {
     let kept_open: Vec<Vec<u32>> = boundary_loops(faces, positions.len())
@@ -83,7 +84,7 @@ pub(super) fn cut_handles(
         })
         .collect();
     let open = kept_open.iter().map(Vec::len).sum::<usize>() as i64;
-    while repair.handles_cut < MAX_HANDLES {
+    while repair.handles_cut < max_handles {
         let chi = euler_characteristic(positions.len(), faces.len(), open);
         if chi >= chi_wanted {
             return;
@@ -99,7 +100,7 @@ pub(super) fn cut_handles(
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let wanted = usize::try_from((chi_wanted - chi) / 2)
             .unwrap_or(0)
-            .min(MAX_HANDLES - repair.handles_cut)
+            .min(max_handles - repair.handles_cut)
             .max(1);
         let loops = independent_loops(faces, positions.len(), found, wanted);
         if loops.is_empty() {

@@ -300,6 +300,43 @@ fn loop_measures(lp: &[u32], positions: &[DVec3]) -> BoundaryLoop {
 /// assert!(close_part(part, Closing::Torus).is_err());
 /// ```
 pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error> {
+    close_part_cutting(part, closing, MAX_HANDLES)
+}
+
+/// [`close_part`], cutting up to `max_handles` handles rather than [`MAX_HANDLES`] (more for a
+/// surface whose many handles are worth cutting however long it takes; a part with more fails
+/// as it does there).
+///
+/// # Errors
+///
+/// As [`close_part`]'s, with `max_handles` for [`MAX_HANDLES`].
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::{Closing, close_part_cutting, mesh_parts};
+///
+/// // A torus of 24 × 8 quads: one handle, so a sphere needs one cut.
+/// let (nu, nv) = (24u32, 8u32);
+/// let at = |i: u32, j: u32| {
+///     let (a, b) = (std::f64::consts::TAU * f64::from(i % nu) / f64::from(nu), std::f64::consts::TAU * f64::from(j % nv) / f64::from(nv));
+///     DVec3::new((1.0 + 0.3 * b.cos()) * a.cos(), (1.0 + 0.3 * b.cos()) * a.sin(), 0.3 * b.sin())
+/// };
+/// let points: Vec<DVec3> = (0..nu * nv).map(|k| at(k / nv, k % nv)).collect();
+/// let id = |i: u32, j: u32| (i % nu) * nv + j % nv;
+/// let triangles: Vec<[u32; 3]> = (0..nu)
+///     .flat_map(|i| (0..nv).flat_map(move |j| [[id(i, j), id(i + 1, j), id(i + 1, j + 1)], [id(i, j), id(i + 1, j + 1), id(i, j + 1)]]))
+///     .collect();
+/// let part = &mesh_parts(&points, &triangles).unwrap().parts[0];
+/// assert_eq!(close_part_cutting(part, Closing::Sphere, 1).unwrap().repair.handles_cut, 1);
+/// assert!(close_part_cutting(part, Closing::Sphere, 0).is_err());
+/// ```
+pub fn close_part_cutting(
+    part: &MeshPart,
+    closing: Closing,
+    max_handles: usize,
+) -> Result<ClosedMesh, Error> {
     if part.one_sided {
         return Err(Error::Topology {
             what: "the part cannot be oriented (it is one-sided)".to_owned(),
@@ -327,7 +364,7 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
         (2 - euler_characteristic(positions.len(), kept.len(), boundary) - loops.len() as i64) / 2;
     let hopeless = match closing {
         Closing::Torus => genus != 1,
-        Closing::Sphere | Closing::Disc => genus > MAX_HANDLES as i64,
+        Closing::Sphere | Closing::Disc => genus > max_handles as i64,
     };
     if hopeless {
         let open = i64::from(closing == Closing::Disc && !loops.is_empty());
@@ -363,13 +400,14 @@ pub fn close_part(part: &MeshPart, closing: Closing) -> Result<ClosedMesh, Error
     let boundary_edges = open.as_ref().map_or(0, Vec::len) as i64;
     let handles =
         (chi_wanted - euler_characteristic(positions.len(), kept.len(), boundary_edges)) / 2;
-    if closing != Closing::Torus && handles <= MAX_HANDLES as i64 {
+    if closing != Closing::Torus && handles <= max_handles as i64 {
         cut_handles(
             &mut kept,
             &mut positions,
             &mut scan_vertex,
             &mut filled,
             chi_wanted,
+            max_handles,
             &mut repair,
         );
     }
