@@ -324,14 +324,17 @@ impl SparseGrid {
                     .then(|| [[i, j, k], [i, j, k + 1], [i + 1, j, k + 1], [i + 1, j, k]]),
             ]
         };
+        // The values apart from the grid, which the sweep reads for where each node's value is.
+        let mut values = std::mem::take(&mut self.values);
+        let grid = &*self;
         // The node that must move inside for a face to stop alternating: its outside corner
         // nearest zero, so that the inside diagonal connects; with its value's place.
-        let to_move = |grid: &Self, face: [[usize; 3]; 4]| {
+        let to_move = |values: &[f64], face: [[usize; 3]; 4]| {
             let slots = face.map(|[i, j, k]| grid.slot(i, j, k));
             if slots.contains(&None) {
                 return None;
             }
-            let v = slots.map(|s| s.map_or(f64::NAN, |s| grid.values[s]));
+            let v = slots.map(|s| s.map_or(f64::NAN, |s| values[s]));
             if v.iter().any(|x| x.is_nan()) {
                 return None;
             }
@@ -346,10 +349,10 @@ impl SparseGrid {
         };
         // One sweep over every face in order, then again round each corner that moved.
         let mut pending: Vec<[usize; 3]> = Vec::new();
-        let look = |grid: &mut Self, [i, j, k]: [usize; 3], pending: &mut Vec<[usize; 3]>| {
+        let look = |values: &mut [f64], [i, j, k]: [usize; 3], pending: &mut Vec<[usize; 3]>| {
             for face in faces_at(i, j, k).into_iter().flatten() {
-                let Some(([ti, tj, tk], s)) = to_move(grid, face) else { continue };
-                grid.values[s] = -1e-9 * grid.values[s] - f64::MIN_POSITIVE;
+                let Some(([ti, tj, tk], s)) = to_move(values, face) else { continue };
+                values[s] = -1e-9 * values[s] - f64::MIN_POSITIVE;
                 // Every face with this corner has its lowest corner within one step below it.
                 for dk in 0..=tk.min(1) {
                     for dj in 0..=tj.min(1) {
@@ -360,21 +363,11 @@ impl SparseGrid {
                 }
             }
         };
-        for k in 0..nz {
-            for j in 0..ny {
-                for bi in 0..self.bricks[0] {
-                    if self.table[self.brick_of(bi * BRICK, j, k)] == NONE {
-                        continue;
-                    }
-                    for i in bi * BRICK..((bi + 1) * BRICK).min(nx) {
-                        look(self, [i, j, k], &mut pending);
-                    }
-                }
-            }
-        }
+        grid.each_stored_node(|i, j, k| look(&mut values, [i, j, k], &mut pending));
         while let Some(anchor) = pending.pop() {
-            look(self, anchor, &mut pending);
+            look(&mut values, anchor, &mut pending);
         }
+        self.values = values;
     }
 }
 
