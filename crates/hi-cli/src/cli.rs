@@ -270,10 +270,12 @@ pub(crate) struct FitArgs {
     #[arg(long, value_name = "T", allow_negative_numbers = true, value_parser = parse_finite)]
     pub(crate) tolerance: Option<f64>,
     /// Fit every part that has holes as a closed surface, its holes capped [default: a part is
-    /// an open sheet when the cap of its widest hole would span a quarter of its area].
+    /// an open sheet when it has no handle and the cap of its widest hole would span a quarter
+    /// of its area].
     #[arg(long, conflicts_with = "open")]
     pub(crate) closed: bool,
-    /// Fit every part that has a boundary as an open sheet (a disc over the mirrored square).
+    /// Fit every part that has a boundary as an open sheet (a disc over the mirrored square,
+    /// its handles cut).
     #[arg(long)]
     pub(crate) open: bool,
     /// Also write the summary as JSON to this file.

@@ -110,9 +110,10 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   bridged; a cloud larger than its images can hold is first summarised on a grid); method_reason
   says why. Each part goes over the domain its topology asks for: a closed surface of genus 0
   over the sphere (holes capped by a thin plate that continues the surface), genus 1 over the
-  torus (no cut, no seam), higher genus over the sphere with its handles cut, an open sheet (its
-  widest rim would need a cap of a quarter of its area) over the mirrored square as an open
-  surface; --closed caps every part, --open leaves every part with a rim open. radial is the
+  torus (no cut, no seam), higher genus over the sphere with its handles cut, an open sheet (no
+  handle, and its widest rim would need a cap of a quarter of its area) over the mirrored square
+  as an open surface; --closed caps every part, --open leaves every part with a rim open (its
+  handles cut). radial is the
   thesis's algorithm 2 (rays from the centre, the whole scan as one surface). non_star_fraction
   counts the rays from the centre that met the scan more than once; above 5% a warning, when the
   surface follows the outermost shell the rays met. The image size follows the point count

@@ -8,7 +8,7 @@ use std::collections::HashMap;
 use std::f64::consts::TAU;
 
 use glam::DVec3;
-use hi_scan::repair::{Closing, close_part, mesh_parts, part_topology};
+use hi_scan::repair::{Closing, close_disc_or_sphere, close_part, mesh_parts, part_topology};
 
 /// A u × v grid of quads over `at(i, j)`, wrapping in u and/or v, as triangles; vertex (i, j)
 /// is `i * nv + j` (the unwrapped last row or column included).
@@ -135,6 +135,77 @@ fn each_part_becomes_the_surface_asked_for() {
     assert_eq!(disc.filled.iter().filter(|&&f| f).count(), disc.triangles.len() - 798);
     let closed = close_part(&parts[2], Closing::Sphere).unwrap();
     assert_eq!((closed.repair.holes, euler(closed.positions.len(), &closed.triangles)), (2, 2));
+}
+
+/// A torus with a hole is a disc once its handle is cut, whatever the hole's size: the loop
+/// cut keeps clear of the boundary, and the band of faces along the boundary joins both sides
+/// of it. (A search that let the boundary's edges break the cycles of faces found no loop once
+/// the hole was a few edges round.)
+#[test]
+fn a_torus_with_a_hole_is_cut_into_a_disc() {
+    for (di, dj) in [(1, 1), (4, 3), (12, 6)] {
+        let (nu, nv) = (48u32, 16u32);
+        let (points, mut triangles) = grid(nu, nv, (true, true), |i, j| {
+            let (a, b) = (TAU * f64::from(i) / f64::from(nu), TAU * f64::from(j) / f64::from(nv));
+            DVec3::new(
+                (1.0 + 0.3 * b.cos()) * a.cos(),
+                (1.0 + 0.3 * b.cos()) * a.sin(),
+                0.3 * b.sin(),
+            )
+        });
+        // The quads (i, j) for i < di and j < dj taken out: one boundary loop of 2 (di + dj)
+        // edges.
+        let quad = |t: usize| ((t / 2) as u32 / nv, (t / 2) as u32 % nv);
+        triangles = triangles
+            .iter()
+            .enumerate()
+            .filter(|&(t, _)| {
+                let (i, j) = quad(t);
+                i >= di || j >= dj
+            })
+            .map(|(_, t)| *t)
+            .collect();
+        let parts = mesh_parts(&points, &triangles).unwrap();
+        let topology = part_topology(&parts.parts[0]);
+        assert_eq!((topology.genus, topology.loops.len()), (1, 1));
+        let disc = close_part(&parts.parts[0], Closing::Disc).unwrap();
+        assert_eq!(euler(disc.positions.len(), &disc.triangles), 1, "hole {di} × {dj}");
+        assert_eq!((disc.repair.handles_cut, disc.repair.holes), (1, 0), "hole {di} × {dj}");
+        // The same through the disc-else-sphere closing, which keeps the disc.
+        let (again, failed) = close_disc_or_sphere(&parts.parts[0], 32).unwrap();
+        assert!(failed.is_none(), "{failed:?}");
+        assert_eq!(again.triangles, disc.triangles);
+    }
+}
+
+/// A disc that keeps a handle no loop clear of its boundary cuts goes on as a sphere from its
+/// cuts: a torus whose tube is 3 edges round, with a hole that takes in a vertex of every ring
+/// of the tube and of every loop along it (quads (i, 0) for i ≤ 12, then (i, 1) for i ≥ 12).
+#[test]
+fn a_disc_that_keeps_a_handle_is_closed_as_a_sphere() {
+    let (nu, nv) = (24u32, 3u32);
+    let (points, triangles) = grid(nu, nv, (true, true), |i, j| {
+        let (a, b) = (TAU * f64::from(i) / f64::from(nu), TAU * f64::from(j) / f64::from(nv));
+        DVec3::new((1.0 + 0.3 * b.cos()) * a.cos(), (1.0 + 0.3 * b.cos()) * a.sin(), 0.3 * b.sin())
+    });
+    let hole = |i: u32, j: u32| (j == 0 && i <= 12) || (j == 1 && (12..nu - 1).contains(&i));
+    let triangles: Vec<[u32; 3]> = triangles
+        .iter()
+        .enumerate()
+        .filter(|&(t, _)| !hole((t / 2) as u32 / nv, (t / 2) as u32 % nv))
+        .map(|(_, t)| *t)
+        .collect();
+    let parts = mesh_parts(&points, &triangles).unwrap();
+    let topology = part_topology(&parts.parts[0]);
+    assert_eq!((topology.genus, topology.loops.len()), (1, 1));
+    let err = close_part(&parts.parts[0], Closing::Disc).unwrap_err().to_string();
+    assert!(err.contains("genus 1"), "{err}");
+    let (sphere, failed) = close_disc_or_sphere(&parts.parts[0], 32).unwrap();
+    assert_eq!(failed.map(|e| e.to_string()), Some(err));
+    // Closed, genus 0: the hole capped and the handle cut.
+    assert_eq!(euler(sphere.positions.len(), &sphere.triangles), 2);
+    assert_eq!((sphere.repair.holes, sphere.repair.handles_cut), (1, 1));
+    assert!(sphere.volume() > 0.0);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //!
 //! | the part | its surface | its domain |
 //! |---|---|---|
-//! | an open sheet: a boundary loop whose cap would span at least [`SHEET_SPAN`] of the part's area (or any boundary, with [`Boundary::Open`]) | a disc, the other holes closed, handles cut | [`Domain::Sheet`] |
+//! | an open sheet: genus 0, and a boundary loop whose cap would span at least [`SHEET_SPAN`] of the part's area (or any boundary, with [`Boundary::Open`]) | a disc, the other holes closed (and with [`Boundary::Open`], handles cut) | [`Domain::Sheet`] |
 //! | closed (holes closed) of genus 1 | the torus, no cut | [`Domain::Torus`] |
 //! | closed (holes closed) of any other genus | a sphere, handles cut | [`Domain::Sphere`] |
 //!
@@ -15,8 +15,8 @@
 
 use glam::DVec3;
 use hi_scan::repair::{
-    ClosedMesh, Closing, MeshPart, MeshParts, Topology, close_part_cutting, part_topology,
-    shortest_handle,
+    ClosedMesh, Closing, MeshPart, MeshParts, Topology, close_disc_or_sphere, close_part_cutting,
+    part_topology, shortest_handle,
 };
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
@@ -71,8 +71,10 @@ fn is_tunnel(closed: &ClosedMesh, area: f64) -> bool {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Boundary {
-    /// A part whose widest boundary loop spans at least [`SHEET_SPAN`] of its area is an open
-    /// sheet; every other part is closed.
+    /// A part of genus 0 whose widest boundary loop spans at least [`SHEET_SPAN`] of its area
+    /// is an open sheet; every other part is closed. (A part with handles is closed: on an open
+    /// scan, a handle is far more often a tunnel of a point set's zero set, or a cup's handle
+    /// whose cut the square's map squeezes, than a sheet's own.)
     #[default]
     Auto,
     /// Every part is closed, its holes capped.
@@ -127,7 +129,7 @@ fn choices(
     let widest =
         topology.loops.first().map_or(0.0, |l| l.span / topology.area.max(f64::MIN_POSITIVE));
     let open = match boundary {
-        Boundary::Auto => widest >= SHEET_SPAN,
+        Boundary::Auto => widest >= SHEET_SPAN && topology.genus == 0,
         Boundary::Closed => false,
         Boundary::Open => !topology.loops.is_empty(),
     };
@@ -197,15 +199,30 @@ pub(crate) fn plan(
             }
             let topology = part_topology(part);
             let mut last = String::new();
-            for (closing, domain, why) in choices(&topology, boundary, layout) {
-                match close_part_cutting(part, closing, max_handles) {
-                    Ok(closed) if closing == Closing::Torus && is_tunnel(&closed, part.area) => {
+            let choices = choices(&topology, boundary, layout);
+            let sphere = choices.last().map(|c| (c.1, c.2.clone()));
+            for (closing, domain, why) in choices {
+                // A disc that keeps a handle goes on as a sphere from its cuts (but for genus
+                // 1, whose torus comes first).
+                let closed = if closing == Closing::Disc && topology.genus != 1 {
+                    close_disc_or_sphere(part, max_handles).map(|(closed, failed)| match failed {
+                        None => (closed, domain, why),
+                        Some(e) => {
+                            let (domain, why) = sphere.clone().unwrap_or((domain, why));
+                            (closed, domain, format!("{why} (not a {}: {e})", Domain::Sheet.name()))
+                        }
+                    })
+                } else {
+                    close_part_cutting(part, closing, max_handles).map(|c| (c, domain, why))
+                };
+                match closed {
+                    Ok((closed, ..)) if closing == Closing::Torus && is_tunnel(&closed, part.area) => {
                         last = format!(
                             "its handle's shortest loop is under {TORUS_MIN_EDGES} edges or {:.0} % of the square root of its area: two sheets that nearly touch, not a ring",
                             100.0 * TORUS_MIN_LOOP
                         );
                     }
-                    Ok(closed) => {
+                    Ok((closed, domain, why)) => {
                         let why = if last.is_empty() { why } else { format!("{why} ({last})") };
                         return Ok(PlannedPart {
                             name,

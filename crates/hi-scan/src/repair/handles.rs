@@ -40,7 +40,7 @@ pub fn shortest_handle(mesh: &ClosedMesh) -> Option<f64> {
     HANDLE_BLOCKS
         .iter()
         .chain(&[f64::INFINITY])
-        .flat_map(|&side| handle_loops(&mesh.triangles, &mesh.positions, side))
+        .flat_map(|&side| handle_loops(&mesh.triangles, &mesh.positions, &[], side))
         .map(|(length, _)| length)
         .min_by(f64::total_cmp)
 }
@@ -84,6 +84,11 @@ pub(super) fn cut_handles(
         })
         .collect();
     let open = kept_open.iter().map(Vec::len).sum::<usize>() as i64;
+    // The vertices of the boundary kept open (a disc's): no loop may pass through them.
+    let mut on_boundary = vec![false; positions.len()];
+    for &v in kept_open.iter().flatten() {
+        on_boundary[v as usize] = true;
+    }
     while repair.handles_cut < max_handles {
         let chi = euler_characteristic(positions.len(), faces.len(), open);
         if chi >= chi_wanted {
@@ -95,8 +100,10 @@ pub(super) fn cut_handles(
         // The sizes side by side (the largest blocks, one of them the whole mesh, are each one
         // thread's work), their loops in the sizes' order.
         let sides: Vec<f64> = HANDLE_BLOCKS.iter().copied().chain([f64::INFINITY]).collect();
-        let mut found: Vec<(f64, Vec<u32>)> =
-            sides.par_iter().flat_map_iter(|&side| handle_loops(faces, positions, side)).collect();
+        let mut found: Vec<(f64, Vec<u32>)> = sides
+            .par_iter()
+            .flat_map_iter(|&side| handle_loops(faces, positions, &on_boundary, side))
+            .collect();
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let wanted = usize::try_from((chi_wanted - chi) / 2)
             .unwrap_or(0)
@@ -232,10 +239,17 @@ fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
     half.binary_search_by_key(&key, |&(k, _)| k).ok().map(|i| half[i].1 as usize / 3)
 }
 
-/// The shortest non-separating loop of a closed mesh found within each block of `blocks` mean
-/// edge lengths (see the module documentation; infinite for the whole mesh), on both grids of
-/// blocks: each loop's length and vertices in order; none when no block holds one.
-fn handle_loops(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Vec<(f64, Vec<u32>)> {
+/// The shortest non-separating loop of a mesh found within each block of `blocks` mean edge
+/// lengths (see the module documentation; infinite for the whole mesh), on both grids of
+/// blocks: each loop's length and vertices in order; none when no block holds one. The mesh is
+/// closed but for at most one boundary loop, whose vertices `on_boundary` marks (all `false`, or
+/// shorter than the vertices, for none); no loop passes through them.
+fn handle_loops(
+    faces: &[[u32; 3]],
+    positions: &[DVec3],
+    on_boundary: &[bool],
+    blocks: f64,
+) -> Vec<(f64, Vec<u32>)> {
     let at = |k: u32| positions[k as usize];
     let mean_edge = faces
         .iter()
@@ -271,9 +285,9 @@ fn handle_loops(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Vec<(f6
         let blocks: Vec<&[([i64; 3], u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
         let found: Vec<(f64, Vec<u32>)> = blocks
             .par_iter()
-            .filter_map(|block| {
+            .flat_map_iter(|block| {
                 let block: Vec<u32> = block.iter().map(|&(_, f)| f).collect();
-                block_loop(faces, positions, &block)
+                block_loop(faces, positions, on_boundary, &block)
             })
             .collect();
         all.extend(found);
@@ -281,9 +295,20 @@ fn handle_loops(faces: &[[u32; 3]], positions: &[DVec3], blocks: f64) -> Vec<(f6
     all
 }
 
-/// The shortest loop found in the faces `block` of a closed mesh that does not separate them:
-/// its length and vertices. A few roots are tried ([`HANDLE_ROOTS`]).
-fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<(f64, Vec<u32>)> {
+/// The loops found in the faces `block` of a mesh that do not separate them (each alone): their
+/// lengths and vertices, shortest first. They are the shorter half of the greedy system through
+/// the root whose shortest loop is the shortest of a few roots tried ([`HANDLE_ROOTS`]): the
+/// system has two loops per handle (about it and along it), of which one is cut, and cutting
+/// the loops of several handles found in one search takes fewer searches than one at a time. The mesh is closed but for
+/// at most one boundary loop (the vertices `on_boundary` marks): the loop avoids its vertices,
+/// and the faces about it count as joined, as the band of faces along the whole loop joins
+/// them (so a loop whose sides both reach the boundary does not separate the mesh).
+pub(super) fn block_loop(
+    faces: &[[u32; 3]],
+    positions: &[DVec3],
+    on_boundary: &[bool],
+    block: &[u32],
+) -> Vec<(f64, Vec<u32>)> {
     // Local vertices and undirected edges of the block, with the faces on each.
     let mut local: rustc_hash::FxHashMap<u32, u32> = rustc_hash::FxHashMap::default();
     let mut verts: Vec<u32> = Vec::new();
@@ -294,8 +319,14 @@ fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<
         })
     };
     let mut edges: Vec<(u64, u32)> = Vec::with_capacity(3 * block.len());
+    let boundary = |v: u32| on_boundary.get(v as usize).copied().unwrap_or(false);
+    let mut band: Vec<u32> = Vec::new();
     for (i, &f) in block.iter().enumerate() {
-        let t = faces[f as usize].map(|v| id(v, &mut verts));
+        let t = faces[f as usize];
+        if t.iter().any(|&v| boundary(v)) {
+            band.push(u32::try_from(i).unwrap_or(u32::MAX));
+        }
+        let t = t.map(|v| id(v, &mut verts));
         for k in 0..3 {
             edges.push((edge_key(t[k], t[(k + 1) % 3]), u32::try_from(i).unwrap_or(u32::MAX)));
         }
@@ -312,37 +343,60 @@ fn block_loop(faces: &[[u32; 3]], positions: &[DVec3], block: &[u32]) -> Option<
     let adjacency = Adjacency::new(n, &list, |a, b| {
         positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize])
     });
-    let mut best: Option<(f64, Vec<u32>)> = None;
-    let mut root = 0u32;
+    let excluded: Vec<bool> = verts.iter().map(|&v| boundary(v)).collect();
+    let mut best: Vec<(f64, Vec<u32>)> = Vec::new();
+    let Some(mut root) = excluded.iter().position(|&e| !e).and_then(|r| u32::try_from(r).ok())
+    else {
+        return best;
+    };
+    let graph = BlockGraph { adjacency: &adjacency, edges: &list, faces: block.len(), band: &band };
     for _ in 0..HANDLE_ROOTS {
-        let Some((length, lp)) = loop_through(root, &adjacency, &list, block.len()) else {
+        let loops = loop_through(root, &graph, &excluded);
+        let Some((length, lp)) = loops.first() else {
             break;
         };
-        let improved = best.as_ref().is_none_or(|(b, _)| length < *b - 1e-12 * b.abs());
+        let improved = best.first().is_none_or(|(b, _)| *length < *b - 1e-12 * b.abs());
         if improved {
             // Next, a root across the loop from this one.
             root = lp[lp.len() / 2];
-            best = Some((length, lp));
+            best = loops;
         } else {
             break;
         }
     }
-    best.map(|(length, lp)| (length, lp.iter().map(|&v| verts[v as usize]).collect()))
+    // Two loops per handle; one of each pair is cut: the shorter half.
+    let half = best.len().div_ceil(2);
+    best.into_iter()
+        .take(half)
+        .map(|(length, lp)| (length, lp.iter().map(|&v| verts[v as usize]).collect()))
+        .collect()
 }
 
-/// The shortest non-separating loop through the shortest-path tree from `root` (Erickson and
-/// Whittlesey's greedy step): Dijkstra from the root, then the faces joined across the
-/// non-tree edges, longest loop first; the shortest edge whose faces are already joined closes
-/// the loop returned (length and local vertices, from one end of the edge up the tree and down
-/// to the other). `None` when every loop of the tree separates the faces.
-fn loop_through(
-    root: u32,
-    adjacency: &Adjacency,
-    edges: &[(u32, u32, u32, Option<u32>)],
-    n_faces: usize,
-) -> Option<(f64, Vec<u32>)> {
+/// A block of faces as [`loop_through`] searches it.
+struct BlockGraph<'a> {
+    /// Its vertices' edges.
+    adjacency: &'a Adjacency,
+    /// Its edges (a, b, face, the other face or `None` on the block's border).
+    edges: &'a [(u32, u32, u32, Option<u32>)],
+    /// Its number of faces.
+    faces: usize,
+    /// Its faces with a vertex on the mesh's boundary, joined along it.
+    band: &'a [u32],
+}
+
+/// The greedy system of non-separating loops through the shortest-path tree from `root`
+/// (Erickson and Whittlesey 2005): Dijkstra from the root, then the faces joined across the
+/// non-tree edges (the faces of the band about the boundary joined from the start), longest
+/// loop first; each edge whose faces are already joined closes a loop that does not separate
+/// them, the shortest such loop first and each next one the shortest that does not separate
+/// them together with those before it. The loops are returned from one end of the edge up the
+/// tree to the ends' lowest common ancestor and down to the other end, with their lengths,
+/// shortest first. The `excluded` vertices (the boundary's) are never reached. None when every
+/// loop of the tree separates the faces.
+fn loop_through(root: u32, graph: &BlockGraph<'_>, excluded: &[bool]) -> Vec<(f64, Vec<u32>)> {
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
+    let (adjacency, edges, n_faces) = (graph.adjacency, graph.edges, graph.faces);
     let n = adjacency.len();
     let mut dist = vec![f64::INFINITY; n];
     let mut parent = vec![u32::MAX; n];
@@ -354,6 +408,9 @@ fn loop_through(
             continue;
         }
         for &(w, len) in adjacency.of(v) {
+            if excluded[w as usize] {
+                continue;
+            }
             let nd = d + len;
             if nd < dist[w as usize] {
                 dist[w as usize] = nd;
@@ -385,19 +442,24 @@ fn loop_through(
         }
         x
     }
-    let mut shortest: Option<(f64, u32, u32)> = None;
+    if let Some((&first, rest)) = graph.band.split_first() {
+        for &f in rest {
+            let (rf, r0) = (find(&mut parent_face, f), find(&mut parent_face, first));
+            parent_face[rf as usize] = r0;
+        }
+    }
+    // The edges that close a cycle of faces: their loops do not separate them (the greedy
+    // system of loops through the root), shortest first.
+    let mut closing: Vec<(f64, u32, u32)> = Vec::new();
     for &(length, a, b, f, g) in &candidates {
         let (rf, rg) = (find(&mut parent_face, f), find(&mut parent_face, g));
         if rf == rg {
-            // Closes a cycle of faces: the loop of a, b does not separate them.
-            if shortest.is_none_or(|s| length < s.0) {
-                shortest = Some((length, a, b));
-            }
+            closing.push((length, a, b));
         } else {
             parent_face[rf as usize] = rg;
         }
     }
-    let (length, a, b) = shortest?;
+    closing.reverse();
     // Up from a and from b to their lowest common ancestor.
     let up = |mut v: u32| {
         let mut path = vec![v];
@@ -407,17 +469,27 @@ fn loop_through(
         }
         path
     };
-    let (pa, pb) = (up(a), up(b));
-    let mut common = 0;
-    while common < pa.len().min(pb.len()) && pa[pa.len() - 1 - common] == pb[pb.len() - 1 - common]
-    {
-        common += 1;
-    }
-    // pa[..=pa.len() − common] runs a → ancestor; pb the same for b; the loop is
-    // a → ancestor → b → a.
-    let mut lp: Vec<u32> = pa[..=pa.len() - common].to_vec();
-    lp.extend(pb[..pb.len() - common].iter().rev());
-    (lp.len() >= 3).then_some((length, lp))
+    let mut loops: Vec<(f64, Vec<u32>)> = closing
+        .into_iter()
+        .filter_map(|(length, a, b)| {
+            let (pa, pb) = (up(a), up(b));
+            let mut common = 0;
+            while common < pa.len().min(pb.len())
+                && pa[pa.len() - 1 - common] == pb[pb.len() - 1 - common]
+            {
+                common += 1;
+            }
+            // pa[..=pa.len() − common] runs a → ancestor; pb the same for b; the loop is
+            // a → ancestor → b → a, shorter than the loop through the root by twice the
+            // ancestor's distance from it.
+            let ancestor = pa[pa.len() - common];
+            let mut lp: Vec<u32> = pa[..=pa.len() - common].to_vec();
+            lp.extend(pb[..pb.len() - common].iter().rev());
+            (lp.len() >= 3).then_some((length - 2.0 * dist[ancestor as usize], lp))
+        })
+        .collect();
+    loops.sort_by(|x, y| x.0.total_cmp(&y.0));
+    loops
 }
 
 /// The edges of a block's vertices with their lengths, each vertex's in one slice (in the

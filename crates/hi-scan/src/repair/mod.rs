@@ -337,6 +337,50 @@ pub fn close_part_cutting(
     closing: Closing,
     max_handles: usize,
 ) -> Result<ClosedMesh, Error> {
+    close(part, closing, max_handles, false).map(|(closed, _)| closed)
+}
+
+/// [`close_part_cutting`] as a disc ([`Closing::Disc`]), or, should the disc keep a handle that
+/// no loop clear of its boundary cuts, as a sphere: the disc's boundary capped and the cutting
+/// carried on from the disc's cuts (not begun again), up to `max_handles` in all. The disc's
+/// failure is returned with the sphere (`None` with the disc).
+///
+/// # Errors
+///
+/// As [`close_part_cutting`]'s for a disc, and for the sphere should it fail too.
+///
+/// # Examples
+///
+/// ```
+/// use glam::DVec3;
+/// use hi_scan::repair::{close_disc_or_sphere, mesh_parts};
+///
+/// // A square sheet of 8 × 8 quads: a disc as it is, with no cut.
+/// let points: Vec<DVec3> = (0..81).map(|k| DVec3::new(f64::from(k % 9), f64::from(k / 9), 0.0)).collect();
+/// let id = |i: u32, j: u32| j * 9 + i;
+/// let triangles: Vec<[u32; 3]> = (0..8)
+///     .flat_map(|i| (0..8).flat_map(move |j| [[id(i, j), id(i + 1, j), id(i + 1, j + 1)], [id(i, j), id(i + 1, j + 1), id(i, j + 1)]]))
+///     .collect();
+/// let part = &mesh_parts(&points, &triangles).unwrap().parts[0];
+/// let (disc, failed) = close_disc_or_sphere(part, 32).unwrap();
+/// assert!(failed.is_none());
+/// assert_eq!((disc.triangles.len(), disc.repair.handles_cut), (128, 0));
+/// ```
+pub fn close_disc_or_sphere(
+    part: &MeshPart,
+    max_handles: usize,
+) -> Result<(ClosedMesh, Option<Error>), Error> {
+    close(part, Closing::Disc, max_handles, true)
+}
+
+/// [`close_part_cutting`]; with `else_sphere`, a disc that keeps a handle closed on as a
+/// sphere ([`close_disc_or_sphere`]), with the disc's failure.
+fn close(
+    part: &MeshPart,
+    closing: Closing,
+    max_handles: usize,
+    else_sphere: bool,
+) -> Result<(ClosedMesh, Option<Error>), Error> {
     if part.one_sided {
         return Err(Error::Topology {
             what: "the part cannot be oriented (it is one-sided)".to_owned(),
@@ -415,8 +459,38 @@ pub fn close_part_cutting(
     // 8. The Euler characteristic (a disc's one boundary loop counts one edge per edge).
     let e = (3 * kept.len() as i64 + boundary_edges) / 2;
     let chi = positions.len() as i64 - e + kept.len() as i64;
+    let mut closing = closing;
+    let mut failed = None;
     if chi != chi_wanted {
-        return Err(genus_error(closing, chi, i64::from(open.is_some())));
+        let error = genus_error(closing, chi, i64::from(open.is_some()));
+        // A disc that keeps a handle: its boundary capped, and cut on as a sphere.
+        let Some(lp) = open.filter(|_| else_sphere) else {
+            return Err(error);
+        };
+        fill_holes(
+            std::slice::from_ref(&lp),
+            &mut kept,
+            &mut positions,
+            &mut scan_vertex,
+            &mut filled,
+        );
+        repair.holes += 1;
+        repair.hole_edges += lp.len();
+        closing = Closing::Sphere;
+        cut_handles(
+            &mut kept,
+            &mut positions,
+            &mut scan_vertex,
+            &mut filled,
+            2,
+            max_handles,
+            &mut repair,
+        );
+        let chi = euler_characteristic(positions.len(), kept.len(), 0);
+        if chi != 2 {
+            return Err(genus_error(closing, chi, 0));
+        }
+        failed = Some(error);
     }
 
     // 9. Outward, for a closed surface.
@@ -426,7 +500,7 @@ pub fn close_part_cutting(
         }
         repair.flipped = true;
     }
-    Ok(ClosedMesh { positions, triangles: kept, scan_vertex, filled, repair })
+    Ok((ClosedMesh { positions, triangles: kept, scan_vertex, filled, repair }, failed))
 }
 
 /// The error of [`close_part`] for a closed surface of Euler characteristic `chi` with `open`

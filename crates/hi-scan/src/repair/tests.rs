@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-use super::handles::{faces_connected, independent_loops};
+use super::handles::{block_loop, faces_connected, independent_loops};
 use super::*;
 
 /// A torus of `major × minor` quads (two triangles each), radii `big` and `small`.
@@ -162,6 +162,40 @@ fn three_handles_are_cut_and_the_surface_stays_whole() {
     // The caps of each cut lie on each other: the plate's volume is kept (to 5 %: the
     // caps are faired to the plate's sides about them and bulge a little).
     assert!((closed.volume() - 18.0).abs() < 0.9, "{}", closed.volume());
+}
+
+/// A closed surface of genus g has E − (V − 1) − (F − 1) = 2g edges in neither a spanning tree
+/// of its vertices nor one of its faces across the other edges: the greedy system of loops
+/// through a root has 2g loops, and a block's search gives its shorter half, g loops, shortest
+/// first, none of which alone separates the surface.
+#[test]
+fn the_greedy_system_through_a_root_has_two_loops_per_handle() {
+    let plate = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
+    for ((p, t), genus) in [(torus(24, 8, 1.0, 0.3), 1), (plate, 3)] {
+        let all: Vec<u32> = (0..t.len() as u32).collect();
+        let loops = block_loop(&t, &p, &[], &all);
+        assert_eq!(loops.len(), genus);
+        assert!(loops.windows(2).all(|w| w[0].0 <= w[1].0));
+        let mut sides: Vec<(u64, u32)> = t
+            .iter()
+            .enumerate()
+            .flat_map(|(f, t)| (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f as u32)))
+            .collect();
+        sides.sort_unstable();
+        let pairs: Vec<(u64, u32, u32)> =
+            sides.chunk_by(|a, b| a.0 == b.0).map(|w| (w[0].0, w[0].1, w[1].1)).collect();
+        for (length, lp) in &loops {
+            let m = lp.len();
+            let mut barrier: Vec<u64> = (0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])).collect();
+            barrier.sort_unstable();
+            // A loop of the mesh's edges, as long as said.
+            assert!(barrier.iter().all(|e| pairs.binary_search_by_key(e, |x| x.0).is_ok()));
+            let sum: f64 =
+                (0..m).map(|i| p[lp[i] as usize].distance(p[lp[(i + 1) % m] as usize])).sum();
+            assert!((sum - length).abs() < 1e-12 * length);
+            assert!(faces_connected(t.len(), &pairs, &barrier));
+        }
+    }
 }
 
 #[test]
