@@ -113,9 +113,13 @@ pub(super) fn cut_handles(
         if loops.is_empty() {
             return;
         }
+        // The loops share no vertex: each is walked round on the faces as they were before
+        // any of them was cut (a cut changes only its own loop's corners).
+        let before = faces.clone();
+        let half = directed_edges(&before);
         let mut cut = 0;
         for lp in &loops {
-            if !cut_along(lp, faces, positions, scan_vertex) {
+            if !cut_along(lp, (&before, &half), faces, positions, scan_vertex) {
                 break;
             }
             cut += 1;
@@ -560,14 +564,17 @@ impl Ord for OrderedDistance {
 
 /// Cuts a closed, consistently oriented mesh along the simple loop `lp`: each vertex of the
 /// loop gets a copy, which the triangles on the loop's right side take, so the loop becomes two
-/// boundary loops. `false` (and nothing changed) if a fan around a loop vertex does not close.
+/// boundary loops. The fans about the loop's vertices are walked on `before` (the faces before
+/// this round's cuts, with their half-edges `half`, [`directed_edges`]): the other loops cut
+/// since share no vertex with this one, and changed only their own corners. `false` (and
+/// nothing changed) if a fan around a loop vertex does not close.
 fn cut_along(
     lp: &[u32],
+    (before, half): (&[[u32; 3]], &[(u64, u32)]),
     faces: &mut [[u32; 3]],
     positions: &mut Vec<DVec3>,
     scan_vertex: &mut Vec<u32>,
 ) -> bool {
-    let half = directed_edges(faces);
     let m = lp.len();
     let mut changes: Vec<(usize, usize)> = Vec::new(); // (face, corner) taking the copy of lp[i]
     let mut owners: Vec<usize> = Vec::new(); // loop index of each change
@@ -576,10 +583,10 @@ fn cut_along(
         // Around v from the face right of v → next to the face right of prev → v: from the
         // face with half-edge next → v, each next face holds the half-edge (outgoing
         // neighbour) → v, until the face with the half-edge v → prev.
-        let Some(mut f) = face_of(&half, next, v) else { return false };
+        let Some(mut f) = face_of(half, next, v) else { return false };
         let mut steps = 0;
         loop {
-            let t = faces[f];
+            let t = before[f];
             let Some(c) = t.iter().position(|&x| x == v) else { return false };
             changes.push((f, c));
             owners.push(i);
@@ -588,7 +595,7 @@ fn cut_along(
                 break;
             }
             steps += 1;
-            let Some(g) = face_of(&half, out, v).filter(|_| steps < 4096) else { return false };
+            let Some(g) = face_of(half, out, v).filter(|_| steps < 4096) else { return false };
             f = g;
         }
     }
