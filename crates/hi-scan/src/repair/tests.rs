@@ -132,6 +132,17 @@ fn voxel_surface(
     (p, t)
 }
 
+/// The faces of a closed mesh on either side of each edge, (edge, face, face), by edge.
+fn face_pairs(triangles: &[[u32; 3]]) -> Vec<(u64, u32, u32)> {
+    let mut sides: Vec<(u64, u32)> = triangles
+        .iter()
+        .enumerate()
+        .flat_map(|(f, t)| (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f as u32)))
+        .collect();
+    sides.sort_unstable();
+    sides.chunk_by(|a, b| a.0 == b.0).map(|w| (w[0].0, w[0].1, w[1].1)).collect()
+}
+
 #[test]
 fn three_handles_are_cut_and_the_surface_stays_whole() {
     // A plate of 7 × 3 × 1 voxels with three square holes through it: genus 3, volume 18.
@@ -150,15 +161,7 @@ fn three_handles_are_cut_and_the_surface_stays_whole() {
     assert!(closed_and_oriented(&closed.triangles));
     assert_eq!(chi(closed.positions.len(), &closed.triangles), 2);
     // One piece: its faces joined across their edges.
-    let mut sides: Vec<(u64, u32)> = closed
-        .triangles
-        .iter()
-        .enumerate()
-        .flat_map(|(f, t)| (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f as u32)))
-        .collect();
-    sides.sort_unstable();
-    let pairs: Vec<(u64, u32, u32)> =
-        sides.chunk_by(|a, b| a.0 == b.0).map(|w| (w[0].0, w[0].1, w[1].1)).collect();
+    let pairs = face_pairs(&closed.triangles);
     assert!(faces_connected(closed.triangles.len(), &pairs, &[]));
     // The caps of each cut lie on each other: the plate's volume is kept (to 5 %: the
     // caps are faired to the plate's sides about them and bulge a little).
@@ -177,14 +180,7 @@ fn the_greedy_system_through_a_root_has_two_loops_per_handle() {
         let loops = block_loop(&t, &p, &[], &all);
         assert_eq!(loops.len(), genus);
         assert!(loops.windows(2).all(|w| w[0].0 <= w[1].0));
-        let mut sides: Vec<(u64, u32)> = t
-            .iter()
-            .enumerate()
-            .flat_map(|(f, t)| (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f as u32)))
-            .collect();
-        sides.sort_unstable();
-        let pairs: Vec<(u64, u32, u32)> =
-            sides.chunk_by(|a, b| a.0 == b.0).map(|w| (w[0].0, w[0].1, w[1].1)).collect();
+        let pairs = face_pairs(&t);
         for (length, lp) in &loops {
             let m = lp.len();
             let mut barrier: Vec<u64> = (0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])).collect();
