@@ -243,9 +243,9 @@ fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
     half.binary_search_by_key(&key, |&(k, _)| k).ok().map(|i| half[i].1 as usize / 3)
 }
 
-/// The shortest non-separating loop of a mesh found within each block of `blocks` mean edge
-/// lengths (see the module documentation; infinite for the whole mesh), on both grids of
-/// blocks: each loop's length and vertices in order; none when no block holds one. The mesh is
+/// The non-separating loops of a mesh found within each block of `blocks` mean edge lengths
+/// ([`block_loop`]; infinite for the whole mesh), on both grids of blocks: each loop's length
+/// and vertices in order; none when no block holds one. The mesh is
 /// closed but for at most one boundary loop, whose vertices `on_boundary` marks (all `false`, or
 /// shorter than the vertices, for none); no loop passes through them.
 fn handle_loops(
@@ -303,10 +303,11 @@ fn handle_loops(
 /// lengths and vertices, shortest first. They are the shorter half of the greedy system through
 /// the root whose shortest loop is the shortest of a few roots tried ([`HANDLE_ROOTS`]): the
 /// system has two loops per handle (about it and along it), of which one is cut, and cutting
-/// the loops of several handles found in one search takes fewer searches than one at a time. The mesh is closed but for
-/// at most one boundary loop (the vertices `on_boundary` marks): the loop avoids its vertices,
-/// and the faces about it count as joined, as the band of faces along the whole loop joins
-/// them (so a loop whose sides both reach the boundary does not separate the mesh).
+/// the loops of several handles found in one search takes fewer searches than one at a time.
+/// The mesh is closed but for at most one boundary loop (the vertices `on_boundary` marks): the
+/// loops avoid its vertices, and the faces about it count as joined, as the band of faces along
+/// the whole loop joins them (so a loop whose sides both reach the boundary does not separate
+/// the mesh).
 pub(super) fn block_loop(
     faces: &[[u32; 3]],
     positions: &[DVec3],
@@ -396,7 +397,7 @@ struct BlockGraph<'a> {
 /// them together with those before it. The loops are returned from one end of the edge up the
 /// tree to the ends' lowest common ancestor and down to the other end, with their lengths,
 /// shortest first. The `excluded` vertices (the boundary's) are never reached. None when every
-/// loop of the tree separates the faces.
+/// loop of the tree separates the faces (an empty list).
 fn loop_through(root: u32, graph: &BlockGraph<'_>, excluded: &[bool]) -> Vec<(f64, Vec<u32>)> {
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
