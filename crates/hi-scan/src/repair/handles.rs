@@ -5,6 +5,7 @@
 use glam::DVec3;
 use hi_par::*;
 
+use super::edges::EdgeIndex;
 use super::holes::{boundary_loops, fill_holes};
 use super::{ClosedMesh, Repair, edge_key};
 
@@ -51,6 +52,9 @@ pub const HANDLE_BLOCKS: [f64; 3] = [8.0, 32.0, 128.0];
 
 /// At most this many handles are cut.
 pub const MAX_HANDLES: usize = 32;
+
+/// The highest block index along an axis in [`handle_loops`] (21 bits).
+const BLOCK_INDEX_MAX: u64 = (1 << 21) - 1;
 
 /// Roots tried per block: the first vertex of the block, then a vertex of the best loop so far.
 const HANDLE_ROOTS: usize = 3;
@@ -116,7 +120,7 @@ pub(super) fn cut_handles(
         // The loops share no vertex: each is walked round on the faces as they were before
         // any of them was cut (a cut changes only its own loop's corners).
         let before = faces.clone();
-        let half = directed_edges(&before);
+        let half = EdgeIndex::directed(&before);
         let mut cut = 0;
         for lp in &loops {
             if !cut_along(lp, (&before, &half), faces, positions, scan_vertex) {
@@ -159,19 +163,10 @@ pub(super) fn independent_loops(
     wanted: usize,
 ) -> Vec<Vec<u32>> {
     // Pairs of faces across each edge, keyed by the edge.
-    let mut sides: Vec<(u64, u32)> = faces
-        .iter()
-        .enumerate()
-        .flat_map(|(f, t)| {
-            let f = u32::try_from(f).unwrap_or(u32::MAX);
-            (0..3).map(move |k| (edge_key(t[k], t[(k + 1) % 3]), f))
-        })
-        .collect();
-    sides.par_sort_unstable();
-    let pairs: Vec<(u64, u32, u32)> = sides
-        .chunk_by(|a, b| a.0 == b.0)
-        .filter(|pair| pair.len() == 2)
-        .map(|pair| (pair[0].0, pair[0].1, pair[1].1))
+    let pairs: Vec<(u64, u32, u32)> = EdgeIndex::undirected(faces)
+        .groups()
+        .filter(|(_, _, g)| g.len() == 2)
+        .map(|(a, b, g)| (edge_key(a, b), g[0].1 / 3, g[1].1 / 3))
         .collect();
     let mut used = vec![false; vertices];
     let mut barrier: Vec<u64> = Vec::new();
@@ -223,24 +218,9 @@ pub(super) fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u6
     pieces <= 1
 }
 
-/// The half-edges of `faces` sorted by (from, to): half-edge 3f + k runs from corner k of face
-/// f to corner k + 1.
-pub(super) fn directed_edges(faces: &[[u32; 3]]) -> Vec<(u64, u32)> {
-    let mut half: Vec<(u64, u32)> = Vec::with_capacity(3 * faces.len());
-    for (f, t) in faces.iter().enumerate() {
-        for k in 0..3 {
-            let h = u32::try_from(3 * f + k).unwrap_or(u32::MAX);
-            half.push(((u64::from(t[k]) << 32) | u64::from(t[(k + 1) % 3]), h));
-        }
-    }
-    half.par_sort_unstable();
-    half
-}
-
 /// The face holding the half-edge a → b.
-fn face_of(half: &[(u64, u32)], a: u32, b: u32) -> Option<usize> {
-    let key = (u64::from(a) << 32) | u64::from(b);
-    half.binary_search_by_key(&key, |&(k, _)| k).ok().map(|i| half[i].1 as usize / 3)
+fn face_of(half: &EdgeIndex, a: u32, b: u32) -> Option<usize> {
+    half.find(a, b).map(|h| h as usize / 3)
 }
 
 /// The non-separating loops of a mesh found within each block of `blocks` mean edge lengths
@@ -273,20 +253,29 @@ fn handle_loops(
             // One block either way.
             break;
         }
-        // Faces by block, blocks in a fixed order.
-        let mut keyed: Vec<([i64; 3], u32)> = faces
+        // Faces by block, blocks in a fixed order: a block's indices (from 0, as the
+        // centroids lie above `lo`) packed into 21 bits each, which keeps their order (blocks
+        // beyond 2²¹ along an axis, on no real mesh, share the last).
+        let mut keyed: Vec<(u64, u32)> = faces
             .iter()
             .enumerate()
             .map(|(f, t)| {
                 let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
                 // (One block, 0, for an infinite side.)
-                #[expect(clippy::cast_possible_truncation, reason = "a block index")]
-                let key = ((c - lo) / side + offset).floor().to_array().map(|x| x as i64);
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    reason = "a block index"
+                )]
+                let key =
+                    ((c - lo) / side + offset).floor().to_array().iter().fold(0u64, |key, &x| {
+                        (key << 21) | (x.max(0.0) as u64).min(BLOCK_INDEX_MAX)
+                    });
                 (key, u32::try_from(f).unwrap_or(u32::MAX))
             })
             .collect();
         keyed.par_sort_unstable();
-        let blocks: Vec<&[([i64; 3], u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
+        let blocks: Vec<&[(u64, u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
         let found: Vec<(f64, Vec<u32>)> = blocks
             .par_iter()
             .flat_map_iter(|block| {
@@ -314,36 +303,37 @@ pub(super) fn block_loop(
     on_boundary: &[bool],
     block: &[u32],
 ) -> Vec<(f64, Vec<u32>)> {
-    // Local vertices and undirected edges of the block, with the faces on each.
-    let mut local: rustc_hash::FxHashMap<u32, u32> = rustc_hash::FxHashMap::default();
-    let mut verts: Vec<u32> = Vec::new();
-    let mut id = |v: u32, verts: &mut Vec<u32>| {
-        *local.entry(v).or_insert_with(|| {
-            verts.push(v);
-            u32::try_from(verts.len() - 1).unwrap_or(u32::MAX)
-        })
-    };
-    let mut edges: Vec<(u64, u32)> = Vec::with_capacity(3 * block.len());
+    // Local vertices (in the order the block's faces first reach them), the block's faces on
+    // them, and the faces with a vertex on the boundary.
     let boundary = |v: u32| on_boundary.get(v as usize).copied().unwrap_or(false);
-    let mut band: Vec<u32> = Vec::new();
-    for (i, &f) in block.iter().enumerate() {
-        let t = faces[f as usize];
-        if t.iter().any(|&v| boundary(v)) {
-            band.push(u32::try_from(i).unwrap_or(u32::MAX));
+    let (verts, local_faces) = LOCAL.with_borrow_mut(|local| {
+        if local.len() < positions.len() {
+            local.resize(positions.len(), u32::MAX);
         }
-        let t = t.map(|v| id(v, &mut verts));
-        for k in 0..3 {
-            edges.push((edge_key(t[k], t[(k + 1) % 3]), u32::try_from(i).unwrap_or(u32::MAX)));
+        let mut verts: Vec<u32> = Vec::new();
+        let local_faces: Vec<[u32; 3]> = block
+            .iter()
+            .map(|&f| {
+                faces[f as usize].map(|v| {
+                    let slot = &mut local[v as usize];
+                    if *slot == u32::MAX {
+                        *slot = u32::try_from(verts.len()).unwrap_or(u32::MAX);
+                        verts.push(v);
+                    }
+                    *slot
+                })
+            })
+            .collect();
+        for &v in &verts {
+            local[v as usize] = u32::MAX;
         }
-    }
-    edges.sort_unstable();
-    // (a, b, face, other face or None on the block's border)
-    let mut list: Vec<(u32, u32, u32, Option<u32>)> = Vec::new();
-    for pair in edges.chunk_by(|x, y| x.0 == y.0) {
-        let key = pair[0].0;
-        let (a, b) = ((key >> 32) as u32, key as u32);
-        list.push((a, b, pair[0].1, pair.get(1).map(|x| x.1)));
-    }
+        (verts, local_faces)
+    });
+    let band: Vec<u32> = (0..block.len())
+        .filter(|&i| faces[block[i] as usize].iter().any(|&v| boundary(v)))
+        .map(|i| u32::try_from(i).unwrap_or(u32::MAX))
+        .collect();
+    let list = block_edges(verts.len(), &local_faces);
     let n = verts.len();
     let adjacency = Adjacency::new(n, &list, |a, b| {
         positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize])
@@ -375,6 +365,50 @@ pub(super) fn block_loop(
         .take(half)
         .map(|(length, lp)| (length, lp.iter().map(|&v| verts[v as usize]).collect()))
         .collect()
+}
+
+thread_local! {
+    /// Each vertex's index among the vertices of the block being searched ([`block_loop`]),
+    /// `u32::MAX` for none: one array per thread, cleared after each block.
+    static LOCAL: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The undirected edges of a block's faces `faces` (on `n` local vertices) as
+/// (a, b, face, the other face or `None` on the block's border), a < b, ordered by (a, b), the
+/// faces by their index: the edges bucketed by their lower end, each bucket sorted.
+fn block_edges(n: usize, faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, Option<u32>)> {
+    let ends = |t: &[u32; 3], k: usize| {
+        let (a, b) = (t[k], t[(k + 1) % 3]);
+        (a.min(b) as usize, a.max(b))
+    };
+    let mut start = vec![0usize; n + 1];
+    for t in faces {
+        for k in 0..3 {
+            start[ends(t, k).0 + 1] += 1;
+        }
+    }
+    for a in 1..=n {
+        start[a] += start[a - 1];
+    }
+    let mut next = start.clone();
+    let mut slots = vec![(0u32, 0u32); 3 * faces.len()];
+    for (i, t) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = ends(t, k);
+            slots[next[a]] = (b, u32::try_from(i).unwrap_or(u32::MAX));
+            next[a] += 1;
+        }
+    }
+    let mut list = Vec::with_capacity(slots.len() / 2 + 1);
+    for a in 0..n {
+        let bucket = &mut slots[start[a]..start[a + 1]];
+        bucket.sort_unstable();
+        for pair in bucket.chunk_by(|x, y| x.0 == y.0) {
+            let a = u32::try_from(a).unwrap_or(u32::MAX);
+            list.push((a, pair[0].0, pair[0].1, pair.get(1).map(|x| x.1)));
+        }
+    }
+    list
 }
 
 /// A block of faces as [`loop_through`] searches it.
@@ -566,12 +600,12 @@ impl Ord for OrderedDistance {
 /// Cuts a closed, consistently oriented mesh along the simple loop `lp`: each vertex of the
 /// loop gets a copy, which the triangles on the loop's right side take, so the loop becomes two
 /// boundary loops. The fans about the loop's vertices are walked on `before` (the faces before
-/// this round's cuts, with their half-edges `half`, [`directed_edges`]): the other loops cut
+/// this round's cuts, with their half-edges `half`, [`EdgeIndex::directed`]): the other loops cut
 /// since share no vertex with this one, and changed only their own corners. `false` (and
 /// nothing changed) if a fan around a loop vertex does not close.
 fn cut_along(
     lp: &[u32],
-    (before, half): (&[[u32; 3]], &[(u64, u32)]),
+    (before, half): (&[[u32; 3]], &EdgeIndex),
     faces: &mut [[u32; 3]],
     positions: &mut Vec<DVec3>,
     scan_vertex: &mut Vec<u32>,

@@ -5,7 +5,7 @@
 use glam::DVec3;
 use hi_par::*;
 
-use super::handles::directed_edges;
+use super::edges::EdgeIndex;
 use super::{ADDED_VERTEX, Repair};
 
 /// Splits every vertex whose triangles form several fans (joined through edges at the
@@ -90,15 +90,15 @@ pub(super) fn split_fans(
 /// The boundary loops of `faces` (over `n` vertices, pinched vertices split), each in the order
 /// the triangles run along it: a boundary edge a → b has no b → a.
 pub(super) fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
-    let directed: Vec<u64> = directed_edges(faces).into_iter().map(|(key, _)| key).collect();
-    let has =
-        |a: u32, b: u32| directed.binary_search(&((u64::from(a) << 32) | u64::from(b))).is_ok();
+    let half = EdgeIndex::directed(faces);
     // After the fans are split, each boundary vertex starts exactly one boundary edge.
     let mut next = vec![u32::MAX; n];
-    for &e in &directed {
-        let (a, b) = ((e >> 32) as u32, e as u32);
-        if !has(b, a) {
-            next[a as usize] = b;
+    for (a, next) in next.iter_mut().enumerate() {
+        let a = u32::try_from(a).unwrap_or(u32::MAX);
+        for &(b, _) in half.of(a) {
+            if half.find(b, a).is_none() {
+                *next = b;
+            }
         }
     }
     let mut done = vec![false; n];

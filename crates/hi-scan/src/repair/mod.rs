@@ -50,15 +50,16 @@
 //! Steps 1 to 3 are in `parts`, the fans and holes of steps 5 and 6 in `holes`, and the
 //! handles of step 7 in `handles`.
 
+mod edges;
 mod handles;
 mod holes;
 mod parts;
 
 use glam::DVec3;
-use hi_par::*;
 
 use crate::Error;
-use handles::{cut_handles, directed_edges, euler_characteristic};
+use edges::EdgeIndex;
+use handles::{cut_handles, euler_characteristic};
 use holes::{boundary_loops, fill_holes, split_fans};
 
 pub use handles::{HANDLE_BLOCKS, MAX_HANDLES, shortest_handle};
@@ -243,7 +244,7 @@ pub fn part_topology(part: &MeshPart) -> Topology {
         .map(|lp| loop_measures(lp, &positions))
         .collect();
     loops.sort_by(|a, b| b.span.total_cmp(&a.span));
-    let edges = directed_edges(&faces).len() as i64;
+    let edges = 3 * faces.len() as i64;
     let boundary_edges: i64 = loops.iter().map(|l| l.edges as i64).sum();
     // Every interior edge is two half-edges, a boundary edge one.
     let e = (edges + boundary_edges) / 2;
@@ -581,27 +582,12 @@ pub fn close_mesh(points: &[DVec3], triangles: &[[u32; 3]]) -> Result<ClosedMesh
 /// For each half-edge 3f + k (from corner k to k + 1 of face f), the face across it, if
 /// exactly one other face shares the edge.
 pub(super) fn neighbours(faces: &[[u32; 3]]) -> Vec<Option<u32>> {
-    let mut half: Vec<(u64, u32)> = Vec::with_capacity(3 * faces.len());
-    for (f, t) in faces.iter().enumerate() {
-        for k in 0..3 {
-            let h = u32::try_from(3 * f + k).unwrap_or(u32::MAX);
-            half.push((edge_key(t[k], t[(k + 1) % 3]), h));
-        }
-    }
-    half.par_sort_unstable();
     let mut across = vec![None; 3 * faces.len()];
-    let mut i = 0;
-    while i < half.len() {
-        let mut j = i + 1;
-        while j < half.len() && half[j].0 == half[i].0 {
-            j += 1;
+    for (_, _, g) in EdgeIndex::undirected(faces).groups() {
+        if let [(_, a), (_, b)] = g {
+            across[*a as usize] = Some(b / 3);
+            across[*b as usize] = Some(a / 3);
         }
-        if j - i == 2 {
-            let (a, b) = (half[i].1, half[i + 1].1);
-            across[a as usize] = Some(b / 3);
-            across[b as usize] = Some(a / 3);
-        }
-        i = j;
     }
     across
 }

@@ -5,7 +5,8 @@
 use glam::DVec3;
 use hi_par::*;
 
-use super::{MeshPart, MeshParts, area, edge_key, neighbours};
+use super::edges::EdgeIndex;
+use super::{MeshPart, MeshParts, area, neighbours};
 use crate::{Error, NonFiniteInput};
 
 /// Steps 1 to 3 of the module documentation: the mesh (`points`, `triangles`) with coincident
@@ -101,27 +102,22 @@ fn clean_triangles(triangles: &[[u32; 3]], weld: &[u32]) -> Vec<[u32; 3]> {
     let mut keep: Vec<usize> = seen.into_iter().map(|(_, f)| f).collect();
     keep.sort_unstable();
     // At most two triangles per edge, first come first served: a triangle is dropped if
-    // two earlier (kept) triangles already use one of its edges. Edges are numbered by
-    // sorting, and counted in order.
-    let mut edges: Vec<(u64, u32)> = Vec::with_capacity(3 * keep.len());
-    for (i, &f) in keep.iter().enumerate() {
-        let t = mapped[f];
-        for k in 0..3 {
-            edges.push((edge_key(t[k], t[(k + 1) % 3]), i as u32));
-        }
-    }
-    edges.par_sort_unstable();
+    // two earlier (kept) triangles already use one of its edges. Edges are numbered in the
+    // order of their ends, and counted in order.
+    let kept: Vec<[u32; 3]> = keep.iter().map(|&f| mapped[f]).collect();
     let mut edge_of = vec![[0u32; 3]; keep.len()];
     let mut slot = vec![0u8; keep.len()];
-    let mut id = 0u32;
-    for (j, &(key, i)) in edges.iter().enumerate() {
-        if j > 0 && edges[j - 1].0 != key {
-            id += 1;
+    let mut edges = 0u32;
+    for (id, (_, _, sides)) in EdgeIndex::undirected(&kept).groups().enumerate() {
+        let id = u32::try_from(id).unwrap_or(u32::MAX);
+        for &(_, h) in sides {
+            let i = h as usize / 3;
+            edge_of[i][slot[i] as usize] = id;
+            slot[i] += 1;
         }
-        edge_of[i as usize][slot[i as usize] as usize] = id;
-        slot[i as usize] += 1;
+        edges = id + 1;
     }
-    let mut uses = vec![0u8; id as usize + 1];
+    let mut uses = vec![0u8; edges as usize];
     for (i, &f) in keep.iter().enumerate() {
         if edge_of[i].iter().any(|&e| uses[e as usize] >= 2) {
             continue;
