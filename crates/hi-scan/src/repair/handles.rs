@@ -303,6 +303,18 @@ pub(super) fn block_loop(
     on_boundary: &[bool],
     block: &[u32],
 ) -> Vec<(f64, Vec<u32>)> {
+    block_loop_with(faces, positions, on_boundary, block, true)
+}
+
+/// [`block_loop`], with the search skipped for a block of genus 0 ([`genus_zero`]) if
+/// `shortcut`, as [`block_loop`] does (the tests compare the two).
+pub(super) fn block_loop_with(
+    faces: &[[u32; 3]],
+    positions: &[DVec3],
+    on_boundary: &[bool],
+    block: &[u32],
+    shortcut: bool,
+) -> Vec<(f64, Vec<u32>)> {
     // Local vertices (in the order the block's faces first reach them), the block's faces on
     // them, and the faces with a vertex on the boundary.
     let boundary = |v: u32| on_boundary.get(v as usize).copied().unwrap_or(false);
@@ -335,6 +347,11 @@ pub(super) fn block_loop(
         .collect();
     let list = block_edges(verts.len(), &local_faces);
     let n = verts.len();
+    // Most blocks of the smaller sizes hold no handle, which a count shows at less cost than
+    // a search.
+    if shortcut && band.is_empty() && genus_zero(n, &list, block.len()) {
+        return Vec::new();
+    }
     let adjacency = Adjacency::new(n, &list, |a, b| {
         positions[verts[a as usize] as usize].distance(positions[verts[b as usize] as usize])
     });
@@ -376,7 +393,7 @@ thread_local! {
 /// The undirected edges of a block's faces `faces` (on `n` local vertices) as
 /// (a, b, face, the other face or `None` on the block's border), a < b, ordered by (a, b), the
 /// faces by their index: the edges bucketed by their lower end, each bucket sorted.
-fn block_edges(n: usize, faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, Option<u32>)> {
+pub(super) fn block_edges(n: usize, faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, Option<u32>)> {
     let ends = |t: &[u32; 3], k: usize| {
         let (a, b) = (t[k], t[(k + 1) % 3]);
         (a.min(b) as usize, a.max(b))
@@ -409,6 +426,59 @@ fn block_edges(n: usize, faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, Option<u32>)
         }
     }
     list
+}
+
+/// Whether a block of `faces` faces on `n` vertices with the edges `list` ([`block_edges`]) is
+/// a surface of genus 0 with no pinched vertex, so that no loop of its edges leaves its faces
+/// joined ([`loop_through`] would find none): every edge on at most two of its faces, every
+/// vertex on none or two of its border edges (one fan of faces about it: the mesh about the
+/// block is closed and its fans split), and V − E + F = 2C − b over its C pieces and b border
+/// loops. A simple loop on a surface of genus 0 separates it (Jordan), its two sides lying in
+/// different pieces; a pinched vertex, where the surface touches itself, would let a loop
+/// through it join two border loops without separating the faces.
+pub(super) fn genus_zero(n: usize, list: &[(u32, u32, u32, Option<u32>)], faces: usize) -> bool {
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let sides: usize = list.iter().map(|e| 1 + usize::from(e.3.is_some())).sum();
+    if sides != 3 * faces {
+        return false; // an edge on three faces or more
+    }
+    let mut border = vec![0u8; n];
+    let mut vertex_parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
+    let mut face_parent: Vec<u32> = (0..u32::try_from(faces).unwrap_or(u32::MAX)).collect();
+    let (mut pieces, mut loops) = (faces as i64, 0i64);
+    for &(a, b, f, g) in list {
+        match g {
+            Some(g) => {
+                let (rf, rg) = (find(&mut face_parent, f), find(&mut face_parent, g));
+                if rf != rg {
+                    face_parent[rf as usize] = rg;
+                    pieces -= 1;
+                }
+            }
+            None => {
+                for v in [a, b] {
+                    border[v as usize] = border[v as usize].saturating_add(1);
+                }
+                let (ra, rb) = (find(&mut vertex_parent, a), find(&mut vertex_parent, b));
+                if ra == rb {
+                    loops += 1; // the edge closes a border loop
+                } else {
+                    vertex_parent[ra as usize] = rb;
+                }
+            }
+        }
+    }
+    if border.iter().any(|&count| count != 0 && count != 2) {
+        return false; // a pinched vertex
+    }
+    let chi = n as i64 - list.len() as i64 + faces as i64;
+    chi == 2 * pieces - loops
 }
 
 /// A block of faces as [`loop_through`] searches it.
