@@ -350,6 +350,10 @@ impl SparseGrid {
         // One sweep over every face in order, then again round each corner that moved.
         let mut pending: Vec<[usize; 3]> = Vec::new();
         let look = |values: &mut [f64], [i, j, k]: [usize; 3], pending: &mut Vec<[usize; 3]>| {
+            // Every face here has this node for a corner: none alternates where it is unknown.
+            if grid.slot(i, j, k).is_none_or(|s| values[s].is_nan()) {
+                return;
+            }
             for face in faces_at(i, j, k).into_iter().flatten() {
                 let Some(([ti, tj, tk], s)) = to_move(values, face) else { continue };
                 values[s] = -1e-9 * values[s] - f64::MIN_POSITIVE;

@@ -44,11 +44,15 @@
 //! shortest first, and each search cuts as many of them as share no vertex and, cut together,
 //! leave the surface in one piece (then each lowers the genus by one; the greedy shortest
 //! system of loops); the whole mesh, as one block, always holds one while the genus is above
-//! 0. The search is repeated until the genus is 0.
+//! 0. The search is repeated until the genus is 0. A block whose Euler characteristic
+//! V − E + F is 2C − b over its C pieces and b border loops, and where no vertex joins two fans
+//! of its faces, is a surface of genus 0: every loop in it separates it, so it is not searched
+//! (most blocks of the smaller sizes; the loops found are the same).
 
 //!
 //! Steps 1 to 3 are in `parts`, the fans and holes of steps 5 and 6 in `holes`, and the
-//! handles of step 7 in `handles`.
+//! handles of step 7 in `handles`; `edges` indexes the half-edges by vertex (a counting sort)
+//! for the lookups of every step.
 
 mod edges;
 mod handles;
