@@ -197,25 +197,28 @@ pub(super) fn independent_loops(
 /// `barrier` edges form one piece.
 pub(super) fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u64]) -> bool {
     let mut parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
-    fn find(p: &mut [u32], mut x: u32) -> u32 {
-        while p[x as usize] != x {
-            p[x as usize] = p[p[x as usize] as usize];
-            x = p[x as usize];
-        }
-        x
-    }
     let mut pieces = n;
     for &(key, f, g) in pairs {
         if barrier.binary_search(&key).is_ok() {
             continue;
         }
-        let (rf, rg) = (find(&mut parent, f), find(&mut parent, g));
+        let (rf, rg) = (find_root(&mut parent, f), find_root(&mut parent, g));
         if rf != rg {
             parent[rf as usize] = rg;
             pieces -= 1;
         }
     }
     pieces <= 1
+}
+
+/// The root of `x` in the union-find forest `parent` (each entry its parent, a root its own),
+/// halving the path on the way.
+fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        parent[x as usize] = parent[parent[x as usize] as usize];
+        x = parent[x as usize];
+    }
+    x
 }
 
 /// The face holding the half-edge a → b.
@@ -345,7 +348,7 @@ pub(super) fn block_loop_with(
         .filter(|&i| faces[block[i] as usize].iter().any(|&v| boundary(v)))
         .map(|i| u32::try_from(i).unwrap_or(u32::MAX))
         .collect();
-    let list = block_edges(verts.len(), &local_faces);
+    let list = block_edges(&local_faces);
     let n = verts.len();
     // Most blocks of the smaller sizes hold no handle, which a count shows at less cost than
     // a search.
@@ -390,42 +393,14 @@ thread_local! {
     static LOCAL: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
 }
 
-/// The undirected edges of a block's faces `faces` (on `n` local vertices) as
-/// (a, b, face, the other face or `None` on the block's border), a < b, ordered by (a, b), the
-/// faces by their index: the edges bucketed by their lower end, each bucket sorted.
-pub(super) fn block_edges(n: usize, faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, Option<u32>)> {
-    let ends = |t: &[u32; 3], k: usize| {
-        let (a, b) = (t[k], t[(k + 1) % 3]);
-        (a.min(b) as usize, a.max(b))
-    };
-    let mut start = vec![0usize; n + 1];
-    for t in faces {
-        for k in 0..3 {
-            start[ends(t, k).0 + 1] += 1;
-        }
-    }
-    for a in 1..=n {
-        start[a] += start[a - 1];
-    }
-    let mut next = start.clone();
-    let mut slots = vec![(0u32, 0u32); 3 * faces.len()];
-    for (i, t) in faces.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = ends(t, k);
-            slots[next[a]] = (b, u32::try_from(i).unwrap_or(u32::MAX));
-            next[a] += 1;
-        }
-    }
-    let mut list = Vec::with_capacity(slots.len() / 2 + 1);
-    for a in 0..n {
-        let bucket = &mut slots[start[a]..start[a + 1]];
-        bucket.sort_unstable();
-        for pair in bucket.chunk_by(|x, y| x.0 == y.0) {
-            let a = u32::try_from(a).unwrap_or(u32::MAX);
-            list.push((a, pair[0].0, pair[0].1, pair.get(1).map(|x| x.1)));
-        }
-    }
-    list
+/// The undirected edges of a block's faces `faces` (on local vertices) as
+/// (a, b, face, the other face or `None` on the block's border), a < b, ordered by (a, b)
+/// ([`EdgeIndex::undirected`]; half-edge 3f + k is on face f).
+pub(super) fn block_edges(faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, Option<u32>)> {
+    EdgeIndex::undirected(faces)
+        .groups()
+        .map(|(a, b, sides)| (a, b, sides[0].1 / 3, sides.get(1).map(|x| x.1 / 3)))
+        .collect()
 }
 
 /// Whether a block of `faces` faces on `n` vertices with the edges `list` ([`block_edges`]) is
@@ -437,13 +412,6 @@ pub(super) fn block_edges(n: usize, faces: &[[u32; 3]]) -> Vec<(u32, u32, u32, O
 /// different pieces; a pinched vertex, where the surface touches itself, would let a loop
 /// through it join two border loops without separating the faces.
 pub(super) fn genus_zero(n: usize, list: &[(u32, u32, u32, Option<u32>)], faces: usize) -> bool {
-    fn find(p: &mut [u32], mut x: u32) -> u32 {
-        while p[x as usize] != x {
-            p[x as usize] = p[p[x as usize] as usize];
-            x = p[x as usize];
-        }
-        x
-    }
     let sides: usize = list.iter().map(|e| 1 + usize::from(e.3.is_some())).sum();
     if sides != 3 * faces {
         return false; // an edge on three faces or more
@@ -455,7 +423,7 @@ pub(super) fn genus_zero(n: usize, list: &[(u32, u32, u32, Option<u32>)], faces:
     for &(a, b, f, g) in list {
         match g {
             Some(g) => {
-                let (rf, rg) = (find(&mut face_parent, f), find(&mut face_parent, g));
+                let (rf, rg) = (find_root(&mut face_parent, f), find_root(&mut face_parent, g));
                 if rf != rg {
                     face_parent[rf as usize] = rg;
                     pieces -= 1;
@@ -465,7 +433,7 @@ pub(super) fn genus_zero(n: usize, list: &[(u32, u32, u32, Option<u32>)], faces:
                 for v in [a, b] {
                     border[v as usize] = border[v as usize].saturating_add(1);
                 }
-                let (ra, rb) = (find(&mut vertex_parent, a), find(&mut vertex_parent, b));
+                let (ra, rb) = (find_root(&mut vertex_parent, a), find_root(&mut vertex_parent, b));
                 if ra == rb {
                     loops += 1; // the edge closes a border loop
                 } else {
@@ -544,16 +512,9 @@ fn loop_through(root: u32, graph: &BlockGraph<'_>, excluded: &[bool]) -> Vec<(f6
         .collect();
     candidates.sort_unstable_by(|x, y| y.0.total_cmp(&x.0));
     let mut parent_face: Vec<u32> = (0..u32::try_from(n_faces).unwrap_or(u32::MAX)).collect();
-    fn find(p: &mut [u32], mut x: u32) -> u32 {
-        while p[x as usize] != x {
-            p[x as usize] = p[p[x as usize] as usize];
-            x = p[x as usize];
-        }
-        x
-    }
     if let Some((&first, rest)) = graph.band.split_first() {
         for &f in rest {
-            let (rf, r0) = (find(&mut parent_face, f), find(&mut parent_face, first));
+            let (rf, r0) = (find_root(&mut parent_face, f), find_root(&mut parent_face, first));
             parent_face[rf as usize] = r0;
         }
     }
@@ -561,7 +522,7 @@ fn loop_through(root: u32, graph: &BlockGraph<'_>, excluded: &[bool]) -> Vec<(f6
     // system of loops through the root), shortest first.
     let mut closing: Vec<(f64, u32, u32)> = Vec::new();
     for &(length, a, b, f, g) in &candidates {
-        let (rf, rg) = (find(&mut parent_face, f), find(&mut parent_face, g));
+        let (rf, rg) = (find_root(&mut parent_face, f), find_root(&mut parent_face, g));
         if rf == rg {
             closing.push((length, a, b));
         } else {

@@ -210,7 +210,7 @@ fn block_genus_zero(faces: &[[u32; 3]]) -> bool {
             })
         })
         .collect();
-    genus_zero(local.len(), &block_edges(local.len(), &local_faces), faces.len())
+    genus_zero(local.len(), &block_edges(&local_faces), faces.len())
 }
 
 #[test]
