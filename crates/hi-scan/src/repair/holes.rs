@@ -5,6 +5,7 @@
 use glam::DVec3;
 use hi_par::*;
 
+use super::band::ArrowBand;
 use super::edges::EdgeIndex;
 use super::{ADDED_VERTEX, Repair};
 
@@ -121,10 +122,6 @@ pub(super) fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
     }
     loops
 }
-
-/// The most conjugate-gradient steps of a cap's fairing ([`fill_hole`]): enough for caps of
-/// thousands of vertices (the steps it takes grow with the cap's radius in edges squared).
-const FAIRING_ITERATIONS: usize = 4000;
 
 /// The most vertices on a cap's first ring ([`fill_hole`]): a wider hole's cap is made of
 /// triangles wider than the mesh's, so that its size (about this squared over 4π vertices) and
@@ -267,12 +264,13 @@ fn zip_rings(outer: &[u32], inner: &[u32]) -> Vec<[u32; 3]> {
 /// radius (at most [`CAP_RINGS_MAX`]), each of as many vertices as the loop (a loop longer
 /// than [`CAP_RING_MAX`] edges: that many, on rings spaced as widely as their vertices, so
 /// that the cap's size is bounded), joined by [`zip_rings`], then a fan around the centroid.
-/// The new vertices are moved first to the discrete membrane (each the mean of its neighbours,
-/// the loop fixed: as flat as its border allows; [`membrane`]), then to the thin
-/// plate the surface around it continues into: the umbrella operator applied twice vanishes at
-/// every new vertex (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about
-/// it fixed), so the cap leaves the rim along the surface's own tangent plane, with no crease
-/// for the harmonic surface to ring on. `shape` is the cap's size ([`CapShape::of`] the loop);
+/// The new vertices are moved to the thin plate the surface around it continues into: the
+/// umbrella operator vanishes, in the least-squares sense, at every new vertex and every vertex
+/// of the loop (Kobbelt 1998, discrete fairing; the loop and the scan's triangles about it
+/// fixed; [`fair`]), so the cap leaves the rim along the surface's own tangent plane, with no
+/// crease for the harmonic surface to ring on. Should that system be singular to rounding, they
+/// go to the discrete membrane instead (each the mean of its neighbours, the loop fixed: as
+/// flat as its border allows; [`membrane`]). `shape` is the cap's size ([`CapShape::of`] the loop);
 /// `around` holds the loop's vertices' neighbours in the mesh ([`fill_holes`]).
 fn fill_hole(
     lp: &[u32],
@@ -312,7 +310,7 @@ fn fill_hole(
     for i in 0..n {
         triangles.push([outer[(i + 1) % n], outer[i], c]);
     }
-    // The membrane: the new vertices' neighbours, then the solve.
+    // The new vertices' neighbours, then the fairing.
     let free = new.len();
     if free <= 1 {
         return Cap { positions: new, triangles };
@@ -328,12 +326,13 @@ fn fill_hole(
             }
         }
     }
-    membrane((old, &mut new), first_new, &neighbours, (16 * (rings + 1)).max(20));
     // The loop's vertices' neighbours on both sides: the mesh's, and the cap's.
     let mut rim: std::collections::HashMap<u32, Vec<u32>> =
         lp.iter().map(|&v| (v, around.get(&v).cloned().unwrap_or_default())).collect();
     gather_neighbours(&triangles, &mut rim);
-    fair(lp, &rim, (old, &mut new), first_new, &neighbours, FAIRING_ITERATIONS);
+    if !fair(lp, &rim, (old, &mut new), first_new, &neighbours, (rings, count)) {
+        membrane((old, &mut new), first_new, &neighbours, (16 * (rings + 1)).max(20));
+    }
     Cap { positions: new, triangles }
 }
 
@@ -393,27 +392,52 @@ pub(super) fn membrane(
     }
 }
 
+/// One vertex's umbrella operator in [`fair`]: the vertex, its coefficients by place of the free
+/// vertices, and the part from the fixed ones.
+type UmbrellaRow = (u32, Vec<(usize, f64)>, DVec3);
+
 /// The thin-plate fairing of a hole's cap (see [`fill_hole`]): the cap's new vertices `new`
 /// (numbered from `first_new`, with their `neighbours`; the mesh's vertices `old`;
 /// `around_loop` holds the loop's vertices' neighbours on both sides) placed where the umbrella
-/// operator
-/// U(v) = mean of v's neighbours − v vanishes, in the least-squares sense, at every vertex of
-/// the cap and of the loop `lp` (the loop and the rest of the mesh fixed), by conjugate
-/// gradients on the normal equations (CGLS, three coordinates at once, from the membrane the
-/// caller placed them on), until their residual has fallen by a factor of 10⁸, at most
-/// `iterations` steps.
-fn fair(
+/// operator U(v) = mean of v's neighbours − v vanishes, in the least-squares sense, at every
+/// vertex of the cap and of the loop `lp` (the loop and the rest of the mesh fixed): the normal
+/// equations Aᵀ A x = −Aᵀ f of the rows U(v) = A x + f, solved directly. The cap is `rings`
+/// rings of `count` vertices each (ring k's vertex j numbered (k − 1) · `count` + j) and its
+/// centre last ([`CapShape`]): ordered spoke by spoke, the spokes taken 0, 1, count − 1, 2,
+/// count − 2, … so that neighbouring spokes lie at most two apart, a vertex couples in Aᵀ A
+/// only to those within about 4 · `rings` places, but for the centre, whose own row joins the
+/// whole innermost ring. So Aᵀ A less the centre's row is an [`ArrowBand`] (the centre last),
+/// factorised by banded Cholesky, and the centre's row u is added back by Sherman and Morrison:
+/// (B + u uᵀ)⁻¹ c = y − z (uᵀ y) / (1 + uᵀ z) with B y = c and B z = u.
+/// Returns `false`, leaving `new` as it was, if the system is singular to rounding.
+pub(super) fn fair(
     lp: &[u32],
     around_loop: &std::collections::HashMap<u32, Vec<u32>>,
     (old, new): (&[DVec3], &mut [DVec3]),
     first_new: usize,
     neighbours: &[Vec<u32>],
-    iterations: usize,
-) {
+    (rings, count): (usize, usize),
+) -> bool {
     let free = neighbours.len();
-    // One row per vertex of the loop and the cap: U(v) as coefficients of the free vertices
-    // (cap vertex c at column c − first_new), and its fixed part.
-    let rows: Vec<(Vec<(usize, f64)>, DVec3)> = lp
+    if free != rings * count + 1 || count < 3 {
+        return false;
+    }
+    // The place of each free vertex in the order.
+    let spoke = |j: usize| {
+        if j == 0 {
+            0
+        } else if j <= count - j {
+            2 * j - 1
+        } else {
+            2 * (count - j)
+        }
+    };
+    let place =
+        |c: usize| if c + 1 == free { free - 1 } else { spoke(c % count) * rings + c / count };
+    let centre = (first_new + free - 1) as u32;
+    // One row per vertex of the loop and the cap: U(v) as coefficients of the free vertices'
+    // places, and its fixed part.
+    let rows: Vec<UmbrellaRow> = lp
         .iter()
         .map(|&v| (v, around_loop.get(&v).map_or(&[][..], Vec::as_slice)))
         .chain(
@@ -429,60 +453,55 @@ fn fair(
             let mut fixed = DVec3::ZERO;
             for (k, c) in ring.iter().map(|&k| (k, w)).chain([(v, -1.0)]) {
                 if k as usize >= first_new {
-                    coefficients.push((k as usize - first_new, c));
+                    coefficients.push((place(k as usize - first_new), c));
                 } else {
                     fixed += old[k as usize] * c;
                 }
             }
-            (coefficients, fixed)
+            (v, coefficients, fixed)
         })
         .collect();
-    let apply = |x: &[DVec3], out: &mut [DVec3]| {
-        for ((c, _), o) in rows.iter().zip(out.iter_mut()) {
-            *o = c.iter().map(|&(k, w)| x[k] * w).sum();
-        }
-    };
-    let apply_t = |r: &[DVec3], out: &mut [DVec3]| {
-        out.fill(DVec3::ZERO);
-        for ((c, _), ri) in rows.iter().zip(r) {
-            for &(k, w) in c {
-                out[k] += *ri * w;
+    let last = free - 1;
+    let band = rows
+        .iter()
+        .filter(|(v, ..)| *v != centre)
+        .map(|(_, c, _)| {
+            let inside = c.iter().map(|&(k, _)| k).filter(|&k| k != last);
+            inside.clone().max().unwrap_or(0) - inside.min().unwrap_or(0)
+        })
+        .max()
+        .unwrap_or(0);
+    let mut b = ArrowBand::zeros(free, band);
+    let mut rhs = vec![DVec3::ZERO; free];
+    let mut u = vec![DVec3::ZERO; free];
+    for (v, coefficients, fixed) in &rows {
+        for &(k, w) in coefficients {
+            rhs[k] -= *fixed * w;
+            if *v == centre {
+                u[k] = DVec3::splat(w);
+                continue;
+            }
+            for &(l, x) in coefficients {
+                if l <= k && !b.add(k, l, w * x) {
+                    return false;
+                }
             }
         }
+    }
+    let Some(factor) = b.cholesky() else {
+        return false;
     };
-    let dot = |a: &[DVec3], b: &[DVec3]| -> DVec3 { a.iter().zip(b).map(|(x, y)| *x * *y).sum() };
-    let mut x: Vec<DVec3> = new.to_vec();
-    // r = b − A x with b = −fixed.
-    let mut q = vec![DVec3::ZERO; rows.len()];
-    apply(&x, &mut q);
-    let mut r: Vec<DVec3> = rows.iter().zip(&q).map(|((_, f), a)| -*f - *a).collect();
-    let mut s = vec![DVec3::ZERO; free];
-    apply_t(&r, &mut s);
-    let mut p = s.clone();
-    let mut gamma = dot(&s, &s);
-    let start = gamma.max_element();
-    for _ in 0..iterations {
-        if gamma.max_element() <= 1e-16 * start.max(f64::MIN_POSITIVE) {
-            break;
-        }
-        apply(&p, &mut q);
-        let qq = dot(&q, &q);
-        let alpha = DVec3::select(qq.cmpgt(DVec3::ZERO), gamma / qq, DVec3::ZERO);
-        for (xi, pi) in x.iter_mut().zip(&p) {
-            *xi += alpha * *pi;
-        }
-        for (ri, qi) in r.iter_mut().zip(&q) {
-            *ri -= alpha * *qi;
-        }
-        apply_t(&r, &mut s);
-        let next = dot(&s, &s);
-        let beta = DVec3::select(gamma.cmpgt(DVec3::ZERO), next / gamma, DVec3::ZERO);
-        for (pi, si) in p.iter_mut().zip(&s) {
-            *pi = *si + beta * *pi;
-        }
-        gamma = next;
+    factor.solve(&mut rhs);
+    let mut z = u.clone();
+    factor.solve(&mut z);
+    let dot = |a: &[DVec3], c: &[DVec3]| -> DVec3 { a.iter().zip(c).map(|(x, y)| *x * *y).sum() };
+    let scale = dot(&u, &rhs) / (1.0 + dot(&u, &z).x);
+    if !scale.is_finite() || rhs.iter().any(|v| !v.is_finite()) {
+        return false;
     }
-    if x.iter().all(|v| v.is_finite()) {
-        new.copy_from_slice(&x);
+    for (c, out) in new.iter_mut().enumerate() {
+        let k = place(c);
+        *out = rhs[k] - z[k] * scale;
     }
+    true
 }

@@ -52,8 +52,10 @@
 //!
 //! Steps 1 to 3 are in `parts`, the fans and holes of steps 5 and 6 in `holes`, and the
 //! handles of step 7 in `handles`; `edges` indexes the half-edges by vertex (a counting sort)
-//! for the lookups of every step.
+//! for the lookups of every step, and `band` solves the caps' fairing (a banded Cholesky
+//! factorisation).
 
+mod band;
 mod edges;
 mod handles;
 mod holes;

@@ -467,3 +467,78 @@ fn the_membrane_is_the_discrete_harmonic_map() {
         assert!(v.distance(at(i, j)) < 1e-9, "{v} at ({i}, {j}) against {}", at(i, j));
     }
 }
+
+/// A band of the unit sphere between latitudes ±60°, `around` × `along` quads (two triangles
+/// each), open at both ends.
+fn sphere_band(around: usize, along: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let mut p = Vec::new();
+    for i in 0..=along {
+        let lat = (-60.0 + 120.0 * i as f64 / along as f64).to_radians();
+        for j in 0..around {
+            let lon = std::f64::consts::TAU * j as f64 / around as f64;
+            p.push(DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()));
+        }
+    }
+    let id = |i: usize, j: usize| (i * around + j % around) as u32;
+    let mut t = Vec::new();
+    for i in 0..along {
+        for j in 0..around {
+            let (a, b, c, d) = (id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j));
+            t.push([a, b, c]);
+            t.push([a, c, d]);
+        }
+    }
+    (p, t)
+}
+
+/// A cap is the thin plate of its rim: the gradient of Σ |U(v)|² over the cap's vertices
+/// (U the umbrella operator, summed over the cap's vertices and its rim's, on the mesh as
+/// closed) vanishes at every new vertex, to rounding. Checked from the closed mesh alone, on
+/// the caps of a band of the sphere: rims of 48 vertices (a cap of rings of as many vertices)
+/// and of 300 (rings of 256, zipped to the rim).
+#[test]
+fn caps_are_the_thin_plate_of_their_rim() {
+    for around in [48, 300] {
+        let (mut p, mut t) = sphere_band(around, 12);
+        let n0 = p.len();
+        let mut scan_vertex: Vec<u32> = (0..n0 as u32).collect();
+        let mut filled = vec![false; t.len()];
+        let loops = boundary_loops(&t, n0);
+        assert_eq!(loops.len(), 2);
+        let rims: Vec<u32> = loops.iter().flatten().copied().collect();
+        fill_holes(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
+        assert!(boundary_loops(&t, p.len()).is_empty());
+        let mut around_of: Vec<Vec<u32>> = vec![Vec::new(); p.len()];
+        for f in &t {
+            for k in 0..3 {
+                for other in [f[(k + 1) % 3], f[(k + 2) % 3]] {
+                    if !around_of[f[k] as usize].contains(&other) {
+                        around_of[f[k] as usize].push(other);
+                    }
+                }
+            }
+        }
+        let umbrella = |v: usize| {
+            let ring = &around_of[v];
+            ring.iter().map(|&k| p[k as usize]).sum::<DVec3>() / ring.len() as f64 - p[v]
+        };
+        // The rows: the rims' vertices and the new ones; the gradient at each new vertex c is
+        // Σ_rows ∂U(row)/∂c · U(row), with ∂U(v)/∂c = 1/deg v for c beside v and −1 for c = v.
+        let rows: Vec<usize> = rims.iter().map(|&v| v as usize).chain(n0..p.len()).collect();
+        let mut gradient = vec![DVec3::ZERO; p.len()];
+        for &v in &rows {
+            let u = umbrella(v);
+            for &k in &around_of[v] {
+                gradient[k as usize] += u / around_of[v].len() as f64;
+            }
+            gradient[v] -= u;
+        }
+        let edge = std::f64::consts::TAU * 0.5 / around as f64;
+        let worst = gradient[n0..].iter().map(|g| g.length()).fold(0.0, f64::max);
+        assert!(worst < 1e-10 * edge, "{around}: gradient {worst:e} against edges of {edge}");
+        // Smooth and on the sphere's side of the rim planes: a thin plate bulges outwards.
+        for q in &p[n0..] {
+            assert!(q.z.abs() > 0.8, "{around}: {q} inside the band");
+        }
+    }
+}
