@@ -226,6 +226,11 @@ fn point_sources_on(
                 |mut parts| {
                     fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
                     let floor = (PART_FLOOR, PART_MIN_VERTICES);
+                    // On a grid with a coarser one to come, a zero set whose parts of few
+                    // enough handles hold too little of it is given up at once.
+                    if !last && keepable_area(&parts, floor, handles) < MIN_AREA_KEPT {
+                        return (Vec::new(), Vec::new());
+                    }
                     plan(&parts, options.boundary, options.layout, floor, handles)
                 },
             );

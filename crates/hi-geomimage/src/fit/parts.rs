@@ -165,6 +165,26 @@ fn choices(
     out
 }
 
+/// The most of the area [`plan`] could keep of `parts` (as the share of their area): that of
+/// the parts above the floor (`floor` of the area and `min_vertices` vertices) whose genus is
+/// at most `max_handles` (or 1, a torus). A part of higher genus is refused by every closing
+/// before anything is done to it, so [`plan`] drops it whatever it tries; when the rest hold too
+/// little, the plan is not worth making (it would close every other part first).
+pub(crate) fn keepable_area(
+    parts: &MeshParts,
+    (floor, min_vertices): (f64, usize),
+    max_handles: usize,
+) -> f64 {
+    let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
+    parts
+        .parts
+        .par_iter()
+        .filter(|part| part.area / total >= floor && part.positions.len() >= min_vertices)
+        .filter(|part| part_topology(part).genus <= max_handles.max(1))
+        .map(|part| part.area / total)
+        .sum()
+}
+
 /// The parts of `parts` to fit, each made the surface its topology asks for, and those left
 /// out: parts with less than `floor` of the area or fewer than `min_vertices` vertices, and
 /// parts that cannot be made any surface with up to `max_handles` handles cut.
