@@ -379,9 +379,18 @@ fn pull(
     };
     let normals = grid_normals(x, rows, cols);
     let spacing = patches.spacing();
+    // A point outside the texels' box grown by PULL_UNTIL spacings (and a little, against
+    // rounding) is farther than that from every texel: it pulls nothing, and is not looked up
+    // (most of the points, for one part of many).
+    let reach = DVec3::splat(PULL_UNTIL * spacing * (1.0 + 1e-6));
+    let (lo, hi) = owners
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &t| (lo.min(x[t]), hi.max(x[t])));
+    let (lo, hi) = (lo - reach, hi + reach);
     let pulls: Vec<Option<(usize, DVec3)>> = points
         .par_iter()
         .enumerate()
+        .filter(|(_, p)| p.cmpge(lo).all() && p.cmple(hi).all())
         .map(|(k, p)| {
             // The surface passed the point by: it lies off the nearest texel's tangent plane.
             // Of the nearest few texels, the one whose normal's line passes closest to the
