@@ -20,6 +20,7 @@ use glam::{DMat3, DVec3};
 use hi_par::*;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
+use crate::repair::find_root;
 use crate::{Error, NonFiniteInput};
 
 /// A local quadric patch about one point: a frame (origin, tangents, normal) and the height
@@ -282,38 +283,60 @@ impl PointSurface {
     /// tree of the graph joining each point to its `k` nearest, weighted by 1 − |nᵢ·nⱼ| so that
     /// the orientation passes first between nearly parallel planes, each patch turned to agree
     /// with the one it is reached from; each connected part starts from its highest point,
-    /// whose normal points up (the top of a closed surface faces +z).
+    /// whose normal points up (the top of a closed surface faces +z). The tree is Kruskal's (the
+    /// graph's edges sorted by weight, each joining two trees kept), then walked from each
+    /// part's highest point.
     fn orient_by_tree(&mut self, points: &[DVec3], k: usize) {
-        use std::cmp::Reverse;
-        use std::collections::BinaryHeap;
         let n = points.len();
         let k = NonZero::new(k + 1).unwrap_or(NonZero::<usize>::MIN);
-        let near: Vec<Vec<u32>> = points
+        let (tree, patches) = (&self.tree, &self.patches);
+        // The graph's edges, each once as (weight, lower end, higher end): weights in [0, 1],
+        // whose bits order as the numbers do.
+        let mut edges: Vec<(u64, u32, u32)> = points
             .par_iter()
-            .map(|p| {
-                self.tree
-                    .query(&p.to_array())
+            .enumerate()
+            .flat_map_iter(|(i, p)| {
+                let i = u32::try_from(i).unwrap_or(u32::MAX);
+                let normal = patches[i as usize].normal;
+                tree.query(&p.to_array())
                     .nearest_n::<SquaredEuclidean<f64>>(k)
                     .execute()
-                    .iter()
-                    .map(|q| q.item)
-                    .collect()
+                    .into_iter()
+                    .filter(move |q| q.item != i)
+                    .map(move |q| {
+                        let w = 1.0 - normal.dot(patches[q.item as usize].normal).abs();
+                        (w.max(0.0).to_bits(), i.min(q.item), i.max(q.item))
+                    })
             })
             .collect();
-        // The graph, symmetric.
-        let mut adjacency: Vec<Vec<u32>> = near.clone();
-        for (i, list) in near.iter().enumerate() {
-            for &j in list {
-                if j as usize != i {
-                    adjacency[j as usize].push(i as u32);
-                }
+        edges.par_sort_unstable();
+        edges.dedup();
+        // The minimum spanning forest (Kruskal: the lightest edges first, each that joins two
+        // trees), as each vertex's tree neighbours.
+        let mut parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
+        let mut spanning: Vec<(u32, u32)> = Vec::with_capacity(2 * n);
+        for &(_, a, b) in &edges {
+            let (ra, rb) = (find_root(&mut parent, a), find_root(&mut parent, b));
+            if ra != rb {
+                parent[ra as usize] = rb;
+                spanning.extend([(a, b), (b, a)]);
             }
         }
+        drop(edges);
+        spanning.par_sort_unstable();
+        let mut start = vec![0usize; n + 1];
+        for &(a, _) in &spanning {
+            start[a as usize + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        // Each part from its highest point, facing up; each patch turned to agree with the
+        // one it is reached from.
         let mut done = vec![false; n];
-        let mut by_height: Vec<u32> = (0..n as u32).collect();
+        let mut by_height: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
         by_height.sort_by(|&a, &b| points[b as usize].z.total_cmp(&points[a as usize].z));
-        // Weights in [0, 1]: their bits order as the numbers do.
-        let mut heap: BinaryHeap<Reverse<(u64, u32, u32)>> = BinaryHeap::new();
+        let mut stack: Vec<u32> = Vec::new();
         for root in by_height {
             if done[root as usize] {
                 continue;
@@ -321,21 +344,17 @@ impl PointSurface {
             if self.patches[root as usize].normal.z < 0.0 {
                 self.patches[root as usize].flip();
             }
-            heap.push(Reverse((0, root, root)));
-            while let Some(Reverse((_, from, to))) = heap.pop() {
-                if done[to as usize] {
-                    continue;
-                }
-                done[to as usize] = true;
+            done[root as usize] = true;
+            stack.push(root);
+            while let Some(from) = stack.pop() {
                 let reference = self.patches[from as usize].normal;
-                if self.patches[to as usize].normal.dot(reference) < 0.0 {
-                    self.patches[to as usize].flip();
-                }
-                let normal = self.patches[to as usize].normal;
-                for &next in &adjacency[to as usize] {
-                    if !done[next as usize] {
-                        let w = 1.0 - normal.dot(self.patches[next as usize].normal).abs();
-                        heap.push(Reverse((w.max(0.0).to_bits(), to, next)));
+                for &(_, to) in &spanning[start[from as usize]..start[from as usize + 1]] {
+                    if !done[to as usize] {
+                        done[to as usize] = true;
+                        if self.patches[to as usize].normal.dot(reference) < 0.0 {
+                            self.patches[to as usize].flip();
+                        }
+                        stack.push(to);
                     }
                 }
             }

@@ -213,7 +213,7 @@ pub(super) fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u6
 
 /// The root of `x` in the union-find forest `parent` (each entry its parent, a root its own),
 /// halving the path on the way.
-fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
+pub(crate) fn find_root(parent: &mut [u32], mut x: u32) -> u32 {
     while parent[x as usize] != x {
         parent[x as usize] = parent[parent[x as usize] as usize];
         x = parent[x as usize];

@@ -68,6 +68,7 @@ use edges::EdgeIndex;
 use handles::{cut_handles, euler_characteristic};
 use holes::{boundary_loops, fill_holes, split_fans};
 
+pub(crate) use handles::find_root;
 pub use handles::{HANDLE_BLOCKS, MAX_HANDLES, shortest_handle};
 pub use parts::mesh_parts;
 
