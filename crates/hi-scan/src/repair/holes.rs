@@ -270,8 +270,8 @@ fn zip_rings(outer: &[u32], inner: &[u32]) -> Vec<[u32; 3]> {
 /// fixed; [`fair`]), so the cap leaves the rim along the surface's own tangent plane, with no
 /// crease for the harmonic surface to ring on. Should that system be singular to rounding, they
 /// go to the discrete membrane instead (each the mean of its neighbours, the loop fixed: as
-/// flat as its border allows; [`membrane`]). `shape` is the cap's size ([`CapShape::of`] the loop);
-/// `around` holds the loop's vertices' neighbours in the mesh ([`fill_holes`]).
+/// flat as its border allows; [`membrane`]). `shape` is the cap's size ([`CapShape::of`] the
+/// loop); `around` holds the loop's vertices' neighbours in the mesh ([`fill_holes`]).
 fn fill_hole(
     lp: &[u32],
     &CapShape { centre, rings, count }: &CapShape,
@@ -410,7 +410,7 @@ type UmbrellaRow = (u32, Vec<(usize, f64)>, DVec3);
 /// factorised by banded Cholesky, and the centre's row u is added back by Sherman and Morrison:
 /// (B + u uᵀ)⁻¹ c = y − z (uᵀ y) / (1 + uᵀ z) with B y = c and B z = u.
 /// Returns `false`, leaving `new` as it was, if the system is singular to rounding.
-pub(super) fn fair(
+fn fair(
     lp: &[u32],
     around_loop: &std::collections::HashMap<u32, Vec<u32>>,
     (old, new): (&[DVec3], &mut [DVec3]),
