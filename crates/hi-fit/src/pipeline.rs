@@ -208,7 +208,7 @@ pub fn fit_scan(
     scan: &Scan,
     name: &str,
     options: &FitOptions,
-    progress: &mut dyn FnMut(Progress),
+    progress: &mut (dyn FnMut(Progress) + Send),
 ) -> Result<Fit, Error> {
     fit(scan, options, progress).map_err(|source| Error::Fit { scan: name.to_owned(), source })
 }

@@ -103,16 +103,12 @@ fn mesh_sources(
     let size = user_size(options, &planned);
     let mut out = Vec::with_capacity(n);
     let mut planned = planned;
-    for (k, part) in planned.iter_mut().enumerate() {
-        let image = clock.run(StageKind::GeometryImage, (k, n), || {
-            part_image_or_sphere(
-                part,
-                share(texels, part.area_fraction, kept),
-                size,
-                options.layout,
-                true,
-            )
-        })?;
+    let images = clock.run_each(StageKind::GeometryImage, &mut planned, |part| {
+        let texels = share(texels, part.area_fraction, kept);
+        part_image_or_sphere(part, texels, size, options.layout, true)
+    });
+    for (part, image) in planned.iter().zip(images) {
+        let image = image?;
         let mut repair = part.closed.repair;
         repair.welded_points = parts.welded_points;
         repair.dropped_triangles = parts.dropped_triangles;
@@ -270,11 +266,14 @@ fn point_sources_on(
     let mls = MovingLeastSquares::try_new(points)?;
     let mut out = Vec::with_capacity(n);
     let mut planned = planned;
-    for (k, part) in planned.iter_mut().enumerate() {
-        let image = clock.run(StageKind::GeometryImage, (k, n), || {
-            let layout = (options.layout, rescue);
-            settled_part_image(part, &surface, reps, &mls, (texels, kept, size), layout)
-        })?;
+    // The parts side by side (each part's own work is parallel too, but a large part's
+    // parameterisation is not all of it).
+    let images = clock.run_each(StageKind::GeometryImage, &mut planned, |part| {
+        let layout = (options.layout, rescue);
+        settled_part_image(part, &surface, reps, &mls, (texels, kept, size), layout)
+    });
+    for (part, image) in planned.iter().zip(images) {
+        let image = image?;
         out.push(Sourced {
             name: part.name.clone(),
             domain: part.domain,

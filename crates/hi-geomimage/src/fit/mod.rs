@@ -40,10 +40,13 @@ mod stages;
 mod surfaces;
 
 use std::borrow::Cow;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 use glam::DVec3;
 use hi_curve::ReductionDeviation;
+use hi_par::*;
 use hi_scan::cloud::{cell_for_count, merge_duplicates, summarise};
 use hi_scan::distance::{Distances, bounding_diagonal};
 use hi_scan::implicit::{CELL, MovingLeastSquares, PointSurface};
@@ -559,7 +562,7 @@ fn distinct<'a>(
 /// Times the stages of a fit and tells the progress display.
 struct Clock<'a> {
     stages: Vec<Stage>,
-    on_stage: &'a mut dyn FnMut(Progress),
+    on_stage: &'a mut (dyn FnMut(Progress) + Send),
 }
 
 impl Clock<'_> {
@@ -573,12 +576,48 @@ impl Clock<'_> {
         (self.on_stage)(Progress { stage, part, parts });
         let start = Instant::now();
         let out = work();
-        let seconds = start.elapsed().as_secs_f64();
+        self.add(stage, start.elapsed().as_secs_f64());
+        out
+    }
+
+    /// Runs `work` on each of `items` (the parts) as `stage`, in parallel, adding the time they
+    /// take together to the stage's. The display is told of part 0 as they start, then of how
+    /// many have ended as each ends (but the last), so that it counts them whatever order they
+    /// end in; one at a time (without the `parallel` feature) that is what [`Clock::run`] tells.
+    fn run_each<P: Send, T: Send>(
+        &mut self,
+        stage: StageKind,
+        items: &mut [P],
+        work: impl Fn(&mut P) -> T + Sync + Send,
+    ) -> Vec<T> {
+        let parts = items.len();
+        (self.on_stage)(Progress { stage, part: 0, parts });
+        let start = Instant::now();
+        let ended = AtomicUsize::new(0);
+        let on_stage = Mutex::new(&mut *self.on_stage);
+        let out: Vec<T> = items
+            .par_iter_mut()
+            .map(|item| {
+                let out = work(item);
+                let part = ended.fetch_add(1, Ordering::Relaxed) + 1;
+                if part < parts
+                    && let Ok(mut tell) = on_stage.lock()
+                {
+                    (*tell)(Progress { stage, part, parts });
+                }
+                out
+            })
+            .collect();
+        self.add(stage, start.elapsed().as_secs_f64());
+        out
+    }
+
+    /// Adds `seconds` to `stage`'s time.
+    fn add(&mut self, stage: StageKind, seconds: f64) {
         match self.stages.iter_mut().find(|s| s.kind == stage) {
             Some(s) => s.seconds += seconds,
             None => self.stages.push(Stage { kind: stage, seconds }),
         }
-        out
     }
 }
 
@@ -636,7 +675,9 @@ fn check_spread(points: &[DVec3], boundary: Boundary) -> Result<(), Error> {
 }
 
 /// Fits a harmonic surface to each part of a scan; see the module documentation. `on_stage`
-/// is told each stage as it starts, and of which part (for a progress display).
+/// is told each stage as it starts, and of which part (for a progress display); the parts'
+/// images are made in parallel, and it is told of each as the one before it ends (from any
+/// thread, one call at a time).
 ///
 /// # Errors
 ///
@@ -651,7 +692,7 @@ fn check_spread(points: &[DVec3], boundary: Boundary) -> Result<(), Error> {
 pub fn fit(
     scan: &Scan,
     options: &FitOptions,
-    on_stage: &mut dyn FnMut(Progress),
+    on_stage: &mut (dyn FnMut(Progress) + Send),
 ) -> Result<Fit, Error> {
     check_options(options)?;
     let (points, triangles, unused_points) = referenced(scan);
