@@ -284,14 +284,22 @@ fn loops_around_the_same_handle_are_not_cut_together() {
 /// hole of m edges.
 fn annulus(m: usize, rings: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let tau = std::f64::consts::TAU;
-    let mut p = Vec::new();
-    for r in 0..=rings {
+    ring_strip(m, rings, |r, i| {
         let radius = (tau * r as f64 / m as f64).exp();
-        for i in 0..m {
-            let a = tau * i as f64 / m as f64;
-            p.push(DVec3::new(radius * a.cos(), radius * a.sin(), 0.0));
-        }
-    }
+        let a = tau * i as f64 / m as f64;
+        DVec3::new(radius * a.cos(), radius * a.sin(), 0.0)
+    })
+}
+
+/// Rings 0 to `rings` of `m` points each (ring r's point i at `at(r, i)`), each ring joined to
+/// the next by m quads of two triangles: a strip open at its first and last rings.
+fn ring_strip(
+    m: usize,
+    rings: usize,
+    at: impl Fn(usize, usize) -> DVec3,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let p: Vec<DVec3> =
+        (0..=rings).flat_map(|r| (0..m).map(move |i| (r, i))).map(|(r, i)| at(r, i)).collect();
     let id = |r: usize, i: usize| (r * m + i % m) as u32;
     let mut t = Vec::new();
     for r in 0..rings {
@@ -471,24 +479,11 @@ fn the_membrane_is_the_discrete_harmonic_map() {
 /// A band of the unit sphere between latitudes ±60°, `around` × `along` quads (two triangles
 /// each), open at both ends.
 fn sphere_band(around: usize, along: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-    let mut p = Vec::new();
-    for i in 0..=along {
+    ring_strip(around, along, |i, j| {
         let lat = (-60.0 + 120.0 * i as f64 / along as f64).to_radians();
-        for j in 0..around {
-            let lon = std::f64::consts::TAU * j as f64 / around as f64;
-            p.push(DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()));
-        }
-    }
-    let id = |i: usize, j: usize| (i * around + j % around) as u32;
-    let mut t = Vec::new();
-    for i in 0..along {
-        for j in 0..around {
-            let (a, b, c, d) = (id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j));
-            t.push([a, b, c]);
-            t.push([a, c, d]);
-        }
-    }
-    (p, t)
+        let lon = std::f64::consts::TAU * j as f64 / around as f64;
+        DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin())
+    })
 }
 
 /// A cap is the thin plate of its rim: the gradient of Σ |U(v)|² over the cap's vertices
