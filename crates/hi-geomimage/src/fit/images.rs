@@ -76,7 +76,7 @@ fn mesh_sources(
     let parts: MeshParts = clock.run(StageKind::Parts, (0, 1), || mesh_parts(points, triangles))?;
     let (planned, dropped) = clock.run(StageKind::Parts, (0, 1), || {
         let floor = (PART_FLOOR, PART_MIN_VERTICES);
-        plan(&parts, options.boundary, options.layout, floor, MAX_HANDLES)
+        plan(&parts, options.boundary, options.layout, floor, MAX_HANDLES, 0.0)
     });
     let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
     if planned.is_empty() || (!force && kept < MIN_AREA_KEPT) {
@@ -224,10 +224,8 @@ fn point_sources_on(
                     let floor = (PART_FLOOR, PART_MIN_VERTICES);
                     // On a grid with a coarser one to come, a zero set whose parts of few
                     // enough handles hold too little of it is given up at once.
-                    if !last && keepable_area(&parts, floor, handles) < MIN_AREA_KEPT {
-                        return (Vec::new(), Vec::new());
-                    }
-                    plan(&parts, options.boundary, options.layout, floor, handles)
+                    let least = if last { 0.0 } else { MIN_AREA_KEPT };
+                    plan(&parts, options.boundary, options.layout, floor, handles, least)
                 },
             );
             if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {

@@ -68,7 +68,7 @@ use crate::shrinkwrap::{ShrinkWrapImage, ShrinkWrapOptions, settle, shrink_wrap}
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
 use images::{Sourced, Sources, leave_out_guesswork, sources};
-use parts::{PlannedPart, drop_fragments, keepable_area, part_image_or_sphere, plan};
+use parts::{PlannedPart, drop_fragments, part_image_or_sphere, plan};
 use report::{measure_error, part_report, row_points};
 use surfaces::{Surfaced, filled_on_grid, regularisation_for, surface_of};
 

@@ -165,42 +165,45 @@ fn choices(
     out
 }
 
-/// The most of the area [`plan`] could keep of `parts` (as the share of their area): that of
-/// the parts above the floor (`floor` of the area and `min_vertices` vertices) whose genus is
-/// at most `max_handles` (or 1, a torus). A part of higher genus is refused by every closing
-/// before anything is done to it, so [`plan`] drops it whatever it tries; when the rest hold too
-/// little, the plan is not worth making (it would close every other part first).
-pub(crate) fn keepable_area(
-    parts: &MeshParts,
-    (floor, min_vertices): (f64, usize),
-    max_handles: usize,
-) -> f64 {
-    let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
-    parts
-        .parts
-        .par_iter()
-        .filter(|part| part.area / total >= floor && part.positions.len() >= min_vertices)
-        .filter(|part| part_topology(part).genus <= max_handles.max(1))
-        .map(|part| part.area / total)
-        .sum()
-}
-
 /// The parts of `parts` to fit, each made the surface its topology asks for, and those left
 /// out: parts with less than `floor` of the area or fewer than `min_vertices` vertices, and
-/// parts that cannot be made any surface with up to `max_handles` handles cut.
+/// parts that cannot be made any surface with up to `max_handles` handles cut. A part of higher
+/// genus (but a torus) is refused by every closing before anything is done to it, so this is
+/// known from the parts' topology alone: when the others hold less than `least_kept` of the
+/// area, nothing is planned (both lists empty) rather than every other part closed for nothing.
 pub(crate) fn plan(
     parts: &MeshParts,
     boundary: Boundary,
     layout: Layout,
     (floor, min_vertices): (f64, usize),
     max_handles: usize,
+    least_kept: f64,
 ) -> (Vec<PlannedPart>, Vec<DroppedPart>) {
     let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
+    let topologies: Vec<Option<Topology>> = parts
+        .parts
+        .par_iter()
+        .map(|part| {
+            let above = part.area / total >= floor && part.positions.len() >= min_vertices;
+            above.then(|| part_topology(part))
+        })
+        .collect();
+    let keepable: f64 = parts
+        .parts
+        .iter()
+        .zip(&topologies)
+        .filter(|(_, t)| t.as_ref().is_some_and(|t| t.genus <= max_handles.max(1)))
+        .map(|(part, _)| part.area / total)
+        .sum();
+    if keepable < least_kept {
+        return (Vec::new(), Vec::new());
+    }
     let outcomes: Vec<Result<PlannedPart, DroppedPart>> = parts
         .parts
         .par_iter()
+        .zip(topologies.into_par_iter())
         .enumerate()
-        .map(|(k, part)| {
+        .map(|(k, (part, topology))| {
             let name = format!("part {}", k + 1);
             let area_fraction = part.area / total;
             let dropped = |reason: String| DroppedPart {
@@ -209,15 +212,14 @@ pub(crate) fn plan(
                 area_fraction,
                 reason,
             };
-            if area_fraction < floor || part.positions.len() < min_vertices {
+            let Some(topology) = topology else {
                 return Err(dropped(format!(
                     "below the floor ({:.2} % of the area, {} vertices; a part needs {:.2} % and {min_vertices})",
                     100.0 * area_fraction,
                     part.positions.len(),
                     100.0 * floor
                 )));
-            }
-            let topology = part_topology(part);
+            };
             let mut last = String::new();
             let choices = choices(&topology, boundary, layout);
             let sphere = choices.last().map(|c| (c.1, c.2.clone()));
@@ -548,7 +550,7 @@ mod tests {
     fn a_part_whose_sheet_map_fails_is_fitted_as_a_sphere() {
         let parts = two_parts();
         let (mut planned, dropped) =
-            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES);
+            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES, 0.0);
         assert!(dropped.is_empty());
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
@@ -621,7 +623,7 @@ mod tests {
         let parts = mesh_parts(&p, &t).unwrap();
         assert_eq!(parts.parts.len(), 1);
         let (mut planned, _) =
-            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES);
+            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES, 0.0);
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sheet, "{}", part.why);
         let sheet = part_image(&part, 64 * 64, None).expect("a map, squeezed");
