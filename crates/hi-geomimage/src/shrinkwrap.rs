@@ -14,8 +14,10 @@
 //!    evaluated only near the points and only where a node's foot on the tangent plane is near
 //!    its point, so that the surface ends at the rims of the scan's holes. That mesh is closed
 //!    by [`hi_scan::repair::close_mesh`] (its holes bridged) and parameterised over the sphere
-//!    ([`crate::sphereparam`]); the image is sampled from the parameterisation, so its texels
-//!    spread over every arm, ear and concavity whatever the rays would have seen.
+//!    ([`crate::sphereparam`]), its stretch weighed by the points' density so that where the
+//!    points are dense the texels are too (see `point_density_weights`); the image is sampled
+//!    from the parameterisation, so its texels spread over every arm, ear and concavity
+//!    whatever the rays would have seen.
 //! 2. **The projection**: every texel moves onto the point set's surface: to the
 //!    Gaussian-weighted blend of its projections onto the patches of its three nearest points
 //!    that face its way (its normal across the grid's two directions), a move of at most 1.5
@@ -55,6 +57,7 @@ use hi_scan::repair::ClosedMesh;
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 
 use crate::domain::Domain;
+use crate::sphereparam::density_weight;
 use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, NonFiniteInput};
 
@@ -180,7 +183,8 @@ pub fn shrink_wrap(
                 &closed.positions,
                 &vertex_normals(&closed.positions, &closed.triangles),
             );
-            crate::sphereparam::parameterise(&closed, &param_options)
+            let weights = point_density_weights(&patches, &closed);
+            crate::sphereparam::parameterise_weighted(&closed, &weights, &param_options)
         })
         .and_then(|param| param.image(layout, rows, cols));
     let (first, reparameterised, implicit_start, on_fills) = if let Ok(image) = implicit {
@@ -554,4 +558,19 @@ fn wrap(
         symmetrise(&mut x);
     }
     (x, filled)
+}
+
+/// The weights of the stretch of `mesh`'s spherical map (a part of the points' zero set) for
+/// [`parameterise_weighted`](crate::sphereparam::parameterise_weighted): at each vertex, the
+/// [`density_weight`] of the points' density there ([`PointSurface::relative_density`]), where
+/// the points are unevenly dense, and 1 where they are evenly dense
+/// ([`PointSurface::fine_spacing`] is their median spacing). A mesh's vertices are dense where
+/// the mesh has detail, and so are the texels then; a scanner's density varies with the angle
+/// of view, not with the detail, and following it would take texels from the surfaces it saw
+/// at a slant (a crease of Hoppe's duck, measured: its worst point 1.13 times farther).
+pub(crate) fn point_density_weights(surface: &PointSurface, mesh: &ClosedMesh) -> Vec<f64> {
+    if surface.fine_spacing() >= surface.spacing() {
+        return vec![1.0; mesh.positions.len()];
+    }
+    mesh.positions.par_iter().map(|&x| density_weight(surface.relative_density(x))).collect()
 }

@@ -7,7 +7,7 @@ use std::f64::consts::{PI, TAU};
 
 use glam::DVec3;
 use hi_geomimage::Layout;
-use hi_geomimage::sphereparam::{SphereParamOptions, parameterise};
+use hi_geomimage::sphereparam::{SphereParamOptions, parameterise, parameterise_weighted};
 use hi_geomimage::spherical::{SphericalOptions, spherical_image};
 use hi_scan::distance::closest_point_on_triangle;
 use hi_scan::repair::{ADDED_VERTEX, close_mesh};
@@ -291,4 +291,93 @@ fn repeated_points_and_faces_are_cleaned() {
     assert_eq!(closed.triangles.len(), t.len());
     assert_eq!(closed.positions.len(), p.len());
     assert!(closed.volume() > 0.0);
+}
+
+/// The share of the sphere's area that the triangles of `mesh` centred above z = 0 take in
+/// `param` (their flat triangles on the sphere, over all of them).
+fn upper_share(param: &hi_geomimage::sphereparam::SphereParam) -> f64 {
+    let (mesh, s) = (param.mesh(), param.sphere());
+    let (mut upper, mut all) = (0.0, 0.0);
+    for t in &mesh.triangles {
+        let [a, b, c] = t.map(|k| s[k as usize]);
+        let area = 0.5 * (b - a).cross(c - a).length();
+        all += area;
+        if t.iter().map(|&k| mesh.positions[k as usize].z).sum::<f64>() > 0.0 {
+            upper += area;
+        }
+    }
+    upper / all
+}
+
+/// The share of the sphere taken by the upper half of the unit sphere, its weight `w` against
+/// the lower half's 1, in the least weighted L² stretch among the maps of the sphere to itself
+/// that turn about its axis (latitude θ to latitude φ(θ)): E = ∫ w ((dθ/dφ)² + (sin θ /
+/// sin φ)²)/2 dA, its two terms the squared stretches along the meridian and the parallel.
+/// Minimised over φ at 40 latitudes by Gauss–Seidel sweeps of golden-section searches.
+fn least_stretch_upper_share(w: f64) -> f64 {
+    let n = 40;
+    let theta: Vec<f64> = (0..=n).map(|i| PI * i as f64 / n as f64).collect();
+    let mut phi = theta.clone();
+    // The energy of the band between latitudes i and i + 1 (the factor 2π left out).
+    let band = |i: usize, phi: &[f64]| -> f64 {
+        let (dt, dp) = (theta[i + 1] - theta[i], phi[i + 1] - phi[i]);
+        if dp <= 0.0 {
+            return f64::INFINITY;
+        }
+        let (tm, pm) = (0.5 * (theta[i] + theta[i + 1]), 0.5 * (phi[i] + phi[i + 1]));
+        let weight = if tm < 0.5 * PI { w } else { 1.0 };
+        weight * 0.5 * ((dt / dp).powi(2) + (tm.sin() / pm.sin()).powi(2)) * tm.sin() * dt
+    };
+    let golden = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..3000 {
+        for i in 1..n {
+            let (mut lo, mut hi) = (phi[i - 1], phi[i + 1]);
+            let at = |x: f64, phi: &mut [f64]| {
+                phi[i] = x;
+                band(i - 1, phi) + band(i, phi)
+            };
+            for _ in 0..40 {
+                let (a, b) = (hi - golden * (hi - lo), lo + golden * (hi - lo));
+                if at(a, &mut phi) < at(b, &mut phi) {
+                    hi = b;
+                } else {
+                    lo = a;
+                }
+            }
+            phi[i] = 0.5 * (lo + hi);
+        }
+    }
+    (1.0 - phi[n / 2].cos()) / 2.0
+}
+
+/// Weights in the stretch give a region more of the sphere, about in proportion to the square
+/// root of its weight (the module documentation's Lagrange condition, which leaves out what
+/// the map's anisotropy costs): a sphere whose upper half weighs 4 times its lower half's
+/// gives it the share of the least stretch computed along its latitudes, a little below
+/// √4 / (√4 + 1) = 2/3, rather than 1/2.
+#[test]
+fn weights_give_a_region_sphere_area_as_their_square_root() {
+    let (p, t) = icosphere(4, 1.0);
+    let closed = close_mesh(&p, &t).unwrap();
+    let options = SphereParamOptions::default();
+    let even = upper_share(&parameterise(&closed, &options).unwrap());
+    assert!((even - 0.5).abs() < 0.01, "unweighted: {even}");
+    for w in [4.0, 0.25] {
+        let expected = least_stretch_upper_share(w);
+        let area_only = w.sqrt() / (w.sqrt() + 1.0);
+        assert!((expected - 0.5).abs() < (area_only - 0.5).abs(), "{expected} vs {area_only}");
+        let weights: Vec<f64> =
+            closed.positions.iter().map(|x| if x.z > 0.0 { w } else { 1.0 }).collect();
+        let param = parameterise_weighted(&closed, &weights, &options).unwrap();
+        assert_eq!(param.quality().folded_triangles, 0);
+        let share = upper_share(&param);
+        assert!((share - expected).abs() < 0.02, "weight {w}: {share}, not {expected}");
+    }
+    // A weight count other than the vertex count, or a weight that is not positive, is refused.
+    for bad in
+        [vec![1.0; 3], vec![0.0; closed.positions.len()], vec![f64::NAN; closed.positions.len()]]
+    {
+        let e = parameterise_weighted(&closed, &bad, &options).unwrap_err().to_string();
+        assert!(e.contains("weights"), "{e}");
+    }
 }

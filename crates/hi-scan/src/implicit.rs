@@ -14,6 +14,7 @@
 //!   [`crate::surfacenets`] near the points only, so that it ends at the rims of the scan's
 //!   holes rather than running on along tangent planes.
 
+use std::f64::consts::PI;
 use std::num::NonZero;
 
 use glam::{DMat3, DVec3};
@@ -36,6 +37,9 @@ struct Patch {
     /// The point's own spacing (see [`PointSurface::spacing`]), where the points about it are
     /// denser or sparser than the median.
     local: f64,
+    /// The area per point of the disc through the point's farthest fitted neighbour, π r²/k
+    /// (see [`PointSurface::relative_density`]).
+    area: f64,
 }
 
 impl Patch {
@@ -77,6 +81,8 @@ pub struct PointSurface {
     patches: Vec<Patch>,
     spacing: f64,
     fine: f64,
+    /// The median of the patches' areas per point.
+    area: f64,
 }
 
 /// The neighbours whose disc gives a point's spacing ([`PointSurface::spacing`]).
@@ -171,12 +177,15 @@ impl PointSurface {
                 // 8th neighbour (a diagonal one) lies as far, r/√2.
                 let spacing =
                     near.get(SPACING_NEIGHBOURS).map_or(0.0, |n| (n.distance / 2.0).sqrt());
+                // The disc through the farthest of the k nearest (the point itself among them)
+                // holds k points about the point, however they are arranged.
+                let area = near.last().map_or(0.0, |n| PI * n.distance / near.len() as f64);
                 let hood: Vec<DVec3> = near.iter().map(|n| points[n.item as usize]).collect();
                 let normal = given
                     .and_then(|n| n[i].try_normalize())
                     .or_else(|| least_axis(&hood))
                     .unwrap_or(DVec3::Z);
-                (Patch { local: spacing, ..fit_patch(*p, normal, &hood) }, spacing)
+                (Patch { local: spacing, area, ..fit_patch(*p, normal, &hood) }, spacing)
             })
             .collect();
         let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
@@ -186,6 +195,9 @@ impl PointSurface {
         let evenness = spacings[spacings.len() / 10] / (RANDOM_TENTH * spacing);
         let fine = if evenness >= EVEN { spacing } else { evenness.max(FINE_MIN) * spacing };
         let mut patches: Vec<Patch> = fitted.into_iter().map(|f| f.0).collect();
+        let mut areas: Vec<f64> = patches.iter().map(|p| p.area).collect();
+        areas.sort_by(f64::total_cmp);
+        let area = areas[areas.len() / 2];
         if given.is_none() {
             // A first guess: away from the centroid (corrected by `orient` once a surface is
             // wrapped round the points).
@@ -196,7 +208,7 @@ impl PointSurface {
                 }
             }
         }
-        Ok(Self { tree, patches, spacing, fine })
+        Ok(Self { tree, patches, spacing, fine, area })
     }
 
     /// The points' spacing: the median over the points of r/√2, r the distance to a point's
@@ -381,6 +393,45 @@ impl PointSurface {
         (d.dot(patch.normal) - h, (d - patch.normal * d.dot(patch.normal)).length(), patch.local)
     }
 
+    /// How densely the points sample the surface at the point nearest to x, against their
+    /// median density: the median over the points of π r²/k over the nearest point's, r the
+    /// radius of the ball about a point that holds its k nearest points (itself among them; k
+    /// the `neighbours` of [`PointSurface::try_new`]), so that π r²/k is the area of surface
+    /// per point there. A disc of many points counts them however they are arranged (a grid,
+    /// staggered rings, scattered at random), where the distance to one neighbour would not.
+    /// ∞ where the points repeat (a ball of radius 0).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_scan::implicit::PointSurface;
+    ///
+    /// // The plane z = 0 sampled on a unit grid for x < 0 and on a grid of step 1/4 for x ≥ 0:
+    /// // 16 times as dense there.
+    /// let mut points = Vec::new();
+    /// for j in 0..40 {
+    ///     for i in 0..40 {
+    ///         points.push(DVec3::new(i as f64 - 40.0, j as f64, 0.0));
+    ///     }
+    /// }
+    /// for j in 0..160 {
+    ///     for i in 0..160 {
+    ///         points.push(DVec3::new(i as f64 / 4.0, j as f64 / 4.0, 0.0));
+    ///     }
+    /// }
+    /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    /// let sparse = surface.relative_density(DVec3::new(-20.0, 20.0, 0.5));
+    /// let dense = surface.relative_density(DVec3::new(20.0, 20.0, 0.5));
+    /// assert!((dense / sparse - 16.0).abs() < 1e-9, "{}", dense / sparse);
+    /// ```
+    #[must_use]
+    pub fn relative_density(&self, x: DVec3) -> f64 {
+        let nearest =
+            self.tree.query(&x.to_array()).nearest_one::<SquaredEuclidean<f64>>().execute();
+        self.area / self.patches[nearest.item as usize].area
+    }
+
     /// Turns each patch to face as the nearest of `samples` (points of a surface wrapped round
     /// the point set, with their outward `normals`, one per sample) does; nothing if there are
     /// no samples or the counts differ.
@@ -411,7 +462,7 @@ fn fit_patch(p: DVec3, normal: DVec3, hood: &[DVec3]) -> Patch {
     let e1 = normal.any_orthonormal_vector();
     let e2 = normal.cross(e1);
     let c = fit_quadric(p, (e1, e2, normal), hood, 1.0).unwrap_or([0.0; 6]);
-    Patch { origin: p, e1, e2, normal, c, local: 0.0 }
+    Patch { origin: p, e1, e2, normal, c, local: 0.0, area: 0.0 }
 }
 
 /// The coefficients of the quadric height field h(x, y) about `p` in the frame `(e1, e2,

@@ -105,7 +105,8 @@ fn mesh_sources(
     let mut planned = planned;
     let images = clock.run_each(StageKind::GeometryImage, &mut planned, |part| {
         let texels = share(texels, part.area_fraction, kept);
-        part_image_or_sphere(part, texels, size, options.layout, true)
+        // Texels dense where the mesh's vertices are.
+        part_image_or_sphere(part, texels, size, options.layout, true, &mesh_density_weights)
     });
     for (part, image) in planned.iter().zip(images) {
         let image = image?;
@@ -345,7 +346,9 @@ fn settled_part_image(
     (layout, rescue): (Layout, bool),
 ) -> Result<ShrinkWrapImage, Error> {
     let texels = share(texels, part.area_fraction, kept);
-    let image = part_image_or_sphere(part, texels, size, layout, rescue)?;
+    // Texels dense where the points are.
+    let weigh = |c: &ClosedMesh| crate::shrinkwrap::point_density_weights(surface, c);
+    let image = part_image_or_sphere(part, texels, size, layout, rescue, &weigh)?;
     let (r, c) = (image.image.rows(), image.image.cols());
     let mut settled = settle(
         surface,

@@ -25,7 +25,7 @@ use crate::discparam::{
     DiscParamOptions, parameterise_disc, reflect_periodic, reflect_periodic_mask,
 };
 use crate::domain::Domain;
-use crate::sphereparam::{SphereParamOptions, parameterise};
+use crate::sphereparam::{SphereParamOptions, parameterise_weighted};
 use crate::spherical::Layout;
 use crate::torusparam::{TorusParamOptions, parameterise_torus};
 use crate::{Error, GeometryImage};
@@ -349,17 +349,20 @@ const MIN_SIDE: usize = 16;
 const MIN_SHEET_EFFICIENCY: f64 = 1e-9;
 
 /// The image of `part` over its domain, with about `texels` distinct texels (`resolution`, if
-/// given, for the sphere's layouts: rows × columns as the user asked).
+/// given, for the sphere's layouts: rows × columns as the user asked); a sphere's map weighs
+/// its stretch by `weigh` of the surface it maps (the maps of a torus and of a sheet do not
+/// weigh theirs).
 pub(crate) fn part_image(
     part: &PlannedPart,
     texels: usize,
     resolution: Option<(usize, usize)>,
+    weigh: &Weigh<'_>,
 ) -> Result<PartImage, Error> {
     let c = &part.closed;
     match part.domain {
         Domain::Sphere(layout) => {
             let (rows, cols) = resolution.unwrap_or_else(|| sphere_side(layout, texels));
-            let param = parameterise(c, &SphereParamOptions::default())?;
+            let param = parameterise_weighted(c, &weigh(c), &SphereParamOptions::default())?;
             let image = param.image(layout, rows, cols)?;
             Ok(PartImage {
                 image: image.image,
@@ -416,8 +419,9 @@ pub(crate) fn part_image_or_sphere(
     resolution: Option<(usize, usize)>,
     layout: Layout,
     any_failure: bool,
+    weigh: &Weigh<'_>,
 ) -> Result<PartImage, Error> {
-    let failed = match part_image(part, texels, resolution) {
+    let failed = match part_image(part, texels, resolution, weigh) {
         Ok(image)
             if part.domain == Domain::Sheet
                 && image.quality.stretch_efficiency() < MIN_SHEET_EFFICIENCY =>
@@ -445,8 +449,12 @@ pub(crate) fn part_image_or_sphere(
     );
     part.closed = closed;
     part.domain = Domain::Sphere(layout);
-    part_image(part, texels, resolution)
+    part_image(part, texels, resolution, weigh)
 }
+
+/// The weights of the stretch of a part's spherical map ([`parameterise_weighted`]), one per
+/// vertex of the surface it maps.
+pub(crate) type Weigh<'a> = dyn Fn(&ClosedMesh) -> Vec<f64> + Sync + 'a;
 
 /// The side of a square image of the sphere in `layout` with about `texels` distinct texels:
 /// a multiple of 8 (the doubled layouts mirror rows and columns), at least [`MIN_SIDE`] · 2.
@@ -473,6 +481,7 @@ pub(crate) fn outward_samples(parts: &[PlannedPart]) -> (Vec<DVec3>, Vec<DVec3>)
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sphereparam::mesh_density_weights;
     use hi_scan::repair::{MAX_HANDLES, mesh_parts};
 
     /// An octahedron of radius 1 about the origin and a tetrahedron of size 0.1 about (5, 0, 0):
@@ -555,9 +564,17 @@ mod tests {
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
         part.domain = Domain::Sheet;
-        let sheet_error = part_image(&part, 32 * 32, None).unwrap_err().to_string();
-        let image = part_image_or_sphere(&mut part, 32 * 32, None, Layout::FlatOctahedron, true)
-            .expect("the sphere's map");
+        let sheet_error =
+            part_image(&part, 32 * 32, None, &mesh_density_weights).unwrap_err().to_string();
+        let image = part_image_or_sphere(
+            &mut part,
+            32 * 32,
+            None,
+            Layout::FlatOctahedron,
+            true,
+            &mesh_density_weights,
+        )
+        .expect("the sphere's map");
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
         assert!(part.why.contains("not an open sheet"), "{}", part.why);
         assert!(part.why.contains(&sheet_error), "{} lacks {sheet_error}", part.why);
@@ -626,11 +643,19 @@ mod tests {
             plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES, 0.0);
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sheet, "{}", part.why);
-        let sheet = part_image(&part, 64 * 64, None).expect("a map, squeezed");
+        let sheet =
+            part_image(&part, 64 * 64, None, &mesh_density_weights).expect("a map, squeezed");
         let efficiency = sheet.quality.stretch_efficiency();
         assert!(efficiency < MIN_SHEET_EFFICIENCY, "{efficiency:e}");
-        part_image_or_sphere(&mut part, 64 * 64, None, Layout::FlatOctahedron, false)
-            .expect("the sphere's map");
+        part_image_or_sphere(
+            &mut part,
+            64 * 64,
+            None,
+            Layout::FlatOctahedron,
+            false,
+            &mesh_density_weights,
+        )
+        .expect("the sphere's map");
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
         assert!(part.why.contains("next to no texels"), "{}", part.why);
     }

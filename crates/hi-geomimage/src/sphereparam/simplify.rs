@@ -29,8 +29,8 @@ pub(super) struct Hierarchy {
     pub(super) face_alive: Vec<bool>,
     pub(super) vertex_faces: Vec<Vec<u32>>,
     pub(super) alive: Vec<bool>,
-    /// Surface area and squared edge lengths [opposite corner 0, 1, 2] of each face as it is
-    /// now (recomputed when a face's corners change).
+    /// Surface area (times the face's weight) and squared edge lengths [opposite corner 0, 1,
+    /// 2] of each face as it is now (recomputed when a face's corners change).
     pub(super) face_area: Vec<f64>,
     pub(super) face_l2: Vec<[f64; 3]>,
     /// The weight of the shape term of [`face_energy`](super::relax::face_energy).
@@ -42,10 +42,12 @@ pub(super) struct Hierarchy {
     pub(super) level_starts: Vec<usize>,
     pub(super) forced: usize,
     pub(super) area_floor: f64,
+    /// Each vertex's weight in the stretch (empty: all 1); a face's is its corners' mean.
+    pub(super) weights: Vec<f64>,
 }
 
 impl Hierarchy {
-    pub(super) fn new(mesh: &ClosedMesh) -> Self {
+    pub(super) fn new(mesh: &ClosedMesh, weights: Option<&[f64]>) -> Self {
         let n = mesh.positions.len();
         let mut vertex_faces = vec![Vec::with_capacity(7); n];
         for (f, t) in mesh.triangles.iter().enumerate() {
@@ -68,6 +70,7 @@ impl Hierarchy {
             level_starts: Vec::new(),
             forced: 0,
             area_floor: 0.01 * mesh.area() / mesh.triangles.len().max(1) as f64,
+            weights: weights.map(<[f64]>::to_vec).unwrap_or_default(),
         };
         for f in 0..mesh.triangles.len() {
             h.update_face_geometry(f);
@@ -79,7 +82,13 @@ impl Hierarchy {
         let [a, b, c] = self.faces[f].map(|k| self.positions[k as usize]);
         // Every triangle keeps some weight, so that the energy's barrier holds a triangle
         // open on the sphere even where it is flat on the surface.
-        self.face_area[f] = (0.5 * (b - a).cross(c - a).length()).max(self.area_floor);
+        // The weight scales the whole of the face's energy, the shape term too.
+        let w = if self.weights.is_empty() {
+            1.0
+        } else {
+            self.faces[f].iter().map(|&k| self.weights[k as usize]).sum::<f64>() / 3.0
+        };
+        self.face_area[f] = (0.5 * (b - a).cross(c - a).length()).max(self.area_floor) * w;
         self.face_l2[f] =
             [(b - c).length_squared(), (c - a).length_squared(), (a - b).length_squared()];
         // A uniform map spends σ² = (surface area / sphere area) on a triangle of surface
