@@ -240,9 +240,13 @@ pub fn density_weight(density: f64) -> f64 {
 }
 
 /// The [`density_weight`] of each vertex of `mesh` from the density of the mesh's vertices
-/// there, against their median density: the inverse of the mean area of its triangles, which
-/// is the area per vertex over 2 (a closed triangle mesh has twice as many triangles as
-/// vertices, near enough).
+/// there, against their median density (the inverse of the mean area of its triangles, which
+/// is the area per vertex over 2: a closed triangle mesh has twice as many triangles as
+/// vertices, near enough), and at least 1: the texels are denser where the vertices are, and
+/// no sparser than an even share where they are sparse. The texels of a mesh's image lie on
+/// its flat triangles; thinned out over a region of broad triangles, their rows cross the
+/// triangles' creases at a slant and show as ridges in the surface through them (measured on
+/// the back of `wuson`, a modelled mesh whose vertices crowd at its head).
 ///
 /// # Examples
 ///
@@ -275,7 +279,7 @@ pub fn mesh_density_weights(mesh: &ClosedMesh) -> Vec<f64> {
     let mut sorted = mean.clone();
     sorted.sort_by(f64::total_cmp);
     let median = sorted.get(n / 2).copied().unwrap_or(1.0);
-    mean.iter().map(|&a| density_weight(median / a)).collect()
+    mean.iter().map(|&a| density_weight(median / a).max(1.0)).collect()
 }
 
 /// [`parameterise`], with `weights` (checked) when given.
