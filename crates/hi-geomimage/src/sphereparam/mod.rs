@@ -255,13 +255,21 @@ pub fn density_weight(density: f64) -> f64 {
 /// use hi_geomimage::sphereparam::mesh_density_weights;
 /// use hi_scan::repair::close_mesh;
 ///
-/// // An octahedron stretched along z: every vertex's triangles have the same area, so every
-/// // weight is 1.
-/// let positions = [DVec3::X, DVec3::Y, DVec3::NEG_X, DVec3::NEG_Y, DVec3::Z * 3.0, DVec3::NEG_Z * 3.0];
+/// // An octahedron whose top is pulled down to z = h: its upper triangles have area
+/// // √(2h² + 1)/2, its lower ones √3/2. The top vertex's triangles are the smallest, the
+/// // equator's mean area is the median, and the bottom vertex's triangles are the largest.
+/// let h = 0.25;
+/// let positions = [DVec3::X, DVec3::Y, DVec3::NEG_X, DVec3::NEG_Y, DVec3::Z * h, DVec3::NEG_Z];
 /// let triangles =
 ///     [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4], [1, 0, 5], [2, 1, 5], [3, 2, 5], [0, 3, 5]];
 /// let mesh = close_mesh(&positions, &triangles).unwrap();
-/// assert!(mesh_density_weights(&mesh).iter().all(|&w| (w - 1.0).abs() < 1e-12));
+/// let (up, down) = (0.5 * (2.0 * h * h + 1.0f64).sqrt(), 0.5 * 3f64.sqrt());
+/// let median = 0.5 * (up + down);
+/// for (p, w) in mesh.positions.iter().zip(mesh_density_weights(&mesh)) {
+///     // Density is the inverse of the mean area; the weight its square, at least 1.
+///     let expected = if p.z > 0.0 { (median / up).powi(2) } else { 1.0 };
+///     assert!((w - expected).abs() < 1e-12, "{p}: {w} vs {expected}");
+/// }
 /// ```
 #[must_use]
 pub fn mesh_density_weights(mesh: &ClosedMesh) -> Vec<f64> {
