@@ -203,7 +203,7 @@ pub(crate) enum FormatName {
 /// Options of `hi fit`.
 #[derive(Debug, Args)]
 pub(crate) struct FitArgs {
-    /// The scan: .obj, .ply, .off, .stl, .xyz, .pts, .gltf or .glb (every mesh the scene places,
+    /// The scan: .obj, .ply, .off, .stl, .xyz (.pwn), .pts, .gltf or .glb (every mesh the scene places,
     /// in world space); with --out-dir, any number of scans, folders of scans and quoted globs.
     #[arg(value_name = "SCAN", required = true, num_args = 1..)]
     pub(crate) scans: Vec<PathBuf>,

@@ -3,6 +3,7 @@
 //! an open sheet) gives three named meshes in one scene, which read back with the glTF reader,
 //! pass the Khronos glTF-Validator and open in trimesh as three named geometries; an open sheet
 //! gives a mesh with one boundary loop that follows the scan's rim; `--closed` caps it instead;
+//! two sheets far apart are each fitted;
 //! an unevenly dense range scan (CGAL's, where present) is fitted; and bad clouds are named.
 //! The validator and trimesh are peers: without them a check says so and passes, unless
 //! `HI_REQUIRE_PEERS=1` (as in CI).
@@ -279,6 +280,33 @@ fn an_open_sheet_gives_one_rim_that_follows_the_scans() {
     let closed = fitted(&["fit", scan.path(), "-o", glb.path(), "--closed"]);
     assert_eq!(closed["topology"]["domains"], serde_json::json!(["sphere"]), "{closed}");
     assert_eq!(closed["parts"][0]["holes_filled"], 1);
+}
+
+/// Two open sheets' bare points 100 units apart along the diagonal (islands far off the
+/// mainland): the zero set's grid spans more nodes than a dense grid holds (2·10⁹ on its finer
+/// grid, 3·10⁸ on its coarser), and each sheet is fitted as an open sheet on its own, through
+/// its points.
+#[test]
+fn parts_far_apart_are_each_fitted() {
+    let mut mesh = (Vec::new(), Vec::new());
+    sheet(&mut mesh, [0.0; 3]);
+    sheet(&mut mesh, [100.0; 3]);
+    let mut xyz = String::new();
+    for p in &mesh.0 {
+        let _ = writeln!(xyz, "{} {} {}", p[0], p[1], p[2]);
+    }
+    let scan = scan_file(&xyz, "xyz");
+    let glb = TempFile::path_with("glb");
+    let report = fitted(&["fit", scan.path(), "-o", glb.path()]);
+    assert_eq!(report["topology"]["domains"], serde_json::json!(["sheet", "sheet"]), "{report}");
+    // Every point near its sheet, against a sheet's own diagonal: 10⁻⁴ of it on average, a
+    // hundredth at worst.
+    let diagonal = (8.0f64 + 0.09).sqrt();
+    for part in report["parts"].as_array().expect("parts") {
+        let errors = &part["both_ways"]["scan_to_surface"];
+        let (mean, max) = (num(&errors["mean"]), num(&errors["max"]));
+        assert!(mean < 1e-4 * diagonal && max < 0.01 * diagonal, "{part}");
+    }
 }
 
 #[test]

@@ -115,11 +115,15 @@ const CANDIDATES: usize = 8;
 impl PointSurface {
     /// The local surface of `points`: a quadric patch about each, fitted to its `neighbours`
     /// nearest points (at least 8), across its normal in `normals` when they are given (one per
-    /// point, not necessarily of unit length; they also fix the patches' sides), else across
-    /// the least principal axis of its neighbours, the sides then made to agree along a
-    /// minimum spanning tree of the neighbour graph (Hoppe et al. 1992, §3.3), each connected
-    /// part facing +z at its highest point. [`PointSurface::orient_to`] turns them to face as
-    /// a surface wrapped round the points does.
+    /// point, not necessarily of unit length), else across the least principal axis of its
+    /// neighbours. The sides are made to agree along a minimum spanning tree of the neighbour
+    /// graph (Hoppe et al. 1992, §3.3), each connected part facing +z at its highest point;
+    /// given normals keep their own sides instead when those are one orientation (they agree
+    /// with the tree's on at least 80 % of the points, or disagree on as many). Normals whose
+    /// sides are mixed at random, as a scanner's or a program's that estimated their directions
+    /// only may be (CGAL's `cube.pwn`, half of them facing in), would make the signed distance
+    /// change sign from one point to the next. [`PointSurface::orient_to`] turns them to face
+    /// as a surface wrapped round the points does.
     ///
     /// # Errors
     ///
@@ -151,26 +155,53 @@ impl PointSurface {
         if points.len() < neighbours.max(8) {
             return Err(Error::TooFewPoints { found: points.len(), needed: neighbours.max(8) });
         }
-        let mut surface = Self::fitted(points, normals, neighbours)?;
-        if normals.is_none() {
-            surface.orient_by_tree(points, TREE_NEIGHBOURS);
+        let (mut surface, nearest) = Self::fitted(points, normals, neighbours)?;
+        let given: Vec<DVec3> = surface.patches.iter().map(|p| p.normal).collect();
+        surface.orient_by_tree(points, &nearest);
+        if normals.is_some() {
+            // The file's sides, unless they disagree with the tree's on too many points to be
+            // one orientation (normals whose directions were estimated but not their sides).
+            let agree =
+                given.iter().zip(&surface.patches).filter(|(g, p)| g.dot(p.normal) > 0.0).count()
+                    as f64
+                    / given.len().max(1) as f64;
+            if (agree - 0.5).abs() >= ORIENTED - 0.5 {
+                for (g, p) in given.iter().zip(&mut surface.patches) {
+                    if g.dot(p.normal) < 0.0 {
+                        p.flip();
+                    }
+                }
+            }
         }
         Ok(surface)
     }
 
-    /// The patches, sides as given or as a first guess (away from the centroid).
-    fn fitted(points: &[DVec3], normals: Option<&[DVec3]>, k: usize) -> Result<Self, Error> {
+    /// The patches, sides as given or as a first guess (away from the centroid), and each
+    /// point's [`TREE_NEIGHBOURS`] nearest other points (when no normals are given, for
+    /// [`PointSurface::orient_by_tree`]; else none).
+    fn fitted(
+        points: &[DVec3],
+        normals: Option<&[DVec3]>,
+        k: usize,
+    ) -> Result<(Self, Vec<[u32; TREE_NEIGHBOURS]>), Error> {
         let tree: ImmutableKdTree<f64, 3> =
             ImmutableKdTree::new_from_slice(crate::distance::as_arrays(points))
                 .map_err(|_| Error::Degenerate { what: "the points do not form a kd-tree" })?;
         let k = NonZero::new(k.max(8)).unwrap_or(NonZero::<usize>::MIN);
         let given = normals.filter(|n| n.len() == points.len());
-        let fitted: Vec<(Patch, f64)> = points
+        let fitted: Vec<(Patch, f64, [u32; TREE_NEIGHBOURS])> = points
             .par_iter()
             .enumerate()
             .map(|(i, p)| {
                 let near =
                     tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f64>>(k).execute();
+                // The nearest others for the orientation's graph (of the k nearest, the point
+                // itself among them; slots left over keep u32::MAX).
+                let mut others = [u32::MAX; TREE_NEIGHBOURS];
+                let me = u32::try_from(i).unwrap_or(u32::MAX);
+                for (slot, n) in others.iter_mut().zip(near.iter().filter(|n| n.item != me)) {
+                    *slot = n.item;
+                }
                 // From the distance to the 8th nearest neighbour, which follows the density of
                 // the points whether they lie on a grid or are scattered at random (whose
                 // nearest neighbour is about half as far): the step of the square grid whose
@@ -185,7 +216,7 @@ impl PointSurface {
                     .and_then(|n| n[i].try_normalize())
                     .or_else(|| least_axis(&hood))
                     .unwrap_or(DVec3::Z);
-                (Patch { local: spacing, area, ..fit_patch(*p, normal, &hood) }, spacing)
+                (Patch { local: spacing, area, ..fit_patch(*p, normal, &hood) }, spacing, others)
             })
             .collect();
         let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
@@ -194,7 +225,8 @@ impl PointSurface {
         // The denser tenth against a random sample's: evenly dense above EVEN.
         let evenness = spacings[spacings.len() / 10] / (RANDOM_TENTH * spacing);
         let fine = if evenness >= EVEN { spacing } else { evenness.max(FINE_MIN) * spacing };
-        let mut patches: Vec<Patch> = fitted.into_iter().map(|f| f.0).collect();
+        let (mut patches, nearest): (Vec<Patch>, Vec<[u32; TREE_NEIGHBOURS]>) =
+            fitted.into_iter().map(|f| (f.0, f.2)).unzip();
         let mut areas: Vec<f64> = patches.iter().map(|p| p.area).collect();
         areas.sort_by(f64::total_cmp);
         let area = areas[areas.len() / 2];
@@ -208,7 +240,7 @@ impl PointSurface {
                 }
             }
         }
-        Ok(Self { tree, patches, spacing, fine, area })
+        Ok((Self { tree, patches, spacing, fine, area }, nearest))
     }
 
     /// The points' spacing: the median over the points of r/√2, r the distance to a point's
@@ -292,33 +324,28 @@ impl PointSurface {
     }
 
     /// Orients the patches consistently (Hoppe et al. 1992, §3.3): along a minimum spanning
-    /// tree of the graph joining each point to its `k` nearest, weighted by 1 − |nᵢ·nⱼ| so that
+    /// tree of the graph joining each point to its `nearest` others (its [`TREE_NEIGHBOURS`]
+    /// nearest, as `fitted` found them; `u32::MAX` for none), weighted by 1 − |nᵢ·nⱼ| so that
     /// the orientation passes first between nearly parallel planes, each patch turned to agree
     /// with the one it is reached from; each connected part starts from its highest point,
     /// whose normal points up (the top of a closed surface faces +z). The tree is Kruskal's (the
     /// graph's edges sorted by weight, each joining two trees kept), then walked from each
     /// part's highest point.
-    fn orient_by_tree(&mut self, points: &[DVec3], k: usize) {
+    fn orient_by_tree(&mut self, points: &[DVec3], nearest: &[[u32; TREE_NEIGHBOURS]]) {
         let n = points.len();
-        let k = NonZero::new(k + 1).unwrap_or(NonZero::<usize>::MIN);
-        let (tree, patches) = (&self.tree, &self.patches);
+        let patches = &self.patches;
         // The graph's edges, each once as (weight, lower end, higher end): weights in [0, 1],
         // whose bits order as the numbers do.
-        let mut edges: Vec<(u64, u32, u32)> = points
+        let mut edges: Vec<(u64, u32, u32)> = nearest
             .par_iter()
             .enumerate()
-            .flat_map_iter(|(i, p)| {
+            .flat_map_iter(|(i, near)| {
                 let i = u32::try_from(i).unwrap_or(u32::MAX);
                 let normal = patches[i as usize].normal;
-                tree.query(&p.to_array())
-                    .nearest_n::<SquaredEuclidean<f64>>(k)
-                    .execute()
-                    .into_iter()
-                    .filter(move |q| q.item != i)
-                    .map(move |q| {
-                        let w = 1.0 - normal.dot(patches[q.item as usize].normal).abs();
-                        (w.max(0.0).to_bits(), i.min(q.item), i.max(q.item))
-                    })
+                near.iter().filter(|&&q| (q as usize) < n).map(move |&q| {
+                    let w = 1.0 - normal.dot(patches[q as usize].normal).abs();
+                    (w.max(0.0).to_bits(), i.min(q), i.max(q))
+                })
             })
             .collect();
         edges.par_sort_unstable();
@@ -512,6 +539,12 @@ fn least_axis(hood: &[DVec3]) -> Option<DVec3> {
 /// Neighbours joined to each point in the graph [`PointSurface::orient_by_tree`] spans.
 const TREE_NEIGHBOURS: usize = 8;
 
+/// A file's normals are taken with their sides when the sides the tree of
+/// [`PointSurface::orient_by_tree`] gives them agree with theirs on at least this fraction of
+/// the points, or disagree on as many (all turned: still one orientation); nearer half and
+/// half, their sides are not one orientation and the tree's are taken.
+const ORIENTED: f64 = 0.8;
+
 /// The grid spacing of [`PointSurface::zero_set`] for points as dense as their surface's
 /// detail, in point spacings.
 pub const CELL: f64 = 1.5;
@@ -550,8 +583,9 @@ impl PointSurface {
     /// # Errors
     ///
     /// [`Error::InvalidOption`] for a cell that is not positive and finite;
-    /// [`Error::Degenerate`] when the grid would have more than
-    /// [`crate::surfacenets::MAX_NODES`] nodes (a cell far finer than the points' extent).
+    /// [`Error::Degenerate`] when the grid would span more than
+    /// [`crate::surfacenets::MAX_SPARSE_NODES`] nodes (a cell far finer than the points'
+    /// extent).
     ///
     /// # Examples
     ///
@@ -600,7 +634,7 @@ impl PointSurface {
             .to_array()
             .map(|d| if d.is_finite() && d < 1e6 { d as usize + 1 } else { usize::MAX / 4 });
         let nodes = dims.iter().try_fold(1usize, |a, &d| a.checked_mul(d)).unwrap_or(usize::MAX);
-        if nodes > crate::surfacenets::MAX_NODES {
+        if nodes as u64 > crate::surfacenets::MAX_SPARSE_NODES {
             return Err(Error::Degenerate { what: "the points are too sparse for their extent" });
         }
         // The band's nodes are marked +∞, then given their value or NaN.

@@ -29,6 +29,12 @@ const NONE: u32 = u32::MAX;
 /// The most grid nodes [`surface_nets`] takes (2²⁷: a 512³ grid).
 pub const MAX_NODES: usize = 1 << 27;
 
+/// The most grid nodes a sparse grid spans, stored or not (2³²: its table of bricks, one
+/// 4-byte entry per 8³ nodes, is then 32 MiB). A point set whose parts lie far apart (a
+/// country's points on the globe with its islands and territories overseas) spans a grid of
+/// its fine cell far larger than the band its surfaces fill.
+pub const MAX_SPARSE_NODES: u64 = 1 << 32;
+
 /// A function sampled at the nodes of a regular grid.
 #[derive(Clone, Copy, Debug)]
 pub struct Grid<'a> {
@@ -205,14 +211,24 @@ impl SparseGrid {
     /// [`Grid`]'s values (x fastest, then y, then z), skipping the bricks not stored.
     fn each_stored_node(&self, mut f: impl FnMut(usize, usize, usize)) {
         let [nx, ny, nz] = self.dims;
-        for k in 0..nz {
-            for j in 0..ny {
-                for bi in 0..self.bricks[0] {
-                    if self.table[self.brick_of(bi * BRICK, j, k)] == NONE {
-                        continue;
-                    }
-                    for i in bi * BRICK..((bi + 1) * BRICK).min(nx) {
-                        f(i, j, k);
+        let [bx, by, _] = self.bricks;
+        // The stored bricks in the table's order: by layer (k), then row (j), then along x,
+        // so that the empty rows and layers of a grid spanning parts far apart cost nothing.
+        let mut bricks = self.stored.clone();
+        bricks.sort_unstable();
+        for layer in bricks.chunk_by(|a, b| a / (bx * by) == b / (bx * by)) {
+            let bk = layer[0] / (bx * by);
+            let rows: Vec<&[usize]> = layer.chunk_by(|a, b| a / bx == b / bx).collect();
+            for k in bk * BRICK..((bk + 1) * BRICK).min(nz) {
+                for row in &rows {
+                    let bj = row[0] / bx % by;
+                    for j in bj * BRICK..((bj + 1) * BRICK).min(ny) {
+                        for &b in *row {
+                            let bi = b % bx;
+                            for i in bi * BRICK..((bi + 1) * BRICK).min(nx) {
+                                f(i, j, k);
+                            }
+                        }
                     }
                 }
             }

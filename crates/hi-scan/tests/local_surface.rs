@@ -240,3 +240,76 @@ fn far_points_project_to_heights_the_patches_were_fitted_over() {
     assert!((near.z - (near.x * near.x + near.y * near.y)).abs() < 1e-3, "{near}");
     assert!(near.distance(DVec3::new(0.1, 0.05, 0.2)) < 0.2, "{near}");
 }
+
+#[test]
+fn normals_with_sides_mixed_at_random_are_oriented_by_the_tree() {
+    // The torus sampled with its outward normals, half of them turned in at random (their
+    // directions right, their sides not one orientation, as an estimate of directions alone
+    // gives): the signed distance is still negative inside the tube and positive outside,
+    // everywhere round it. Given with their sides all outward, or all turned in, they keep them.
+    let points = torus_points(6000, 1.0, 0.35, 0.0, 7);
+    let outward: Vec<DVec3> = points
+        .iter()
+        .map(|p| {
+            let ring = DVec3::new(p.x, p.y, 0.0).normalize();
+            (*p - ring).normalize()
+        })
+        .collect();
+    let mut seed = 11;
+    let mixed: Vec<DVec3> =
+        outward.iter().map(|n| if lcg(&mut seed) < 0.5 { -*n } else { *n }).collect();
+    let inward: Vec<DVec3> = outward.iter().map(|n| -*n).collect();
+    // Points inside the tube and outside it, half its radius from the surface.
+    let probes = |sign: f64| -> Vec<DVec3> {
+        (0..64)
+            .map(|k| {
+                let (a, b) = (TAU * k as f64 / 64.0, TAU * (k * 7 % 64) as f64 / 64.0);
+                let ring = DVec3::new(a.cos(), a.sin(), 0.0);
+                let across = ring * b.cos() + DVec3::Z * b.sin();
+                ring + across * (0.35 + sign * 0.17)
+            })
+            .collect()
+    };
+    let sides = |normals: &[DVec3]| {
+        let surface = PointSurface::try_new(&points, Some(normals), 16).unwrap();
+        let count = |sign: f64| {
+            probes(sign).iter().filter(|x| surface.signed_distance(**x).0 * sign > 0.0).count()
+        };
+        (count(-1.0), count(1.0))
+    };
+    assert_eq!(sides(&mixed), (64, 64), "mixed sides: the tree's, outward");
+    assert_eq!(sides(&outward), (64, 64), "outward: kept");
+    assert_eq!(sides(&inward), (0, 0), "inward: kept, every sign the other way");
+}
+
+#[test]
+fn the_zero_set_of_parts_far_apart_is_found_on_a_sparse_grid() {
+    // Two unit spheres of 2000 points each, 260 radii apart along the diagonal: the grid of the
+    // zero set spans about 2·10⁹ nodes (beyond a dense grid's 2²⁷), of which only the bands
+    // about the spheres are stored. Each sphere gives its own closed part, on the sphere.
+    let sphere = |centre: DVec3| -> Vec<DVec3> {
+        (0..2000)
+            .map(|k| {
+                let z = 1.0 - (2 * k + 1) as f64 / 2000.0;
+                let phi = k as f64 * 2.399_963_229_728_653;
+                let s = (1.0 - z * z).sqrt();
+                centre + DVec3::new(s * phi.cos(), s * phi.sin(), z)
+            })
+            .collect()
+    };
+    let far = DVec3::splat(150.0);
+    let points = [sphere(DVec3::ZERO), sphere(far)].concat();
+    let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    let cell = hi_scan::implicit::CELL * surface.spacing();
+    let nodes = (far + DVec3::splat(2.0)) / cell;
+    assert!(nodes.x * nodes.y * nodes.z > (1u64 << 27) as f64);
+    let (vertices, triangles) = surface.zero_set(cell).unwrap();
+    let parts = hi_scan::repair::mesh_parts(&vertices, &triangles).unwrap();
+    assert_eq!(parts.parts.len(), 2);
+    for part in &parts.parts {
+        let centre = if part.positions[0].length() < 2.0 { DVec3::ZERO } else { far };
+        assert!(part.positions.iter().all(|p| (p.distance(centre) - 1.0).abs() < 0.02));
+        // Closed, of genus 0.
+        assert_eq!(part.positions.len() as i64 - part.triangles.len() as i64 / 2, 2);
+    }
+}

@@ -306,10 +306,12 @@ fn formats_come_from_extensions() {
     assert_eq!(ScanFormat::try_from_path("a/b.PLY".as_ref()).unwrap(), ScanFormat::Ply);
     assert_eq!(ScanFormat::try_from_path("x.GLB".as_ref()).unwrap(), ScanFormat::Glb);
     assert_eq!(ScanFormat::try_from_path("x.gltf".as_ref()).unwrap(), ScanFormat::Gltf);
+    // CGAL's points with normals are XYZ lines of six numbers.
+    assert_eq!(ScanFormat::try_from_path("oni.PWN".as_ref()).unwrap(), ScanFormat::Xyz);
     let e = ScanFormat::try_from_path("scan.las".as_ref()).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "scan.las: unknown scan format \"las\"; expected one of .obj, .ply, .off, .stl, .xyz, .pts, .gltf, .glb"
+        "scan.las: unknown scan format \"las\"; expected one of .obj, .ply, .off, .stl, .xyz, .pwn, .pts, .gltf, .glb"
     );
     let e = read_scan("no/such/file.obj".as_ref()).unwrap_err();
     assert!(e.to_string().starts_with("OBJ: cannot read no/such/file.obj:"), "{e}");

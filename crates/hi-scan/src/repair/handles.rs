@@ -7,7 +7,8 @@ use hi_par::*;
 
 use super::edges::EdgeIndex;
 use super::holes::{boundary_loops, fill_holes};
-use super::{ClosedMesh, Repair, edge_key};
+use super::homology::{Homology, IndependentClasses};
+use super::{ClosedMesh, Repair};
 
 /// The length of the shortest loop found on the closed mesh `mesh` that does not separate it
 /// (the loop [`close_part`](super::close_part) would cut first, found the same way), or
@@ -93,6 +94,18 @@ pub(super) fn cut_handles(
     for &v in kept_open.iter().flatten() {
         on_boundary[v as usize] = true;
     }
+    let Some(grid) = BlockGrid::of(faces, positions) else {
+        return;
+    };
+    // Every size of block and the whole mesh, side by side (the largest blocks, one of them
+    // the whole mesh, are each one thread's work), their loops in the sizes' order.
+    let mut searches: Vec<BlockSearch> = HANDLE_BLOCKS
+        .iter()
+        .chain(&[f64::INFINITY])
+        .map(|&blocks| BlockSearch::new(grid, blocks))
+        .collect();
+    // The faces a cut changed or made since the last search (none searched yet: all).
+    let mut changed: Vec<bool> = Vec::new();
     while repair.handles_cut < max_handles {
         let chi = euler_characteristic(positions.len(), faces.len(), open);
         if chi >= chi_wanted {
@@ -101,12 +114,9 @@ pub(super) fn cut_handles(
         // Every block's loop at every size of block (a loop may fit a block of one grid and
         // not the next, and the roots differ), shortest first; as many of them cut at once as
         // are disjoint and, together, do not separate the surface.
-        // The sizes side by side (the largest blocks, one of them the whole mesh, are each one
-        // thread's work), their loops in the sizes' order.
-        let sides: Vec<f64> = HANDLE_BLOCKS.iter().copied().chain([f64::INFINITY]).collect();
-        let mut found: Vec<(f64, Vec<u32>)> = sides
-            .par_iter()
-            .flat_map_iter(|&side| handle_loops(faces, positions, &on_boundary, side))
+        let mut found: Vec<(f64, Vec<u32>)> = searches
+            .par_iter_mut()
+            .flat_map_iter(|search| search.loops(faces, positions, &on_boundary, &changed))
             .collect();
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let wanted = usize::try_from((chi_wanted - chi) / 2)
@@ -143,6 +153,7 @@ pub(super) fn cut_handles(
             })
             .collect();
         fill_holes(&cuts, faces, positions, scan_vertex, filled);
+        changed = faces.iter().enumerate().map(|(f, t)| before.get(f) != Some(t)).collect();
         if euler_characteristic(positions.len(), faces.len(), open) != chi + 2 * cut as i64 {
             // Cannot happen for non-separating loops of a closed mesh; stop rather than loop.
             return;
@@ -154,22 +165,18 @@ pub(super) fn cut_handles(
 /// Of the loops `found` (shortest first), at most `wanted` that share no vertex and that,
 /// cut together, leave the faces of the closed mesh `faces` (over `vertices` vertices)
 /// connected: each would lower the genus by one (the greedy choice of a shortest system of
-/// loops, Erickson and Whittlesey 2005). The first loop is always taken: it does not
-/// separate the surface on its own.
+/// loops, Erickson and Whittlesey 2005). Disjoint loops cut together leave the surface in one
+/// piece exactly when their mod-2 homology classes are independent ([`Homology`]); a loop that
+/// separates the surface alone (class 0) is never taken.
 pub(super) fn independent_loops(
     faces: &[[u32; 3]],
     vertices: usize,
     found: Vec<(f64, Vec<u32>)>,
     wanted: usize,
 ) -> Vec<Vec<u32>> {
-    // Pairs of faces across each edge, keyed by the edge.
-    let pairs: Vec<(u64, u32, u32)> = EdgeIndex::undirected(faces)
-        .groups()
-        .filter(|(_, _, g)| g.len() == 2)
-        .map(|(a, b, g)| (edge_key(a, b), g[0].1 / 3, g[1].1 / 3))
-        .collect();
+    let homology = Homology::new(faces);
+    let mut classes = IndependentClasses::default();
     let mut used = vec![false; vertices];
-    let mut barrier: Vec<u64> = Vec::new();
     let mut chosen: Vec<Vec<u32>> = Vec::new();
     for (_, lp) in found {
         if chosen.len() >= wanted {
@@ -178,37 +185,17 @@ pub(super) fn independent_loops(
         if lp.iter().any(|&v| used.get(v as usize).is_none_or(|&u| u)) {
             continue;
         }
-        let m = lp.len();
-        let mut trial = barrier.clone();
-        trial.extend((0..m).map(|i| edge_key(lp[i], lp[(i + 1) % m])));
-        trial.sort_unstable();
-        if chosen.is_empty() || faces_connected(faces.len(), &pairs, &trial) {
+        let Some(class) = homology.of_loop(&lp) else {
+            continue;
+        };
+        if classes.insert(class) {
             for &v in &lp {
                 used[v as usize] = true;
             }
             chosen.push(lp);
-            barrier = trial;
         }
     }
     chosen
-}
-
-/// Whether `n` faces joined across the edges of `pairs` (edge, face, face) but the sorted
-/// `barrier` edges form one piece.
-pub(super) fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u64]) -> bool {
-    let mut parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
-    let mut pieces = n;
-    for &(key, f, g) in pairs {
-        if barrier.binary_search(&key).is_ok() {
-            continue;
-        }
-        let (rf, rg) = (find_root(&mut parent, f), find_root(&mut parent, g));
-        if rf != rg {
-            parent[rf as usize] = rg;
-            pieces -= 1;
-        }
-    }
-    pieces <= 1
 }
 
 /// The root of `x` in the union-find forest `parent` (each entry its parent, a root its own),
@@ -237,58 +224,127 @@ fn handle_loops(
     on_boundary: &[bool],
     blocks: f64,
 ) -> Vec<(f64, Vec<u32>)> {
-    let at = |k: u32| positions[k as usize];
-    let mean_edge = faces
-        .iter()
-        .map(|t| {
-            at(t[0]).distance(at(t[1])) + at(t[1]).distance(at(t[2])) + at(t[2]).distance(at(t[0]))
-        })
-        .sum::<f64>()
-        / (3 * faces.len()).max(1) as f64;
-    let side = blocks * mean_edge;
-    if !(side > 0.0 && mean_edge.is_finite()) {
+    let Some(grid) = BlockGrid::of(faces, positions) else {
         return Vec::new();
-    }
-    let lo = positions.iter().fold(DVec3::INFINITY, |a, p| a.min(*p));
-    let mut all: Vec<(f64, Vec<u32>)> = Vec::new();
-    for offset in [0.0, 0.5] {
-        if blocks.is_infinite() && offset > 0.0 {
-            // One block either way.
-            break;
-        }
-        // Faces by block, blocks in a fixed order: a block's indices (from 0, as the
-        // centroids lie above `lo`) packed into 21 bits each, which keeps their order (blocks
-        // beyond 2²¹ along an axis, on no real mesh, share the last).
-        let mut keyed: Vec<(u64, u32)> = faces
+    };
+    let mut search = BlockSearch::new(grid, blocks);
+    search.loops(faces, positions, on_boundary, &[])
+}
+
+/// Where the blocks of a handle search lie: the mean edge length of the mesh and the low corner
+/// of its box, fixed over the rounds of [`cut_handles`] so that a block the last round's cuts
+/// did not touch holds the same faces again.
+#[derive(Clone, Copy)]
+pub(super) struct BlockGrid {
+    /// The mesh's mean edge length.
+    mean_edge: f64,
+    /// The low corner of its vertices' box.
+    lo: DVec3,
+}
+
+impl BlockGrid {
+    /// The grid of the mesh `faces` over `positions`; `None` for a mesh with no extent.
+    pub(super) fn of(faces: &[[u32; 3]], positions: &[DVec3]) -> Option<Self> {
+        let at = |k: u32| positions[k as usize];
+        let mean_edge = faces
             .iter()
-            .enumerate()
-            .map(|(f, t)| {
-                let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
-                // (One block, 0, for an infinite side.)
-                #[expect(
-                    clippy::cast_possible_truncation,
-                    clippy::cast_sign_loss,
-                    reason = "a block index"
-                )]
-                let key =
-                    ((c - lo) / side + offset).floor().to_array().iter().fold(0u64, |key, &x| {
-                        (key << 21) | (x.max(0.0) as u64).min(BLOCK_INDEX_MAX)
-                    });
-                (key, u32::try_from(f).unwrap_or(u32::MAX))
+            .map(|t| {
+                at(t[0]).distance(at(t[1]))
+                    + at(t[1]).distance(at(t[2]))
+                    + at(t[2]).distance(at(t[0]))
             })
-            .collect();
-        keyed.par_sort_unstable();
-        let blocks: Vec<&[(u64, u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
-        let found: Vec<(f64, Vec<u32>)> = blocks
-            .par_iter()
-            .flat_map_iter(|block| {
-                let block: Vec<u32> = block.iter().map(|&(_, f)| f).collect();
-                block_loop(faces, positions, on_boundary, &block)
-            })
-            .collect();
-        all.extend(found);
+            .sum::<f64>()
+            / (3 * faces.len()).max(1) as f64;
+        let lo = positions.iter().fold(DVec3::INFINITY, |a, p| a.min(*p));
+        (mean_edge > 0.0 && mean_edge.is_finite() && lo.is_finite())
+            .then_some(Self { mean_edge, lo })
     }
-    all
+}
+
+/// Loops with their lengths, shortest first.
+type Loops = Vec<(f64, Vec<u32>)>;
+
+/// The blocks of one size of a handle search, with the loops each block held when it was last
+/// searched ([`block_loop`]), by block and grid offset.
+pub(super) struct BlockSearch {
+    /// The grid.
+    grid: BlockGrid,
+    /// The blocks' side in mean edge lengths (infinite for the whole mesh).
+    blocks: f64,
+    /// The loops of each block searched, on each grid (offset 0, then 0.5).
+    found: [std::collections::HashMap<u64, Loops>; 2],
+}
+
+impl BlockSearch {
+    /// A search of blocks of `blocks` mean edge lengths on `grid`, nothing searched yet.
+    pub(super) fn new(grid: BlockGrid, blocks: f64) -> Self {
+        Self { grid, blocks, found: Default::default() }
+    }
+
+    /// The loops of every block of the mesh `faces` (see [`handle_loops`]); a block with no face
+    /// flagged in `changed` (shorter than the faces: those beyond it are new) that was searched
+    /// before gives the loops it gave then, which a search would find again.
+    pub(super) fn loops(
+        &mut self,
+        faces: &[[u32; 3]],
+        positions: &[DVec3],
+        on_boundary: &[bool],
+        changed: &[bool],
+    ) -> Vec<(f64, Vec<u32>)> {
+        let at = |k: u32| positions[k as usize];
+        let side = self.blocks * self.grid.mean_edge;
+        let lo = self.grid.lo;
+        let mut all: Vec<(f64, Vec<u32>)> = Vec::new();
+        for (grid, offset) in [0.0, 0.5].into_iter().enumerate() {
+            if self.blocks.is_infinite() && offset > 0.0 {
+                // One block either way.
+                break;
+            }
+            // Faces by block, blocks in a fixed order: a block's indices (from 0, as the
+            // centroids lie above `lo`) packed into 21 bits each, which keeps their order
+            // (blocks beyond 2²¹ along an axis, on no real mesh, share the last).
+            let mut keyed: Vec<(u64, u32)> = faces
+                .iter()
+                .enumerate()
+                .map(|(f, t)| {
+                    let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
+                    // (One block, 0, for an infinite side.)
+                    #[expect(
+                        clippy::cast_possible_truncation,
+                        clippy::cast_sign_loss,
+                        reason = "a block index"
+                    )]
+                    let key = ((c - lo) / side + offset)
+                        .floor()
+                        .to_array()
+                        .iter()
+                        .fold(0u64, |key, &x| {
+                            (key << 21) | (x.max(0.0) as u64).min(BLOCK_INDEX_MAX)
+                        });
+                    (key, u32::try_from(f).unwrap_or(u32::MAX))
+                })
+                .collect();
+            keyed.par_sort_unstable();
+            let blocks: Vec<&[(u64, u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
+            let cache = &self.found[grid];
+            let searched: Vec<(u64, Loops)> = blocks
+                .par_iter()
+                .map(|block| {
+                    let key = block[0].0;
+                    let clean =
+                        block.iter().all(|&(_, f)| changed.get(f as usize).is_some_and(|&c| !c));
+                    if clean && let Some(loops) = cache.get(&key) {
+                        return (key, loops.clone());
+                    }
+                    let block: Vec<u32> = block.iter().map(|&(_, f)| f).collect();
+                    (key, block_loop(faces, positions, on_boundary, &block))
+                })
+                .collect();
+            all.extend(searched.iter().flat_map(|(_, loops)| loops.iter().cloned()));
+            self.found[grid] = searched.into_iter().collect();
+        }
+        all
+    }
 }
 
 /// The loops found in the faces `block` of a mesh that do not separate them (each alone): their

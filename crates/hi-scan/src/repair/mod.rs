@@ -36,29 +36,33 @@
 //! 9. a closed result is flipped if its signed volume is negative, so that it winds outward.
 //!
 //! A loop is found as Erickson and Whittlesey find the shortest loops through a point (2005):
-//! within each block (faces grouped by their centroids, on two grids offset by half a block,
-//! so that a short loop seldom straddles blocks of both), a shortest-path tree from a root and
-//! a spanning tree of the faces across the other edges, taken longest loop first; an edge that
+//! within each block (faces grouped by their centroids, on two grids offset by half a block, so
+//! that a short loop seldom straddles blocks of both), a shortest-path tree from a root and a
+//! spanning tree of the faces across the other edges, taken longest loop first; an edge that
 //! would close a cycle of faces closes a loop of the tree that does not separate the block,
 //! hence not the surface. The loops of every block, every size and a few roots are taken
 //! shortest first, and each search cuts as many of them as share no vertex and, cut together,
 //! leave the surface in one piece (then each lowers the genus by one; the greedy shortest
-//! system of loops); the whole mesh, as one block, always holds one while the genus is above
-//! 0. The search is repeated until the genus is 0. A block whose Euler characteristic
-//! V − E + F is 2C − b over its C pieces and b border loops, and where no vertex joins two fans
-//! of its faces, is a surface of genus 0: every loop in it separates it, so it is not searched
-//! (most blocks of the smaller sizes; the loops found are the same).
-
+//! system of loops): disjoint loops do exactly when their mod-2 homology classes are
+//! independent, which a tree–cotree decomposition of the mesh gives each loop (`homology`). The
+//! whole mesh, as one block, always holds one while the genus is above 0. The search is
+//! repeated until the genus is 0, on the blocks of the first search (the mesh's mean edge and
+//! box as they were): a block whose faces no cut changed gives the loops it gave before. A
+//! block whose Euler characteristic V − E + F is 2C − b over its C pieces and b border loops,
+//! and where no vertex joins two fans of its faces, is a surface of genus 0: every loop in it
+//! separates it, so it is not searched (most blocks of the smaller sizes; the loops found are
+//! the same).
 //!
-//! Steps 1 to 3 are in `parts`, the fans and holes of steps 5 and 6 in `holes`, and the
-//! handles of step 7 in `handles`; `edges` indexes the half-edges by vertex (a counting sort)
-//! for the lookups of every step, and `band` solves the caps' fairing (a banded Cholesky
-//! factorisation).
+//! Steps 1 to 3 are in `parts`, the fans and holes of steps 5 and 6 in `holes`, and the handles
+//! of step 7 in `handles` (which loops to cut together in `homology`); `edges` indexes the
+//! half-edges by vertex (a counting sort) for the lookups of every step, and `band` solves the
+//! caps' fairing (a banded Cholesky factorisation).
 
 mod band;
 mod edges;
 mod handles;
 mod holes;
+mod homology;
 mod parts;
 
 use glam::DVec3;
@@ -151,6 +155,7 @@ fn signed_volume(p: &[DVec3], triangles: &[[u32; 3]]) -> f64 {
 }
 
 /// The undirected key of edge (a, b).
+#[cfg(test)]
 const fn edge_key(a: u32, b: u32) -> u64 {
     if a < b { ((a as u64) << 32) | b as u64 } else { ((b as u64) << 32) | a as u64 }
 }

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 use super::handles::{
-    block_edges, block_loop, block_loop_with, faces_connected, genus_zero, independent_loops,
+    BlockGrid, BlockSearch, block_edges, block_loop, block_loop_with, cut_handles, genus_zero,
+    independent_loops,
 };
 use super::holes::membrane;
+use super::homology::{Homology, IndependentClasses};
 use super::*;
 
 /// A torus of `major × minor` quads (two triangles each), radii `big` and `small`.
@@ -536,4 +538,165 @@ fn caps_are_the_thin_plate_of_their_rim() {
             assert!(q.z.abs() > 0.8, "{around}: {q} inside the band");
         }
     }
+}
+
+/// Whether `n` faces joined across the edges of `pairs` (edge, face, face) but the sorted
+/// `barrier` edges form one piece.
+fn faces_connected(n: usize, pairs: &[(u64, u32, u32)], barrier: &[u64]) -> bool {
+    let mut parent: Vec<u32> = (0..u32::try_from(n).unwrap_or(u32::MAX)).collect();
+    let mut pieces = n;
+    for &(key, f, g) in pairs {
+        if barrier.binary_search(&key).is_ok() {
+            continue;
+        }
+        let (rf, rg) = (find_root(&mut parent, f), find_root(&mut parent, g));
+        if rf != rg {
+            parent[rf as usize] = rg;
+            pieces -= 1;
+        }
+    }
+    pieces <= 1
+}
+
+/// Loops of the edges of `t` (over `n` vertices): for each edge outside a breadth-first tree of
+/// the vertices from vertex 0, the loop it closes with the tree (up from its ends to their
+/// lowest common ancestor), unless it passes through a vertex of `avoid`.
+fn tree_loops(n: usize, t: &[[u32; 3]], avoid: &[bool]) -> Vec<Vec<u32>> {
+    let mut edges: Vec<(u32, u32)> = t
+        .iter()
+        .flat_map(|f| (0..3).map(move |k| (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]))))
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    let mut around = vec![Vec::new(); n];
+    for &(a, b) in &edges {
+        around[a as usize].push(b);
+        around[b as usize].push(a);
+    }
+    let (mut parent, mut depth) = (vec![u32::MAX; n], vec![usize::MAX; n]);
+    depth[0] = 0;
+    let mut queue = std::collections::VecDeque::from([0u32]);
+    while let Some(v) = queue.pop_front() {
+        for &w in &around[v as usize] {
+            if depth[w as usize] == usize::MAX {
+                depth[w as usize] = depth[v as usize] + 1;
+                parent[w as usize] = v;
+                queue.push_back(w);
+            }
+        }
+    }
+    edges
+        .iter()
+        .filter(|&&(a, b)| parent[a as usize] != b && parent[b as usize] != a)
+        .filter_map(|&(a, b)| {
+            let (mut x, mut y) = (a, b);
+            let (mut up, mut down) = (vec![x], vec![y]);
+            while x != y {
+                if depth[x as usize] >= depth[y as usize] {
+                    x = parent[x as usize];
+                    up.push(x);
+                } else {
+                    y = parent[y as usize];
+                    down.push(y);
+                }
+            }
+            down.pop(); // the common ancestor, already the last of `up`
+            up.extend(down.into_iter().rev());
+            (up.len() >= 3 && up.iter().all(|&v| !avoid[v as usize])).then_some(up)
+        })
+        .collect()
+}
+
+#[test]
+fn homology_tells_which_disjoint_loops_cut_together_leave_the_surface_whole() {
+    // Sets of one to three disjoint loops on a torus, a plate with three holes (genus 3), and
+    // the plate with one triangle taken out (a boundary loop, capped by the homology): their
+    // classes are independent exactly when the faces stay joined across every other edge,
+    // as a union of the faces tells (a different method).
+    let plate = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
+    let mut open = plate.clone();
+    open.1.remove(0);
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut random = |below: usize| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % below as u64) as usize
+    };
+    for (name, (p, t)) in [("torus", torus(12, 6, 1.0, 0.4)), ("plate", plate), ("open", open)] {
+        let mut avoid = vec![false; p.len()];
+        if name == "open" {
+            for &v in &boundary_loops(&t, p.len()).concat() {
+                avoid[v as usize] = true;
+            }
+        }
+        let loops = tree_loops(p.len(), &t, &avoid);
+        let pairs: Vec<(u64, u32, u32)> = {
+            let mut sides: Vec<(u64, u32)> = t
+                .iter()
+                .enumerate()
+                .flat_map(|(f, tri)| {
+                    (0..3).map(move |k| (edge_key(tri[k], tri[(k + 1) % 3]), f as u32))
+                })
+                .collect();
+            sides.sort_unstable();
+            sides
+                .chunk_by(|a, b| a.0 == b.0)
+                .filter(|w| w.len() == 2)
+                .map(|w| (w[0].0, w[0].1, w[1].1))
+                .collect()
+        };
+        let homology = Homology::new(&t);
+        let mut seen = [0usize; 2];
+        for _ in 0..3000 {
+            let chosen: Vec<&Vec<u32>> =
+                (0..1 + random(3)).map(|_| &loops[random(loops.len())]).collect();
+            let mut used = std::collections::HashSet::new();
+            if !chosen.iter().all(|lp| lp.iter().all(|&v| used.insert(v))) {
+                continue; // not disjoint
+            }
+            let mut barrier: Vec<u64> = chosen
+                .iter()
+                .flat_map(|lp| (0..lp.len()).map(|i| edge_key(lp[i], lp[(i + 1) % lp.len()])))
+                .collect();
+            barrier.sort_unstable();
+            let whole = faces_connected(t.len(), &pairs, &barrier);
+            let mut classes = IndependentClasses::default();
+            let independent =
+                chosen.iter().all(|lp| classes.insert(homology.of_loop(lp).expect("edges")));
+            assert_eq!(whole, independent, "{name}: {chosen:?}");
+            seen[usize::from(whole)] += 1;
+        }
+        // Both answers, many times over.
+        assert!(seen[0] > 20 && seen[1] > 20, "{name}: {seen:?}");
+    }
+}
+
+#[test]
+fn blocks_no_cut_touched_give_the_loops_a_new_search_finds() {
+    // The plate with three holes, searched in blocks of every size; one handle cut and its
+    // sides closed; then the search again, reusing what it found in the blocks whose faces the
+    // cut left as they were, finds what a search of every block finds.
+    let (mut p, mut t) = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
+    let grid = BlockGrid::of(&t, &p).expect("a grid");
+    let mut with_loops = 0;
+    for side in [2.0, 3.0, 4.0, 8.0] {
+        let mut search = BlockSearch::new(grid, side);
+        with_loops += usize::from(!search.loops(&t, &p, &[], &[]).is_empty());
+        let before = t.clone();
+        let (mut scan_vertex, mut filled) = ((0..p.len() as u32).collect(), vec![false; t.len()]);
+        let mut repair = Repair::default();
+        cut_handles(&mut t, &mut p, &mut scan_vertex, &mut filled, -2, 1, &mut repair);
+        assert_eq!(repair.handles_cut, 1);
+        let changed: Vec<bool> =
+            t.iter().enumerate().map(|(f, x)| before.get(f) != Some(x)).collect();
+        // Most faces as they were: the reuse is not all or nothing.
+        let kept = changed.iter().filter(|&&c| !c).count();
+        assert!(kept > t.len() / 2, "{kept} of {}", t.len());
+        let again = search.loops(&t, &p, &[], &changed);
+        let fresh = BlockSearch::new(grid, side).loops(&t, &p, &[], &[]);
+        assert_eq!(again, fresh);
+        (p, t) = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
+    }
+    assert!(with_loops >= 2, "{with_loops}");
 }

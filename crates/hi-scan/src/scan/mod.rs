@@ -8,7 +8,7 @@
 //! | Stanford PLY | `.ply` | ASCII, binary little- and big-endian; `vertex` x y z (nx ny nz); `face` lists and `tristrips` (−1 restarts); other elements skipped |
 //! | Object File Format | `.off` | `OFF`, `COFF`, `NOFF`, `CNOFF` headers, `#` comments, polygon faces |
 //! | STL | `.stl` | ASCII and binary; the repeated corners of each facet are welded into shared points |
-//! | XYZ | `.xyz` | `x y z` or `x y z nx ny nz` per line (spaces, tabs or commas), `#` comments |
+//! | XYZ | `.xyz`, `.pwn` (CGAL's points with normals) | `x y z` or `x y z nx ny nz` per line (spaces, tabs or commas), `#` comments |
 //! | Hoppe's PTS | `.pts` | `p x y z` lines; every other line is skipped |
 //! | glTF 2.0 | `.gltf`, `.glb` | the positions of every mesh primitive the scene places, node transforms applied; triangles of `TRIANGLES`, `TRIANGLE_STRIP` and `TRIANGLE_FAN` primitives; normals when every primitive has them; `read_scan` resolves external buffers beside the file |
 //!
@@ -80,10 +80,15 @@ impl ScanFormat {
     pub const ALL: [Self; 8] =
         [Self::Obj, Self::Ply, Self::Off, Self::Stl, Self::Xyz, Self::Pts, Self::Gltf, Self::Glb];
 
-    /// The format named by a file extension (case-insensitive, without the dot), if any.
+    /// The format named by a file extension (case-insensitive, without the dot), if any: each
+    /// format's [`ScanFormat::extension`], and `pwn` for XYZ (CGAL's name for points with
+    /// normals, `x y z nx ny nz` per line).
     #[must_use]
     pub fn from_extension(extension: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|f| f.extension().eq_ignore_ascii_case(extension))
+        Self::ALL
+            .into_iter()
+            .find(|f| f.extension().eq_ignore_ascii_case(extension))
+            .or_else(|| extension.eq_ignore_ascii_case("pwn").then_some(Self::Xyz))
     }
 
     /// The format of `path`, from its extension.
@@ -97,7 +102,7 @@ impl ScanFormat {
             format: None,
             location: Location::None,
             message: format!(
-                "{}: unknown scan format {:?}; expected one of .obj, .ply, .off, .stl, .xyz, .pts, .gltf, .glb",
+                "{}: unknown scan format {:?}; expected one of .obj, .ply, .off, .stl, .xyz, .pwn, .pts, .gltf, .glb",
                 path.display(),
                 ext
             ),
