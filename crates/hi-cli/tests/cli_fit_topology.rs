@@ -3,7 +3,7 @@
 //! an open sheet) gives three named meshes in one scene, which read back with the glTF reader,
 //! pass the Khronos glTF-Validator and open in trimesh as three named geometries; an open sheet
 //! gives a mesh with one boundary loop that follows the scan's rim; `--closed` caps it instead;
-//! two sheets far apart are each fitted;
+//! two sheets far apart are each fitted; a cube of 8 vertices is fitted;
 //! an unevenly dense range scan (CGAL's, where present) is fitted; and bad clouds are named.
 //! The validator and trimesh are peers: without them a check says so and passes, unless
 //! `HI_REQUIRE_PEERS=1` (as in CI).
@@ -306,6 +306,48 @@ fn parts_far_apart_are_each_fitted() {
         let errors = &part["both_ways"]["scan_to_surface"];
         let (mean, max) = (num(&errors["mean"]), num(&errors["max"]));
         assert!(mean < 1e-4 * diagonal && max < 0.01 * diagonal, "{part}");
+    }
+}
+
+/// A coarse mesh whose few vertices are its corners (a cube's 8) is a part like any other:
+/// fitted over the sphere from its faces, not left out as a fragment of a grid would be. Its
+/// surface spans the cube's box (within 5 % of the diagonal: the harmonic surface rounds the
+/// corners and edges, and the warning says how many corners it leaves).
+#[test]
+fn a_coarse_mesh_of_few_vertices_is_fitted() {
+    let corners: Vec<[f64; 3]> = (0..8)
+        .map(|k| [f64::from(k & 1), f64::from((k >> 1) & 1), f64::from((k >> 2) & 1)])
+        .collect();
+    // Two triangles per face, wound outward.
+    let faces = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    let triangles: Vec<[usize; 3]> =
+        faces.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect();
+    let scan = scan_file(&obj(&corners, &triangles), "obj");
+    let glb = TempFile::path_with("glb");
+    let report = fitted(&["fit", scan.path(), "-o", glb.path()]);
+    assert_eq!(report["method"], "mesh", "{report}");
+    assert_eq!(report["topology"]["domains"], serde_json::json!(["sphere"]), "{report}");
+    assert_eq!(report["dropped_parts"], serde_json::json!([]), "{report}");
+    let (doc, buffers, _) = gltf::import(glb.as_path()).expect("the GLB reads back");
+    let primitive = doc.meshes().next().expect("a mesh").primitives().next().expect("a primitive");
+    let reader = primitive.reader(|b| Some(&buffers[b.index()]));
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in reader.read_positions().expect("positions") {
+        for k in 0..3 {
+            lo[k] = lo[k].min(f64::from(p[k]));
+            hi[k] = hi[k].max(f64::from(p[k]));
+        }
+    }
+    let tolerance = 0.05 * 3.0f64.sqrt();
+    for k in 0..3 {
+        assert!(lo[k].abs() < tolerance && (hi[k] - 1.0).abs() < tolerance, "{lo:?} {hi:?}");
     }
 }
 

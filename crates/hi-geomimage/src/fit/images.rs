@@ -75,7 +75,7 @@ fn mesh_sources(
 ) -> Result<Result<Sources, String>, Error> {
     let parts: MeshParts = clock.run(StageKind::Parts, (0, 1), || mesh_parts(points, triangles))?;
     let (planned, dropped) = clock.run(StageKind::Parts, (0, 1), || {
-        let floor = (PART_FLOOR, PART_MIN_VERTICES);
+        let floor = (PART_FLOOR, MESH_PART_MIN_VERTICES);
         plan(&parts, options.boundary, options.layout, floor, MAX_HANDLES, 0.0)
     });
     let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();

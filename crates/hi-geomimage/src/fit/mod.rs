@@ -461,8 +461,13 @@ const MESH_SAMPLES: usize = 192;
 /// [`FitReport::dropped_parts`]): loose scraps and specks.
 pub const PART_FLOOR: f64 = 0.0005;
 
-/// A part with fewer vertices than this is not fitted.
+/// A part of a point set's zero set with fewer vertices than this is not fitted.
 pub const PART_MIN_VERTICES: usize = 12;
+
+/// A part of a mesh with fewer vertices than this is not fitted: 4, the fewest a closed surface
+/// has (the tetrahedron). A coarse mesh's few vertices are its corners (a cube's 8), where a
+/// zero set's few vertices are a fragment of its grid.
+pub const MESH_PART_MIN_VERTICES: usize = 4;
 
 /// Below this share of the scan's area in the parts above the floor, [`Method::Auto`] does not
 /// parameterise the mesh's parts but wraps its points: the scraps are most of the scan.
