@@ -319,14 +319,8 @@ fn a_coarse_mesh_of_few_vertices_is_fitted() {
         .map(|k| [f64::from(k & 1), f64::from((k >> 1) & 1), f64::from((k >> 2) & 1)])
         .collect();
     // Two triangles per face, wound outward.
-    let faces = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
+    let faces =
+        [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
     let triangles: Vec<[usize; 3]> =
         faces.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect();
     let scan = scan_file(&obj(&corners, &triangles), "obj");

@@ -177,8 +177,8 @@ impl PointSurface {
     }
 
     /// The patches, sides as given or as a first guess (away from the centroid), and each
-    /// point's [`TREE_NEIGHBOURS`] nearest other points (when no normals are given, for
-    /// [`PointSurface::orient_by_tree`]; else none).
+    /// point's [`TREE_NEIGHBOURS`] nearest other points (for
+    /// [`PointSurface::orient_by_tree`]).
     fn fitted(
         points: &[DVec3],
         normals: Option<&[DVec3]>,
