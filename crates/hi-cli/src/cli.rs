@@ -231,8 +231,8 @@ pub(crate) struct FitArgs {
     #[arg(long, value_enum, default_value = "auto")]
     pub(crate) method: MethodName,
     /// Geometry image size, rows×columns (rows even) [default: from the number of points,
-    /// 64×64 to 512×512: about eight distinct texels per vertex of a mesh; for a point set
-    /// twelve per point up to 320×320, and two per point beyond].
+    /// up to 512×512: about eight distinct texels per vertex of a mesh, at least 256×256; for a
+    /// point set, from 64×64, twelve per point up to 320×320, and two per point beyond].
     #[arg(long, value_name = "RxC", value_parser = parse_size)]
     pub(crate) resolution: Option<Size>,
     /// Smooth the geometry image with a periodic Gaussian of σ = K texels (§5.4); 0 turns all

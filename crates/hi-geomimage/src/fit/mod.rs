@@ -146,7 +146,8 @@ pub struct FitOptions {
     /// flattened octahedral (§5.3). Default [`Layout::FlatOctahedron`].
     pub layout: Layout,
     /// Geometry image rows × columns (rows even but for the plain octahedron); `None` picks
-    /// a size from the scan ([`auto_resolution`]). A scan of several parts shares these texels
+    /// a size from the scan ([`auto_resolution`] for a mesh, [`auto_resolution_points`] for a
+    /// point set). A scan of several parts shares these texels
     /// out among them by area, and a part over the torus or the square takes as many in the
     /// aspect its map asks for. Default `None`.
     pub resolution: Option<(usize, usize)>,
@@ -221,28 +222,41 @@ impl FitOptions {
     }
 }
 
-/// The image size [`fit`] picks for a scan of `points` points: square, a multiple of 32, with
-/// about eight distinct texels per point (half the texels of a doubled layout), from 64² to
-/// 512². Even a good parameterisation samples some parts of a surface a few times more
-/// densely than others, and the sparsest parts must still see every point of the scan.
+/// The image size [`fit`] picks for a mesh of `points` vertices: square, a multiple of 32, with
+/// about eight distinct texels per vertex (half the texels of a doubled layout), from
+/// [`MESH_MIN_SIDE`]² to 512². Even a good parameterisation samples some parts of a surface a
+/// few times more densely than others, and the sparsest parts must still see every vertex.
 ///
 /// # Examples
 ///
 /// ```
 /// use hi_geomimage::fit::auto_resolution;
 ///
-/// assert_eq!(auto_resolution(100), (64, 64));
-/// assert_eq!(auto_resolution(3_000), (224, 224));
+/// assert_eq!(auto_resolution(100), (256, 256));
+/// assert_eq!(auto_resolution(3_000), (256, 256));
 /// assert_eq!(auto_resolution(10_000), (416, 416));
 /// assert_eq!(auto_resolution(35_000), (512, 512));
 /// ```
 #[must_use]
 pub fn auto_resolution(points: usize) -> (usize, usize) {
-    // side²/2 ≈ 8·points.
+    let side = texel_side(points).max(MESH_MIN_SIDE);
+    (side, side)
+}
+
+/// The least side [`auto_resolution`] gives a mesh. A coarse mesh's few vertices are corners
+/// of flat faces whose edges the harmonic surface can only round: its ripples beside them are
+/// as wide as a texel, so a cube of 8 vertices fitted at 64² is wavy all over (its corners 2 %
+/// of the diagonal off), at 128² rippled along its edges, and at 256² smooth but for a fringe
+/// at the edges (its corners 0.7 % off), at little cost for so small a mesh.
+pub const MESH_MIN_SIDE: usize = 256;
+
+/// The side of a square image with about eight distinct texels per point (side²/2 ≈ 8·points),
+/// a multiple of 32 from 64 to 512.
+fn texel_side(points: usize) -> usize {
     let side = (16.0 * points as f64).sqrt();
     #[expect(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "clamped")]
     let side = ((side / 32.0).ceil() as usize * 32).clamp(64, 512);
-    (side, side)
+    side
 }
 
 /// The image size [`fit`] picks for a point set of `points` points: square, a multiple of 32,
@@ -268,8 +282,8 @@ pub fn auto_resolution(points: usize) -> (usize, usize) {
 /// ```
 #[must_use]
 pub fn auto_resolution_points(points: usize) -> (usize, usize) {
-    let dense = auto_resolution(points / 4).0;
-    let sparse = auto_resolution(points.saturating_mul(3) / 2).0.min(SPARSE_SIDE);
+    let dense = texel_side(points / 4);
+    let sparse = texel_side(points.saturating_mul(3) / 2).min(SPARSE_SIDE);
     let side = dense.max(sparse);
     (side, side)
 }
