@@ -405,7 +405,9 @@ pub(crate) fn used_points(scan: &Scan) -> Vec<DVec3> {
 /// `hi fit`'s defaults (the parameterisation of each part of its mesh, no smoothing) at
 /// [`REAL_IMAGE`] (shared by the parts by area), meshed as `hi fit` writes them: one vertex per
 /// texel, welded into closed surfaces checked to enclose a positive volume (wound outwards), or
-/// open sheets; the parts in one mesh.
+/// open sheets; the parts in one mesh, without texture coordinates (each part's would be of its
+/// own domain, meaningless in one mesh, and the wuson's 42 parts would take the file past a
+/// megabyte).
 fn real_glb(file: &str) -> Result<Vec<u8>> {
     let result = real_fit(&real_scan(file)?, file, false)?;
     // Every part, as `hi fit` writes them, in one mesh.
@@ -419,7 +421,7 @@ fn real_glb(file: &str) -> Result<Vec<u8>> {
         let offset = u32::try_from(positions.len())?;
         positions.extend_from_slice(mesh.positions());
         normals.extend_from_slice(mesh.normals());
-        uvs.extend_from_slice(mesh.uvs());
+        uvs.extend(std::iter::repeat_n(DVec2::ZERO, mesh.positions().len()));
         triangles.extend(mesh.triangles().iter().map(|t| t.map(|k| k + offset)));
     }
     glb(&TriangleMesh::try_new(positions, normals, uvs, triangles)?)
