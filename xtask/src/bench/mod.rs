@@ -26,7 +26,8 @@
 //! with the rest, `cargo xtask bench fit-clouds` rewrites only it. Options after the topic:
 //! `--small` (small inputs, for trying the bench out: written under
 //! `target/xtask-bench/small/`, never into `docs/`) and `--only NAME,NAME` (only the rows whose
-//! name contains one of the words).
+//! name contains one of the words: written under `target/xtask-bench/only/`, never into
+//! `docs/`, whose tables and gallery hold every row).
 
 mod batch;
 mod clouds;
@@ -168,15 +169,31 @@ pub(crate) fn run(root: &Path, topic: Option<&str>, options: &Options) -> Result
     Ok(())
 }
 
-/// Runs the sub-topic `sub` alone and rewrites its subsection inside the section of `parent`
-/// (of the report, or with `--small` of a report of its own under `target/xtask-bench/small/`).
-fn run_subtopic(root: &Path, sub: &str, parent: &str, options: &Options) -> Result<()> {
-    let (docs, path) = if options.small {
-        let dir = root.join("target/xtask-bench/small");
-        (dir.clone(), dir.join("performance.md"))
+/// Where a sub-topic run with `options` writes its report and figures: `docs/` for a whole run;
+/// a report of its own under `target/xtask-bench/small/` with `--small`, or
+/// `target/xtask-bench/only/` with `--only` alone, so that a partial run never replaces the
+/// committed report's tables and gallery, which hold every row.
+fn report_dir(root: &Path, options: &Options) -> (std::path::PathBuf, std::path::PathBuf) {
+    let own = if options.small {
+        Some("small")
+    } else if options.only.is_empty() {
+        None
     } else {
-        (root.join("docs"), root.join(REPORT))
+        Some("only")
     };
+    match own {
+        Some(name) => {
+            let dir = root.join("target/xtask-bench").join(name);
+            (dir.clone(), dir.join("performance.md"))
+        }
+        None => (root.join("docs"), root.join(REPORT)),
+    }
+}
+
+/// Runs the sub-topic `sub` alone and rewrites its subsection inside the section of `parent`
+/// (of the report, or of a report of its own elsewhere for a partial run: [`report_dir`]).
+fn run_subtopic(root: &Path, sub: &str, parent: &str, options: &Options) -> Result<()> {
+    let (docs, path) = report_dir(root, options);
     std::fs::create_dir_all(&docs).with_context(|| format!("creating {}", docs.display()))?;
     let doc = std::fs::read_to_string(&path).unwrap_or_default();
     let (body, headlines) = match sub {
@@ -731,6 +748,23 @@ mod tests {
         let at = |r: &str| doc.find(r).unwrap_or_else(|| panic!("{r}: {doc}"));
         assert!(at("| curves | fft |") < at("| fit | upsampling |"));
         assert!(at("| fit | upsampling |") < at("| fit-clouds | bunny cloud |"));
+    }
+
+    #[test]
+    fn partial_runs_never_write_the_committed_report() {
+        let root = Path::new("ws");
+        let only = |words: &[&str]| words.iter().map(|w| (*w).to_owned()).collect::<Vec<_>>();
+        let whole = report_dir(root, &Options::default());
+        assert_eq!(whole, (root.join("docs"), root.join("docs/performance.md")), "a whole run");
+        let o = Options { small: false, only: only(&["head"]) };
+        let dir = root.join("target/xtask-bench/only");
+        assert_eq!(report_dir(root, &o), (dir.clone(), dir.join("performance.md")), "--only");
+        let dir = root.join("target/xtask-bench/small");
+        for o in
+            [Options { small: true, only: Vec::new() }, Options { small: true, only: only(&["x"]) }]
+        {
+            assert_eq!(report_dir(root, &o), (dir.clone(), dir.join("performance.md")), "{o:?}");
+        }
     }
 
     #[test]
