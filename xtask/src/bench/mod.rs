@@ -39,7 +39,7 @@ mod sampling;
 mod subdivision;
 
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
@@ -169,31 +169,25 @@ pub(crate) fn run(root: &Path, topic: Option<&str>, options: &Options) -> Result
     Ok(())
 }
 
-/// Where a sub-topic run with `options` writes its report and figures: `docs/` for a whole run;
-/// a report of its own under `target/xtask-bench/small/` with `--small`, or
+/// The folder a sub-topic run with `options` writes its report (`performance.md`) and figures
+/// into: `docs/` for a whole run; `target/xtask-bench/small/` with `--small`, or
 /// `target/xtask-bench/only/` with `--only` alone, so that a partial run never replaces the
 /// committed report's tables and gallery, which hold every row.
-fn report_dir(root: &Path, options: &Options) -> (std::path::PathBuf, std::path::PathBuf) {
-    let own = if options.small {
-        Some("small")
+fn report_dir(root: &Path, options: &Options) -> PathBuf {
+    if options.small {
+        root.join("target/xtask-bench/small")
     } else if options.only.is_empty() {
-        None
+        root.join("docs")
     } else {
-        Some("only")
-    };
-    match own {
-        Some(name) => {
-            let dir = root.join("target/xtask-bench").join(name);
-            (dir.clone(), dir.join("performance.md"))
-        }
-        None => (root.join("docs"), root.join(REPORT)),
+        root.join("target/xtask-bench/only")
     }
 }
 
 /// Runs the sub-topic `sub` alone and rewrites its subsection inside the section of `parent`
 /// (of the report, or of a report of its own elsewhere for a partial run: [`report_dir`]).
 fn run_subtopic(root: &Path, sub: &str, parent: &str, options: &Options) -> Result<()> {
-    let (docs, path) = report_dir(root, options);
+    let docs = report_dir(root, options);
+    let path = docs.join("performance.md");
     std::fs::create_dir_all(&docs).with_context(|| format!("creating {}", docs.display()))?;
     let doc = std::fs::read_to_string(&path).unwrap_or_default();
     let (body, headlines) = match sub {
@@ -754,16 +748,14 @@ mod tests {
     fn partial_runs_never_write_the_committed_report() {
         let root = Path::new("ws");
         let only = |words: &[&str]| words.iter().map(|w| (*w).to_owned()).collect::<Vec<_>>();
-        let whole = report_dir(root, &Options::default());
-        assert_eq!(whole, (root.join("docs"), root.join("docs/performance.md")), "a whole run");
+        let whole = report_dir(root, &Options::default()).join("performance.md");
+        assert_eq!(whole, root.join(REPORT), "a whole run");
         let o = Options { small: false, only: only(&["head"]) };
-        let dir = root.join("target/xtask-bench/only");
-        assert_eq!(report_dir(root, &o), (dir.clone(), dir.join("performance.md")), "--only");
-        let dir = root.join("target/xtask-bench/small");
+        assert_eq!(report_dir(root, &o), root.join("target/xtask-bench/only"), "--only");
         for o in
             [Options { small: true, only: Vec::new() }, Options { small: true, only: only(&["x"]) }]
         {
-            assert_eq!(report_dir(root, &o), (dir.clone(), dir.join("performance.md")), "{o:?}");
+            assert_eq!(report_dir(root, &o), root.join("target/xtask-bench/small"), "{o:?}");
         }
     }
 
