@@ -213,22 +213,39 @@ fn point_sources_on(
         *finer = cell < CELL * surface.spacing();
         // A zero set whose parts cannot be made surfaces (tunnels beyond counting between the
         // walls of a thin part, or a cloud too sparse for its grid) is taken again on a coarser
-        // grid; on the coarsest, more handles are cut before the rays are taken instead.
+        // grid; on the coarsest, more handles are cut before the rays are taken instead. The
+        // coarsest grid's zero set is taken first, as it costs a fraction of the finer ones':
+        // when its handles say that a finer one's would be too many, the finer are not tried
+        // (and it is kept for its turn; else it is let go, and taken again should the finer
+        // ones fail, which keeps the peak memory that of one zero set).
+        let coarsest = ZERO_SET_COARSER[ZERO_SET_COARSER.len() - 1];
+        let zero_set_parts =
+            |coarser: f64| surface.zero_set(coarser * cell).and_then(|(v, t)| mesh_parts(&v, &t));
+        let mut coarse = Some(zero_set_parts(coarsest));
+        let finer_too = match &coarse {
+            Some(Ok(parts)) => finer_may_keep(parts, (PART_FLOOR, PART_MIN_VERTICES)),
+            _ => true,
+        };
+        if finer_too {
+            coarse = None;
+        }
         let mut planned = Err(hi_scan::Error::Degenerate { what: "no zero set" });
         let mut fragments = (0, 0);
         for (k, coarser) in ZERO_SET_COARSER.into_iter().enumerate() {
             let last = k + 1 == ZERO_SET_COARSER.len();
+            if !last && !finer_too {
+                continue;
+            }
             let handles = if last { COARSEST_GRID_HANDLES } else { MAX_HANDLES };
-            planned = surface.zero_set(coarser * cell).and_then(|(v, t)| mesh_parts(&v, &t)).map(
-                |mut parts| {
-                    fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
-                    let floor = (PART_FLOOR, PART_MIN_VERTICES);
-                    // On a grid with a coarser one to come, a zero set whose parts of few
-                    // enough handles hold too little of it is given up at once.
-                    let least = if last { 0.0 } else { MIN_AREA_KEPT };
-                    plan(&parts, options.boundary, options.layout, floor, handles, least)
-                },
-            );
+            let parts = coarse.take().unwrap_or_else(|| zero_set_parts(coarser));
+            planned = parts.map(|mut parts| {
+                fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
+                let floor = (PART_FLOOR, PART_MIN_VERTICES);
+                // On a grid with a coarser one to come, a zero set whose parts of few
+                // enough handles hold too little of it is given up at once.
+                let least = if last { 0.0 } else { MIN_AREA_KEPT };
+                plan(&parts, options.boundary, options.layout, floor, handles, least)
+            });
             if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {
                 break;
             }
@@ -292,6 +309,28 @@ fn point_sources_on(
         reason,
         image_points: Vec::new(),
     })
+}
+
+/// Whether a zero set on a grid finer than that of the zero set `parts` (split into parts)
+/// may give parts above `floor` (a share of the area and a number of vertices) holding
+/// [`MIN_AREA_KEPT`] of its area, each with at most [`MAX_HANDLES`] handles, as
+/// [`point_sources_on`] asks of a grid with a coarser one to come: not when the parts of
+/// `parts` that would hold them have more than [`MAX_HANDLES`] / [`FINER_GENUS_GROWTH`]
+/// handles.
+fn finer_may_keep(parts: &MeshParts, (floor, min_vertices): (f64, usize)) -> bool {
+    let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
+    #[expect(clippy::cast_precision_loss, reason = "a handle count")]
+    let keepable: f64 = parts
+        .parts
+        .par_iter()
+        .filter(|p| p.area / total >= floor && p.positions.len() >= min_vertices)
+        .filter(|p| {
+            let genus = hi_scan::repair::part_topology(p).genus as f64;
+            genus * FINER_GENUS_GROWTH <= MAX_HANDLES as f64
+        })
+        .map(|p| p.area / total)
+        .sum();
+    keepable >= MIN_AREA_KEPT
 }
 
 /// [`point_sources_on`] where the zero set gives no part to parameterise: the rays from the
@@ -529,4 +568,71 @@ pub(super) fn leave_out_guesswork(
         !bad
     });
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The closed surface of a slab of `2 g + 1` × 3 × 1 unit cubes with a square hole
+    /// through every second cube of its middle row: a surface of genus `g`, as triangles.
+    fn slab_with_holes(g: i32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        let n = [2 * g + 1, 3, 1];
+        let inside = |c: [i32; 3]| {
+            (0..3).all(|k| (0..n[k]).contains(&c[k])) && !(c[1] == 1 && c[0] % 2 == 1)
+        };
+        let mut index = std::collections::HashMap::new();
+        let mut p: Vec<DVec3> = Vec::new();
+        let mut t = Vec::new();
+        for c in
+            (0..n[0]).flat_map(|x| (0..n[1]).flat_map(move |y| (0..n[2]).map(move |z| [x, y, z])))
+        {
+            if !inside(c) {
+                continue;
+            }
+            for (axis, dir) in (0..3).flat_map(|a| [(a, -1), (a, 1)]) {
+                let mut o = c;
+                o[axis] += dir;
+                if inside(o) {
+                    continue;
+                }
+                // The face's corners, counter-clockwise seen from outside.
+                let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+                let mut base = c;
+                base[axis] += i32::from(dir > 0);
+                let mut quad = [(0, 0), (1, 0), (1, 1), (0, 1)].map(|(du, dv)| {
+                    let mut q = base;
+                    q[u] += du;
+                    q[v] += dv;
+                    q
+                });
+                if dir < 0 {
+                    quad.reverse();
+                }
+                let q = quad.map(|q| {
+                    *index.entry(q).or_insert_with(|| {
+                        p.push(DVec3::new(f64::from(q[0]), f64::from(q[1]), f64::from(q[2])));
+                        u32::try_from(p.len() - 1).unwrap()
+                    })
+                });
+                t.extend([[q[0], q[1], q[2]], [q[0], q[2], q[3]]]);
+            }
+        }
+        (p, t)
+    }
+
+    /// A finer grid is tried while twice the coarse zero set's handles are at most
+    /// [`MAX_HANDLES`] (16 holes through a slab), and not beyond (17).
+    #[test]
+    fn a_finer_grid_is_tried_while_twice_the_handles_are_few_enough() {
+        let floor = (PART_FLOOR, PART_MIN_VERTICES);
+        let half = i32::try_from(MAX_HANDLES).unwrap() / 2;
+        for (g, tried) in [(0, true), (half, true), (half + 1, false)] {
+            let (p, t) = slab_with_holes(g);
+            let parts = mesh_parts(&p, &t).unwrap();
+            assert_eq!(parts.parts.len(), 1);
+            assert_eq!(hi_scan::repair::part_topology(&parts.parts[0]).genus, g as usize);
+            assert_eq!(finer_may_keep(&parts, floor), tried, "genus {g}");
+        }
+    }
 }

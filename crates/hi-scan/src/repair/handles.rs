@@ -326,6 +326,12 @@ impl BlockSearch {
                 .collect();
             keyed.par_sort_unstable();
             let blocks: Vec<&[(u64, u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
+            if self.blocks.is_finite() && blocks.len() == 1 {
+                // One block holding the whole mesh: the search over the whole mesh, which
+                // every caller runs as well (and would find the same loops).
+                self.found[grid].clear();
+                continue;
+            }
             let cache = &self.found[grid];
             let searched: Vec<(u64, Loops)> = blocks
                 .par_iter()
