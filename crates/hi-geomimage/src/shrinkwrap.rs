@@ -568,9 +568,81 @@ fn wrap(
 /// the mesh has detail, and so are the texels then; a scanner's density varies with the angle
 /// of view, not with the detail, and following it would take texels from the surfaces it saw
 /// at a slant (a crease of Hoppe's duck, measured: its worst point 1.13 times farther).
+///
+/// A vertex all of whose triangles were added to close a hole (the inside of a cap) has no
+/// point about it: its weight is that of density 0, [`density_weight`]`(0)`, the least, so that
+/// the texels go to the points rather than to the guess between them. Measured on the bare
+/// vertices of the shared models and CGAL's building (100 000 points, a third of whose zero set
+/// is caps over its open floor and windows): the building's filled texels fell from 63 % to 55 %
+/// and its mean error by 12 %, Hoppe's mechanical part's by 13 %, `wuson`'s by 10 %, Hoppe's
+/// cessna's by 6 %; the head's rose by 4 % and `spot`'s by 6 % (its caps are 0.2 % of its
+/// texels: the change of any weight moves its map that much), the others' moved by 2 % or less.
+/// A mesh's caps keep their weight
+/// ([`mesh_density_weights`](crate::sphereparam::mesh_density_weights)): its texels lie on its
+/// flat triangles, and on CGAL's `elephant-with-holes` thinning them over the caps raised the
+/// mean error by 7 %.
 pub(crate) fn point_density_weights(surface: &PointSurface, mesh: &ClosedMesh) -> Vec<f64> {
-    if surface.fine_spacing() >= surface.spacing() {
-        return vec![1.0; mesh.positions.len()];
+    let mut on_points = vec![false; mesh.positions.len()];
+    for (t, _) in mesh.triangles.iter().zip(&mesh.filled).filter(|(_, filled)| !**filled) {
+        for &k in t {
+            on_points[k as usize] = true;
+        }
     }
-    mesh.positions.par_iter().map(|&x| density_weight(surface.relative_density(x))).collect()
+    let even = surface.fine_spacing() >= surface.spacing();
+    mesh.positions
+        .par_iter()
+        .zip(&on_points)
+        .map(|(&x, &on)| match (on, even) {
+            (false, _) => density_weight(0.0),
+            (true, true) => 1.0,
+            (true, false) => density_weight(surface.relative_density(x)),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sphereparam::DENSITY_WEIGHT_MAX;
+    use hi_scan::repair::{ADDED_VERTEX, close_mesh};
+
+    /// A tube (a sphere's band between 30° and 150° from its pole, 24 × 48 quads) closed by two
+    /// caps: the caps' added centres, on no point, weigh the least ([`density_weight`] of
+    /// density 0); the vertices on the points weigh more.
+    #[test]
+    fn a_cap_away_from_the_points_weighs_the_least() {
+        let (rows, cols) = (24u32, 48u32);
+        let at = |i: u32, j: u32| {
+            let theta = std::f64::consts::PI * (1.0 + 4.0 * f64::from(i) / f64::from(rows)) / 6.0;
+            let phi = std::f64::consts::TAU * f64::from(j) / f64::from(cols);
+            DVec3::new(theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos())
+        };
+        let points: Vec<DVec3> =
+            (0..=rows).flat_map(|i| (0..cols).map(move |j| at(i, j))).collect();
+        let id = |i: u32, j: u32| i * cols + j % cols;
+        let triangles: Vec<[u32; 3]> = (0..rows)
+            .flat_map(|i| {
+                (0..cols).flat_map(move |j| {
+                    [
+                        [id(i, j), id(i + 1, j), id(i + 1, j + 1)],
+                        [id(i, j), id(i + 1, j + 1), id(i, j + 1)],
+                    ]
+                })
+            })
+            .collect();
+        let closed = close_mesh(&points, &triangles).unwrap();
+        assert!(closed.filled.iter().any(|&f| f), "two caps");
+        let surface = PointSurface::try_new(&points, None, 16).unwrap();
+        let weights = point_density_weights(&surface, &closed);
+        let mut centres = 0;
+        for (k, &w) in weights.iter().enumerate() {
+            if closed.scan_vertex[k] == ADDED_VERTEX {
+                centres += 1;
+                assert_eq!(w, 1.0 / DENSITY_WEIGHT_MAX, "a cap's centre");
+            } else {
+                assert!(w > 1.0 / DENSITY_WEIGHT_MAX, "a point's vertex {k}: {w}");
+            }
+        }
+        assert!(centres >= 2, "{centres}");
+    }
 }
