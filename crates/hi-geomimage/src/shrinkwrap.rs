@@ -316,6 +316,69 @@ pub(crate) fn refine(
     symmetrise(x, &owner, domain, rows, cols);
 }
 
+/// Smooths the texels flagged `filled` (those of the caps over the scan's holes) of a
+/// `rows × cols` image over `domain` as a membrane spanned by the others: [`FILL_SWEEPS`]
+/// Jacobi sweeps, each filled texel to the mean of its four neighbours across the grid (the
+/// image's copies of a texel following it). The texels on the points are held, and so are the
+/// filled texels within [`FILL_HOLD`] point spacings of a point of `patches` (the rim of a cap,
+/// which the points about it pin). A cap sampled from the closed zero set lies on its flat
+/// triangles while the texels about it have moved onto the points: a step along the rim, which
+/// the harmonic surface through the texels folds across.
+pub(crate) fn smooth_fills(
+    patches: &PointSurface,
+    x: &mut [DVec3],
+    filled: &[bool],
+    domain: Domain,
+    (rows, cols): (usize, usize),
+) {
+    let owner = domain.owners(rows, cols);
+    let hold = FILL_HOLD * patches.spacing();
+    let free: Vec<usize> = (0..rows * cols)
+        .into_par_iter()
+        .filter(|&t| owner[t] == t && filled[t] && patches.project(x[t], DVec3::ZERO).1 > hold)
+        .collect();
+    if free.is_empty() {
+        return;
+    }
+    let copies: Vec<usize> =
+        (0..rows * cols).filter(|&t| owner[t] != t && filled[owner[t]]).collect();
+    for _ in 0..FILL_SWEEPS {
+        let moved: Vec<DVec3> = free
+            .par_iter()
+            .with_min_len(1024)
+            .map(|&t| {
+                let (i, j) = (t / cols, t % cols);
+                (x[((i + rows - 1) % rows) * cols + j]
+                    + x[((i + 1) % rows) * cols + j]
+                    + x[i * cols + (j + cols - 1) % cols]
+                    + x[i * cols + (j + 1) % cols])
+                    / 4.0
+            })
+            .collect();
+        for (&t, m) in free.iter().zip(moved) {
+            x[t] = m;
+        }
+        for &t in &copies {
+            x[t] = x[owner[t]];
+        }
+        symmetrise(x, &owner, domain, rows, cols);
+    }
+}
+
+/// The sweeps of [`smooth_fills`]. Measured on the bare vertices of the shared models and
+/// CGAL's building (100 000 points, its caps over its open floor and windows a third of its
+/// zero set): the edges of the building's output mesh folded by more than 120° fell from 11.3 %
+/// to 5.1 % (Hoppe's mechanical part's from 4.1 % to 2.7 %, the cessna's from 6.3 % to 4.7 %,
+/// screened Poisson's: 0.03 %), its mean error rising by 0.7 %; 16 sweeps (holding no texel)
+/// left 1.2 times the folds of 64, and 256 as many as 64.
+pub(crate) const FILL_SWEEPS: usize = 64;
+
+/// How near, in point spacings, a point holds a filled texel in [`smooth_fills`]. Holding none
+/// smoothed the building's caps a little more (3.7 % of its edges folded), but moved the texels
+/// beside the points at their rims: its mean error 13 % higher; 2 spacings held more of the rim
+/// ragged (6.4 %) for no lower error.
+pub(crate) const FILL_HOLD: f64 = 1.0;
+
 /// The zero set of the points' signed distance on the grid of
 /// [`PointSurface::zero_set_cell`] ([`PointSurface::zero_set`]), its holes closed and the whole
 /// made genus 0 by
@@ -644,5 +707,40 @@ mod tests {
             }
         }
         assert!(centres >= 2, "{centres}");
+    }
+
+    /// A 6 × 6 block of filled texels lifted 1 off a flat torus image of 24 × 24 texels, the
+    /// others on points of the plane z = 0: the membrane they span is the plane (the discrete
+    /// Dirichlet problem with zero boundary values has the solution 0, and Jacobi's sweeps
+    /// reach it by a factor of cos(π/7) < 0.91 a sweep), so the block comes down to within
+    /// 0.91⁶⁴ < 0.003 of it; the texels on the points do not move. A filled texel with a point
+    /// beside it is held.
+    #[test]
+    fn a_cap_is_smoothed_to_the_membrane_its_rim_spans() {
+        let n = 24usize;
+        let block = |t: usize| (9..15).contains(&(t / n)) && (9..15).contains(&(t % n));
+        let grid = |t: usize| DVec3::new((t / n) as f64, (t % n) as f64, 0.0);
+        let points: Vec<DVec3> = (0..n * n).filter(|&t| !block(t)).map(grid).collect();
+        let surface = PointSurface::try_new(&points, None, 16).unwrap();
+        let lifted: Vec<DVec3> =
+            (0..n * n).map(|t| grid(t) + DVec3::Z * f64::from(u8::from(block(t)))).collect();
+        let filled: Vec<bool> = (0..n * n).map(block).collect();
+        let mut x = lifted.clone();
+        smooth_fills(&surface, &mut x, &filled, Domain::Torus, (n, n));
+        for t in 0..n * n {
+            if block(t) {
+                assert!(x[t].z.abs() < 3e-3, "texel {t}: {}", x[t]);
+            } else {
+                assert_eq!(x[t], lifted[t], "texel {t} on a point");
+            }
+        }
+        // A point under one of the block's texels holds it.
+        let mut with_point = points.clone();
+        with_point.push(grid(11 * n + 11) + DVec3::Z * 0.9);
+        let surface = PointSurface::try_new(&with_point, None, 16).unwrap();
+        let mut x = lifted.clone();
+        smooth_fills(&surface, &mut x, &filled, Domain::Torus, (n, n));
+        assert_eq!(x[11 * n + 11], lifted[11 * n + 11]);
+        assert!(x[13 * n + 13].z < 0.5, "{}", x[13 * n + 13]);
     }
 }

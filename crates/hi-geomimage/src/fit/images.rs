@@ -406,6 +406,14 @@ fn settled_part_image(
         (r, c),
         REFINE_BAND * surface.spacing(),
     );
+    // The caps smoothed between the texels on the points.
+    crate::shrinkwrap::smooth_fills(
+        surface,
+        &mut settled.texels,
+        &settled.filled,
+        part.domain,
+        (r, c),
+    );
     Ok(ShrinkWrapImage {
         image: GeometryImage::try_new(r, c, settled.texels)?,
         filled: settled.filled,
