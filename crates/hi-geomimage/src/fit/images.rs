@@ -386,7 +386,9 @@ fn settled_part_image(
 ) -> Result<ShrinkWrapImage, Error> {
     let texels = share(texels, part.area_fraction, kept);
     // Texels dense where the points are.
-    let weigh = |c: &ClosedMesh| crate::shrinkwrap::point_density_weights(surface, c);
+    let weigh = |c: &ClosedMesh| {
+        crate::shrinkwrap::with_empty_caps(crate::shrinkwrap::point_density_weights(surface, c), c)
+    };
     let image = part_image_or_sphere(part, texels, size, layout, rescue, &weigh)?;
     let (r, c) = (image.image.rows(), image.image.cols());
     let mut settled = settle(
