@@ -342,7 +342,7 @@ pub(crate) fn smooth_fills(
     }
     let copies: Vec<usize> =
         (0..rows * cols).filter(|&t| owner[t] != t && filled[owner[t]]).collect();
-    for _ in 0..FILL_SWEEPS {
+    for sweep in 0..FILL_SWEEPS {
         let moved: Vec<DVec3> = free
             .par_iter()
             .with_min_len(1024)
@@ -361,7 +361,14 @@ pub(crate) fn smooth_fills(
         for &t in &copies {
             x[t] = x[owner[t]];
         }
-        symmetrise(x, &owner, domain, rows, cols);
+        // The copies of the texels moved follow them, and the others keep the symmetry the
+        // first sweep gave them: after it, only the pole rows of the latitude–longitude
+        // sphere need making one point again.
+        if sweep == 0 {
+            symmetrise(x, &owner, domain, rows, cols);
+        } else {
+            join_poles(x, domain, rows, cols);
+        }
     }
 }
 
@@ -502,13 +509,7 @@ fn pull(
 /// Each texel and the copies of it a doubled image holds take their mean (the doubled images'
 /// symmetry restored); on the latitude–longitude sphere each pole row becomes one point.
 fn symmetrise(v: &mut [DVec3], owner: &[usize], domain: Domain, rows: usize, cols: usize) {
-    if domain == Domain::Sphere(Layout::Sphere) {
-        // The pole rows are one point each.
-        for i in [0, rows / 2] {
-            let mean = v[i * cols..(i + 1) * cols].iter().copied().sum::<DVec3>() / cols as f64;
-            v[i * cols..(i + 1) * cols].iter_mut().for_each(|x| *x = mean);
-        }
-    }
+    join_poles(v, domain, rows, cols);
     let mut sum = vec![(DVec3::ZERO, 0u32); v.len()];
     for (t, x) in v.iter().enumerate() {
         sum[owner[t]].0 += *x;
@@ -518,6 +519,17 @@ fn symmetrise(v: &mut [DVec3], owner: &[usize], domain: Domain, rows: usize, col
         let (total, count) = sum[owner[t]];
         if count > 1 {
             *x = total / f64::from(count);
+        }
+    }
+}
+
+/// On the latitude–longitude sphere, each pole row of the texels `v` of a `rows × cols` image
+/// made one point, their mean (over the other domains, nothing).
+fn join_poles(v: &mut [DVec3], domain: Domain, rows: usize, cols: usize) {
+    if domain == Domain::Sphere(Layout::Sphere) {
+        for i in [0, rows / 2] {
+            let mean = v[i * cols..(i + 1) * cols].iter().copied().sum::<DVec3>() / cols as f64;
+            v[i * cols..(i + 1) * cols].iter_mut().for_each(|x| *x = mean);
         }
     }
 }

@@ -113,17 +113,23 @@ pub(super) fn cut_handles(
         }
         // Every block's loop at every size of block (a loop may fit a block of one grid and
         // not the next, and the roots differ), shortest first; as many of them cut at once as
-        // are disjoint and, together, do not separate the surface.
-        let mut found: Vec<(f64, Vec<u32>)> = searches
-            .par_iter_mut()
-            .flat_map_iter(|search| search.loops(faces, positions, &on_boundary, &changed))
-            .collect();
+        // are disjoint and, together, do not separate the surface (by the homology of the
+        // faces as they are, found meanwhile).
+        let (mut found, homology): (Vec<(f64, Vec<u32>)>, _) = join(
+            || {
+                searches
+                    .par_iter_mut()
+                    .flat_map_iter(|search| search.loops(faces, positions, &on_boundary, &changed))
+                    .collect()
+            },
+            || Homology::new(faces),
+        );
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let wanted = usize::try_from((chi_wanted - chi) / 2)
             .unwrap_or(0)
             .min(max_handles - repair.handles_cut)
             .max(1);
-        let loops = independent_loops(faces, positions.len(), found, wanted);
+        let loops = independent_loops(&homology, positions.len(), found, wanted);
         if loops.is_empty() {
             return;
         }
@@ -163,18 +169,17 @@ pub(super) fn cut_handles(
 }
 
 /// Of the loops `found` (shortest first), at most `wanted` that share no vertex and that,
-/// cut together, leave the faces of the closed mesh `faces` (over `vertices` vertices)
-/// connected: each would lower the genus by one (the greedy choice of a shortest system of
-/// loops, Erickson and Whittlesey 2005). Disjoint loops cut together leave the surface in one
+/// cut together, leave the faces of the closed mesh of `homology` ([`Homology::new`], over
+/// `vertices` vertices) connected: each would lower the genus by one (the greedy choice of a
+/// shortest system of loops, Erickson and Whittlesey 2005). Disjoint loops cut together leave the surface in one
 /// piece exactly when their mod-2 homology classes are independent ([`Homology`]); a loop that
 /// separates the surface alone (class 0) is never taken.
 pub(super) fn independent_loops(
-    faces: &[[u32; 3]],
+    homology: &Homology,
     vertices: usize,
     found: Vec<(f64, Vec<u32>)>,
     wanted: usize,
 ) -> Vec<Vec<u32>> {
-    let homology = Homology::new(faces);
     let mut classes = IndependentClasses::default();
     let mut used = vec![false; vertices];
     let mut chosen: Vec<Vec<u32>> = Vec::new();
@@ -273,12 +278,23 @@ pub(super) struct BlockSearch {
     blocks: f64,
     /// The loops of each block searched, on each grid (offset 0, then 0.5).
     found: [std::collections::HashMap<u64, Loops>; 2],
+    /// Where the faces of the last search lay, on each grid ([`BlockSearch::place`]).
+    placed: [Placed; 2],
+}
+
+/// The faces of a mesh by block ([`BlockSearch::place`]).
+#[derive(Default)]
+struct Placed {
+    /// (block key, face), in order.
+    by_block: Vec<(u64, u32)>,
+    /// Each face's block key.
+    key: Vec<u64>,
 }
 
 impl BlockSearch {
     /// A search of blocks of `blocks` mean edge lengths on `grid`, nothing searched yet.
     pub(super) fn new(grid: BlockGrid, blocks: f64) -> Self {
-        Self { grid, blocks, found: Default::default() }
+        Self { grid, blocks, found: Default::default(), placed: Default::default() }
     }
 
     /// The loops of every block of the mesh `faces` (see [`handle_loops`]); a block with no face
@@ -291,40 +307,14 @@ impl BlockSearch {
         on_boundary: &[bool],
         changed: &[bool],
     ) -> Vec<(f64, Vec<u32>)> {
-        let at = |k: u32| positions[k as usize];
-        let side = self.blocks * self.grid.mean_edge;
-        let lo = self.grid.lo;
         let mut all: Vec<(f64, Vec<u32>)> = Vec::new();
         for (grid, offset) in [0.0, 0.5].into_iter().enumerate() {
             if self.blocks.is_infinite() && offset > 0.0 {
                 // One block either way.
                 break;
             }
-            // Faces by block, blocks in a fixed order: a block's indices (from 0, as the
-            // centroids lie above `lo`) packed into 21 bits each, which keeps their order
-            // (blocks beyond 2²¹ along an axis, on no real mesh, share the last).
-            let mut keyed: Vec<(u64, u32)> = faces
-                .iter()
-                .enumerate()
-                .map(|(f, t)| {
-                    let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
-                    // (One block, 0, for an infinite side.)
-                    #[expect(
-                        clippy::cast_possible_truncation,
-                        clippy::cast_sign_loss,
-                        reason = "a block index"
-                    )]
-                    let key = ((c - lo) / side + offset)
-                        .floor()
-                        .to_array()
-                        .iter()
-                        .fold(0u64, |key, &x| {
-                            (key << 21) | (x.max(0.0) as u64).min(BLOCK_INDEX_MAX)
-                        });
-                    (key, u32::try_from(f).unwrap_or(u32::MAX))
-                })
-                .collect();
-            keyed.par_sort_unstable();
+            self.place(grid, offset, faces, positions, changed);
+            let keyed = &self.placed[grid].by_block;
             let blocks: Vec<&[(u64, u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
             if self.blocks.is_finite() && blocks.len() == 1 {
                 // One block holding the whole mesh: the search over the whole mesh, which
@@ -350,6 +340,82 @@ impl BlockSearch {
             self.found[grid] = searched.into_iter().collect();
         }
         all
+    }
+
+    /// The faces of the last search by block on grid `grid` ([`BlockSearch::place`]).
+    #[cfg(test)]
+    pub(super) fn placed(&self, grid: usize) -> &[(u64, u32)] {
+        &self.placed[grid].by_block
+    }
+
+    /// Places the faces of the mesh `faces` by block on grid `grid` (shifted by `offset`
+    /// blocks), as (block key, face) in order, in `placed[grid]`: a block's indices (from 0, as
+    /// the centroids lie above the grid's low corner) packed into 21 bits each, which keeps
+    /// their order (blocks beyond 2²¹ along an axis, on no real mesh, share the last); one
+    /// block, 0, for an infinite side.
+    /// After a search, only the faces added since and those flagged in `changed` are placed
+    /// again (a cut gives a face a copy of its corner, which lies where the corner does, so
+    /// the face stays in its block); the list is made anew if one of them moved to another
+    /// block, or if nothing is flagged (a new mesh).
+    fn place(
+        &mut self,
+        grid: usize,
+        offset: f64,
+        faces: &[[u32; 3]],
+        positions: &[DVec3],
+        changed: &[bool],
+    ) {
+        let at = |k: u32| positions[k as usize];
+        let side = self.blocks * self.grid.mean_edge;
+        let lo = self.grid.lo;
+        let key = |t: &[u32; 3]| {
+            let c = (at(t[0]) + at(t[1]) + at(t[2])) / 3.0;
+            #[expect(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                reason = "a block index"
+            )]
+            ((c - lo) / side + offset)
+                .floor()
+                .to_array()
+                .iter()
+                .fold(0u64, |key, &x| (key << 21) | (x.max(0.0) as u64).min(BLOCK_INDEX_MAX))
+        };
+        let face = |f: usize| u32::try_from(f).unwrap_or(u32::MAX);
+        let Placed { by_block: keyed, key: face_key } = &mut self.placed[grid];
+        let old = face_key.len();
+        let kept = !changed.is_empty()
+            && old <= faces.len()
+            && (0..old)
+                .all(|f| !changed.get(f).copied().unwrap_or(true) || key(&faces[f]) == face_key[f]);
+        if kept {
+            let mut added: Vec<(u64, u32)> =
+                faces[old..].par_iter().enumerate().map(|(k, t)| (key(t), face(old + k))).collect();
+            added.par_sort_unstable();
+            face_key.resize(faces.len(), 0);
+            for &(k, f) in &added {
+                face_key[f as usize] = k;
+            }
+            // The two sorted lists merged.
+            let mut merged = Vec::with_capacity(keyed.len() + added.len());
+            let (mut i, mut j) = (0, 0);
+            while i < keyed.len() && j < added.len() {
+                if keyed[i] < added[j] {
+                    merged.push(keyed[i]);
+                    i += 1;
+                } else {
+                    merged.push(added[j]);
+                    j += 1;
+                }
+            }
+            merged.extend_from_slice(&keyed[i..]);
+            merged.extend_from_slice(&added[j..]);
+            *keyed = merged;
+        } else {
+            *face_key = faces.par_iter().map(key).collect();
+            *keyed = face_key.iter().enumerate().map(|(f, &k)| (k, face(f))).collect();
+            keyed.par_sort_unstable();
+        }
     }
 }
 
@@ -541,8 +607,11 @@ fn loop_through(root: u32, graph: &BlockGraph<'_>, excluded: &[bool]) -> Vec<(f6
     let mut parent = vec![u32::MAX; n];
     let mut heap = BinaryHeap::new();
     dist[root as usize] = 0.0;
-    heap.push((Reverse(OrderedDistance(0.0)), root));
-    while let Some((Reverse(OrderedDistance(d)), v)) = heap.pop() {
+    // The heap orders distances by their bits, as `f64::total_cmp` orders them (they are
+    // finite and at least +0, whose bits grow with them), in fewer steps.
+    heap.push((Reverse(0.0f64.to_bits()), root));
+    while let Some((Reverse(bits), v)) = heap.pop() {
+        let d = f64::from_bits(bits);
         if d > dist[v as usize] {
             continue;
         }
@@ -554,7 +623,7 @@ fn loop_through(root: u32, graph: &BlockGraph<'_>, excluded: &[bool]) -> Vec<(f6
             if nd < dist[w as usize] {
                 dist[w as usize] = nd;
                 parent[w as usize] = v;
-                heap.push((Reverse(OrderedDistance(nd)), w));
+                heap.push((Reverse(nd.to_bits()), w));
             }
         }
     }
@@ -669,24 +738,6 @@ impl Adjacency {
     /// The neighbours of vertex `v` and the lengths of the edges to them.
     fn of(&self, v: u32) -> &[(u32, f64)] {
         &self.to[self.start[v as usize]..self.start[v as usize + 1]]
-    }
-}
-
-/// An `f64` distance ordered for the heap (distances are finite and non-negative).
-#[derive(Clone, Copy, PartialEq)]
-struct OrderedDistance(f64);
-
-impl Eq for OrderedDistance {}
-
-impl PartialOrd for OrderedDistance {
-    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for OrderedDistance {
-    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
-        self.0.total_cmp(&other.0)
     }
 }
 

@@ -274,10 +274,10 @@ fn loops_around_the_same_handle_are_not_cut_together() {
     let meridian = |i: u32| (0..4).map(|j| id(i, j)).collect::<Vec<u32>>();
     let parallel: Vec<u32> = (0..8).map(|i| id(i, 0)).collect();
     let found = vec![(1.0, meridian(0)), (1.0, meridian(4)), (2.0, parallel)];
-    let chosen = independent_loops(&t, p.len(), found, 3);
+    let chosen = independent_loops(&Homology::new(&t), p.len(), found, 3);
     assert_eq!(chosen, vec![meridian(0)]);
     // With no loop in the way, the second meridian alone would do.
-    let chosen = independent_loops(&t, p.len(), vec![(1.0, meridian(4))], 3);
+    let chosen = independent_loops(&Homology::new(&t), p.len(), vec![(1.0, meridian(4))], 3);
     assert_eq!(chosen, vec![meridian(4)]);
 }
 
@@ -676,7 +676,8 @@ fn homology_tells_which_disjoint_loops_cut_together_leave_the_surface_whole() {
 fn blocks_no_cut_touched_give_the_loops_a_new_search_finds() {
     // The plate with three holes, searched in blocks of every size; one handle cut and its
     // sides closed; then the search again, reusing what it found in the blocks whose faces the
-    // cut left as they were, finds what a search of every block finds.
+    // cut left as they were (and where it placed them), finds what a search of every block
+    // finds.
     let (mut p, mut t) = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
     let grid = BlockGrid::of(&t, &p).expect("a grid");
     let mut with_loops = 0;
@@ -694,8 +695,13 @@ fn blocks_no_cut_touched_give_the_loops_a_new_search_finds() {
         let kept = changed.iter().filter(|&&c| !c).count();
         assert!(kept > t.len() / 2, "{kept} of {}", t.len());
         let again = search.loops(&t, &p, &[], &changed);
-        let fresh = BlockSearch::new(grid, side).loops(&t, &p, &[], &[]);
+        let mut new_search = BlockSearch::new(grid, side);
+        let fresh = new_search.loops(&t, &p, &[], &[]);
         assert_eq!(again, fresh);
+        // The faces placed anew only where the cut changed or added them, as if all were.
+        for g in 0..2 {
+            assert_eq!(search.placed(g), new_search.placed(g), "grid {g}");
+        }
         (p, t) = voxel_surface([7, 3, 1], |x, y, _| !(y == 1 && x % 2 == 1));
     }
     assert!(with_loops >= 2, "{with_loops}");
