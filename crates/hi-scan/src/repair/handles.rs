@@ -114,22 +114,17 @@ pub(super) fn cut_handles(
         // Every block's loop at every size of block (a loop may fit a block of one grid and
         // not the next, and the roots differ), shortest first; as many of them cut at once as
         // are disjoint and, together, do not separate the surface (by the homology of the
-        // faces as they are, found meanwhile).
-        let (mut found, homology): (Vec<(f64, Vec<u32>)>, _) = join(
-            || {
-                searches
-                    .par_iter_mut()
-                    .flat_map_iter(|search| search.loops(faces, positions, &on_boundary, &changed))
-                    .collect()
-            },
-            || Homology::new(faces),
-        );
+        // faces as they are).
+        let mut found: Vec<(f64, Vec<u32>)> = searches
+            .par_iter_mut()
+            .flat_map_iter(|search| search.loops(faces, positions, &on_boundary, &changed))
+            .collect();
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let wanted = usize::try_from((chi_wanted - chi) / 2)
             .unwrap_or(0)
             .min(max_handles - repair.handles_cut)
             .max(1);
-        let loops = independent_loops(&homology, positions.len(), found, wanted);
+        let loops = independent_loops(&Homology::new(faces), positions.len(), found, wanted);
         if loops.is_empty() {
             return;
         }
@@ -171,9 +166,9 @@ pub(super) fn cut_handles(
 /// Of the loops `found` (shortest first), at most `wanted` that share no vertex and that,
 /// cut together, leave the faces of the closed mesh of `homology` ([`Homology::new`], over
 /// `vertices` vertices) connected: each would lower the genus by one (the greedy choice of a
-/// shortest system of loops, Erickson and Whittlesey 2005). Disjoint loops cut together leave the surface in one
-/// piece exactly when their mod-2 homology classes are independent ([`Homology`]); a loop that
-/// separates the surface alone (class 0) is never taken.
+/// shortest system of loops, Erickson and Whittlesey 2005). Disjoint loops cut together leave
+/// the surface in one piece exactly when their mod-2 homology classes are independent
+/// ([`Homology`]); a loop that separates the surface alone (class 0) is never taken.
 pub(super) fn independent_loops(
     homology: &Homology,
     vertices: usize,
@@ -282,13 +277,76 @@ pub(super) struct BlockSearch {
     placed: [Placed; 2],
 }
 
-/// The faces of a mesh by block ([`BlockSearch::place`]).
+/// The faces of a mesh by block ([`BlockSearch::place`]): 4 bytes a face.
 #[derive(Default)]
 struct Placed {
-    /// (block key, face), in order.
-    by_block: Vec<(u64, u32)>,
-    /// Each face's block key.
-    key: Vec<u64>,
+    /// The faces, block after block, each block's in increasing order.
+    faces: Vec<u32>,
+    /// Each block's key and where its faces start in `faces`, in increasing order of key.
+    blocks: Vec<(u64, u32)>,
+    /// How many faces the mesh had when they were placed.
+    count: usize,
+}
+
+impl Placed {
+    /// The blocks, each its key and faces.
+    fn blocks(&self) -> impl Iterator<Item = (u64, &[u32])> {
+        self.blocks.iter().enumerate().map(|(b, &(key, start))| {
+            let end = self.blocks.get(b + 1).map_or(self.faces.len(), |x| x.1 as usize);
+            (key, &self.faces[start as usize..end])
+        })
+    }
+
+    /// Whether face `f` lies in the block of key `key`.
+    fn holds(&self, key: u64, f: u32) -> bool {
+        let Ok(b) = self.blocks.binary_search_by_key(&key, |x| x.0) else {
+            return false;
+        };
+        let end = self.blocks.get(b + 1).map_or(self.faces.len(), |x| x.1 as usize);
+        self.faces[self.blocks[b].1 as usize..end].binary_search(&f).is_ok()
+    }
+
+    /// The faces placed by their (key, face) in increasing order, faces joining the blocks of
+    /// their keys.
+    fn from_sorted(keyed: &[(u64, u32)], count: usize) -> Self {
+        let mut placed = Self { faces: Vec::with_capacity(keyed.len()), blocks: Vec::new(), count };
+        for block in keyed.chunk_by(|a, b| a.0 == b.0) {
+            let start = u32::try_from(placed.faces.len()).unwrap_or(u32::MAX);
+            placed.blocks.push((block[0].0, start));
+            placed.faces.extend(block.iter().map(|x| x.1));
+        }
+        placed
+    }
+
+    /// These faces with the faces `added` (by (key, face) in increasing order, every face
+    /// numbered after those placed) joining the blocks of their keys.
+    fn with(&self, added: &[(u64, u32)], count: usize) -> Self {
+        let mut placed = Self {
+            faces: Vec::with_capacity(self.faces.len() + added.len()),
+            blocks: Vec::with_capacity(self.blocks.len()),
+            count,
+        };
+        let mut old = self.blocks().peekable();
+        let mut new = added.chunk_by(|a, b| a.0 == b.0).peekable();
+        loop {
+            let key = match (old.peek(), new.peek()) {
+                (Some(o), Some(n)) => o.0.min(n[0].0),
+                (Some(o), None) => o.0,
+                (None, Some(n)) => n[0].0,
+                (None, None) => break,
+            };
+            let start = u32::try_from(placed.faces.len()).unwrap_or(u32::MAX);
+            placed.blocks.push((key, start));
+            // The block's old faces, then its new ones (numbered after them).
+            if let Some((_, faces)) = old.next_if(|o| o.0 == key) {
+                placed.faces.extend_from_slice(faces);
+            }
+            if let Some(faces) = new.next_if(|n| n[0].0 == key) {
+                placed.faces.extend(faces.iter().map(|x| x.1));
+            }
+        }
+        placed
+    }
 }
 
 impl BlockSearch {
@@ -314,8 +372,7 @@ impl BlockSearch {
                 break;
             }
             self.place(grid, offset, faces, positions, changed);
-            let keyed = &self.placed[grid].by_block;
-            let blocks: Vec<&[(u64, u32)]> = keyed.chunk_by(|a, b| a.0 == b.0).collect();
+            let blocks: Vec<(u64, &[u32])> = self.placed[grid].blocks().collect();
             if self.blocks.is_finite() && blocks.len() == 1 {
                 // One block holding the whole mesh: the search over the whole mesh, which
                 // every caller runs as well (and would find the same loops).
@@ -325,15 +382,12 @@ impl BlockSearch {
             let cache = &self.found[grid];
             let searched: Vec<(u64, Loops)> = blocks
                 .par_iter()
-                .map(|block| {
-                    let key = block[0].0;
-                    let clean =
-                        block.iter().all(|&(_, f)| changed.get(f as usize).is_some_and(|&c| !c));
+                .map(|&(key, block)| {
+                    let clean = block.iter().all(|&f| changed.get(f as usize).is_some_and(|&c| !c));
                     if clean && let Some(loops) = cache.get(&key) {
                         return (key, loops.clone());
                     }
-                    let block: Vec<u32> = block.iter().map(|&(_, f)| f).collect();
-                    (key, block_loop(faces, positions, on_boundary, &block))
+                    (key, block_loop(faces, positions, on_boundary, block))
                 })
                 .collect();
             all.extend(searched.iter().flat_map(|(_, loops)| loops.iter().cloned()));
@@ -344,13 +398,14 @@ impl BlockSearch {
 
     /// The faces of the last search by block on grid `grid` ([`BlockSearch::place`]).
     #[cfg(test)]
-    pub(super) fn placed(&self, grid: usize) -> &[(u64, u32)] {
-        &self.placed[grid].by_block
+    pub(super) fn placed(&self, grid: usize) -> Vec<(u64, u32)> {
+        let placed = &self.placed[grid];
+        placed.blocks().flat_map(|(key, faces)| faces.iter().map(move |&f| (key, f))).collect()
     }
 
     /// Places the faces of the mesh `faces` by block on grid `grid` (shifted by `offset`
-    /// blocks), as (block key, face) in order, in `placed[grid]`: a block's indices (from 0, as
-    /// the centroids lie above the grid's low corner) packed into 21 bits each, which keeps
+    /// blocks) in `placed[grid]`, blocks in the order of their keys: a block's indices (from 0,
+    /// as the centroids lie above the grid's low corner) packed into 21 bits each, which keeps
     /// their order (blocks beyond 2²¹ along an axis, on no real mesh, share the last); one
     /// block, 0, for an infinite side.
     /// After a search, only the faces added since and those flagged in `changed` are placed
@@ -382,40 +437,24 @@ impl BlockSearch {
                 .fold(0u64, |key, &x| (key << 21) | (x.max(0.0) as u64).min(BLOCK_INDEX_MAX))
         };
         let face = |f: usize| u32::try_from(f).unwrap_or(u32::MAX);
-        let Placed { by_block: keyed, key: face_key } = &mut self.placed[grid];
-        let old = face_key.len();
+        let placed = &self.placed[grid];
+        let old = placed.count;
         let kept = !changed.is_empty()
             && old <= faces.len()
-            && (0..old)
-                .all(|f| !changed.get(f).copied().unwrap_or(true) || key(&faces[f]) == face_key[f]);
-        if kept {
-            let mut added: Vec<(u64, u32)> =
-                faces[old..].par_iter().enumerate().map(|(k, t)| (key(t), face(old + k))).collect();
-            added.par_sort_unstable();
-            face_key.resize(faces.len(), 0);
-            for &(k, f) in &added {
-                face_key[f as usize] = k;
-            }
-            // The two sorted lists merged.
-            let mut merged = Vec::with_capacity(keyed.len() + added.len());
-            let (mut i, mut j) = (0, 0);
-            while i < keyed.len() && j < added.len() {
-                if keyed[i] < added[j] {
-                    merged.push(keyed[i]);
-                    i += 1;
-                } else {
-                    merged.push(added[j]);
-                    j += 1;
-                }
-            }
-            merged.extend_from_slice(&keyed[i..]);
-            merged.extend_from_slice(&added[j..]);
-            *keyed = merged;
+            && (0..old).all(|f| {
+                !changed.get(f).copied().unwrap_or(true) || placed.holds(key(&faces[f]), face(f))
+            });
+        let mut keyed: Vec<(u64, u32)> = if kept {
+            faces[old..].par_iter().enumerate().map(|(k, t)| (key(t), face(old + k))).collect()
         } else {
-            *face_key = faces.par_iter().map(key).collect();
-            *keyed = face_key.iter().enumerate().map(|(f, &k)| (k, face(f))).collect();
-            keyed.par_sort_unstable();
-        }
+            faces.par_iter().enumerate().map(|(f, t)| (key(t), face(f))).collect()
+        };
+        keyed.par_sort_unstable();
+        self.placed[grid] = if kept {
+            placed.with(&keyed, faces.len())
+        } else {
+            Placed::from_sorted(&keyed, faces.len())
+        };
     }
 }
 
