@@ -124,12 +124,21 @@ pub(super) fn boundary_loops(faces: &[[u32; 3]], n: usize) -> Vec<Vec<u32>> {
 }
 
 /// The most vertices on a cap's first ring ([`fill_hole`]): a wider hole's cap is made of
-/// triangles wider than the mesh's, so that its size (about this squared over 4π vertices) and
-/// the fairing's work stay bounded however long the hole's rim is.
+/// triangles wider than the mesh's, so that its size and the fairing's work stay bounded
+/// however long the hole's rim is.
 const CAP_RING_MAX: usize = 256;
 
-/// The most rings of a cap ([`fill_hole`]).
+/// The most rings of a cap's fairing ([`fill_hole`]).
 const CAP_RINGS_MAX: usize = 64;
+
+/// The rings next to the loop that a cap keeps whole ([`CapShape::kept_rings`]).
+const CAP_FULL_RINGS: usize = 2;
+
+/// The most rings of the fairing between two rings a cap keeps ([`CapShape::kept_rings`]).
+pub(super) const CAP_STEP_MAX: usize = 8;
+
+/// The fewest vertices on a ring a cap keeps ([`CapShape::kept_rings`]).
+const CAP_RING_MIN: usize = 6;
 
 /// Closes every loop of `loops` (each in the order the mesh's triangles run along it) by
 /// [`fill_hole`]. The neighbours of the loops' vertices in the mesh, which each cap's fairing
@@ -145,14 +154,60 @@ pub(super) fn fill_holes(
     scan_vertex: &mut Vec<u32>,
     filled: &mut Vec<bool>,
 ) {
-    let mut around: std::collections::HashMap<u32, Vec<u32>> =
-        loops.iter().flatten().map(|&v| (v, Vec::new())).collect();
-    gather_neighbours(faces, &mut around);
+    fill_holes_with(loops, faces, positions, scan_vertex, filled, true);
+}
+
+/// [`fill_holes`] with every ring of each cap's fairing kept (no grading,
+/// [`CapShape::kept_rings`]): the fairing itself, for the tests.
+#[cfg(test)]
+pub(super) fn fill_holes_fine(
+    loops: &[Vec<u32>],
+    faces: &mut Vec<[u32; 3]>,
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    filled: &mut Vec<bool>,
+) {
+    fill_holes_with(loops, faces, positions, scan_vertex, filled, false);
+}
+
+/// [`fill_holes`], its caps graded ([`CapShape::kept_rings`]) if `graded`.
+fn fill_holes_with(
+    loops: &[Vec<u32>],
+    faces: &mut Vec<[u32; 3]>,
+    positions: &mut Vec<DVec3>,
+    scan_vertex: &mut Vec<u32>,
+    filled: &mut Vec<bool>,
+    graded: bool,
+) {
+    // The loops' vertices' neighbours, in one pass over the faces (each vertex's place among
+    // the loops' vertices looked up by index).
+    let rims: Vec<u32> = loops.iter().flatten().copied().collect();
+    let mut slot = vec![u32::MAX; positions.len()];
+    for (i, &v) in rims.iter().enumerate() {
+        if let Some(s) = slot.get_mut(v as usize) {
+            *s = u32::try_from(i).unwrap_or(u32::MAX);
+        }
+    }
+    let mut lists: Vec<Vec<u32>> = vec![Vec::new(); rims.len()];
+    for t in faces.iter() {
+        for k in 0..3 {
+            let Some(list) = slot.get(t[k] as usize).and_then(|&s| lists.get_mut(s as usize))
+            else {
+                continue;
+            };
+            for other in [t[(k + 1) % 3], t[(k + 2) % 3]] {
+                if !list.contains(&other) {
+                    list.push(other);
+                }
+            }
+        }
+    }
+    let around: std::collections::HashMap<u32, Vec<u32>> = rims.into_iter().zip(lists).collect();
     let mut next = positions.len();
     let shapes: Vec<(CapShape, usize)> = loops
         .iter()
         .map(|lp| {
-            let shape = CapShape::of(lp, positions);
+            let shape = CapShape { graded, ..CapShape::of(lp, positions) };
             let first = next;
             next += shape.vertices();
             (shape, first)
@@ -187,6 +242,9 @@ struct CapShape {
     rings: usize,
     /// Vertices on each ring.
     count: usize,
+    /// Whether the cap keeps fewer rings than its fairing, and fewer vertices on them, inwards
+    /// ([`CapShape::kept_rings`]).
+    graded: bool,
 }
 
 impl CapShape {
@@ -212,12 +270,49 @@ impl CapShape {
         // Every ring as many vertices as the first: with the umbrella operator's equal weights,
         // rings of equal counts settle evenly spaced (rings that thin out inwards would be
         // drawn towards the centre, leaving long triangles at the rim).
-        CapShape { centre, rings, count: m.min(CAP_RING_MAX) }
+        CapShape { centre, rings, count: m.min(CAP_RING_MAX), graded: true }
     }
 
-    /// The new vertices of the cap: its rings' and the centre.
+    /// The rings the cap keeps ([`fill_hole`]): each as (k, c), ring k (from 1, counted from
+    /// the loop) of the [`CapShape::rings`] of the fairing, with c vertices. The first
+    /// [`CAP_FULL_RINGS`] are kept whole, so that the cap leaves the loop in triangles as
+    /// narrow as the loop's edges; then every second ring the step to the next kept ring
+    /// doubles (up to [`CAP_STEP_MAX`] rings), and a ring of step s at the fraction t of the
+    /// way to the centre keeps about count · (1 − t) / s vertices (its circumference over the
+    /// spacing of its rings, so that its triangles stay about as wide as they are long), at
+    /// least [`CAP_RING_MIN`] and no more than the ring before. The last ring kept lies within
+    /// a step of the centre.
+    fn kept_rings(&self) -> Vec<(usize, usize)> {
+        if !self.graded {
+            return (1..=self.rings).map(|k| (k, self.count)).collect();
+        }
+        let mut kept: Vec<(usize, usize)> = Vec::new();
+        let (mut k, mut step) = (1, 1);
+        while k <= self.rings {
+            let c = if kept.len() < CAP_FULL_RINGS {
+                self.count
+            } else {
+                let t = k as f64 / (self.rings + 1) as f64;
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    reason = "at most count"
+                )]
+                let c = (self.count as f64 * (1.0 - t) / step as f64).round() as usize;
+                c.max(CAP_RING_MIN).min(kept.last().map_or(self.count, |r| r.1))
+            };
+            kept.push((k, c));
+            if kept.len() >= CAP_FULL_RINGS && kept.len().is_multiple_of(2) {
+                step = (2 * step).min(CAP_STEP_MAX);
+            }
+            k += step;
+        }
+        kept
+    }
+
+    /// The new vertices of the cap: its kept rings' ([`CapShape::kept_rings`]) and the centre.
     fn vertices(&self) -> usize {
-        self.rings * self.count + 1
+        self.kept_rings().iter().map(|r| r.1).sum::<usize>() + 1
     }
 }
 
@@ -270,15 +365,20 @@ fn zip_rings(outer: &[u32], inner: &[u32]) -> Vec<[u32; 3]> {
 /// fixed; [`fair`]), so the cap leaves the rim along the surface's own tangent plane, with no
 /// crease for the harmonic surface to ring on. Should that system be singular to rounding, they
 /// go to the discrete membrane instead (each the mean of its neighbours, the loop fixed: as
-/// flat as its border allows; [`membrane`]). `shape` is the cap's size ([`CapShape::of`] the
-/// loop); `around` holds the loop's vertices' neighbours in the mesh ([`fill_holes`]).
+/// flat as its border allows; [`membrane`]). The cap kept is then graded ([`graded`]): the
+/// rings next to the loop whole, those further in fewer and sparser, each vertex on the faired
+/// surface, so that a wide hole's cap costs the later stages (handle search, parameterisation)
+/// about as many vertices as the loop has rather than its square, while it leaves the loop as
+/// smoothly as the fairing does. `shape` is the cap's size ([`CapShape::of`] the loop); `around`
+/// holds the loop's vertices' neighbours in the mesh ([`fill_holes`]).
 fn fill_hole(
     lp: &[u32],
-    &CapShape { centre, rings, count }: &CapShape,
+    shape: &CapShape,
     around: &std::collections::HashMap<u32, Vec<u32>>,
     old: &[DVec3],
     first_new: usize,
 ) -> Cap {
+    let &CapShape { centre, rings, count, .. } = shape;
     let m = lp.len();
     let at = |k: u32| old[k as usize];
     // The loop's point at the fraction s of the way round (by vertex index, from lp[0]).
@@ -333,7 +433,47 @@ fn fill_hole(
     if !fair(lp, &rim, (old, &mut new), first_new, &neighbours, (rings, count)) {
         membrane((old, &mut new), first_new, &neighbours, (16 * (rings + 1)).max(20));
     }
-    Cap { positions: new, triangles }
+    graded(lp, shape, &new, first_new)
+}
+
+/// The cap a hole keeps ([`fill_hole`]) from its fairing's vertices `fine` (rings of `count`
+/// vertices each, ring k's vertex j numbered (k − 1) · `count` + j, and the centre last): the
+/// rings of [`CapShape::kept_rings`], each vertex at the fraction i / c of the way round its
+/// ring of c placed on the fairing's ring by linear interpolation between the two vertices
+/// about it (a ring kept whole keeps its vertices), joined by [`zip_rings`] from the loop `lp`
+/// inwards, then a fan around the centre; numbered from `first_new`.
+fn graded(lp: &[u32], shape: &CapShape, fine: &[DVec3], first_new: usize) -> Cap {
+    let count = shape.count;
+    let mut positions: Vec<DVec3> = Vec::with_capacity(shape.vertices());
+    let mut triangles: Vec<[u32; 3]> = Vec::new();
+    let index = |at: usize| u32::try_from(first_new + at).unwrap_or(u32::MAX);
+    let mut outer: Vec<u32> = lp.to_vec();
+    for (k, c) in shape.kept_rings() {
+        let ring = &fine[(k - 1) * count..k * count];
+        let inner: Vec<u32> = (0..c)
+            .map(|i| {
+                let at = index(positions.len());
+                let x = (i * count) as f64 / c as f64;
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    reason = "in 0..count"
+                )]
+                let j = (x.floor() as usize).min(count - 1);
+                positions.push(ring[j].lerp(ring[(j + 1) % count], x - j as f64));
+                at
+            })
+            .collect();
+        triangles.extend(zip_rings(&outer, &inner));
+        outer = inner;
+    }
+    let centre = index(positions.len());
+    positions.push(fine[fine.len() - 1]);
+    let n = outer.len();
+    for i in 0..n {
+        triangles.push([outer[(i + 1) % n], outer[i], centre]);
+    }
+    Cap { positions, triangles }
 }
 
 /// The discrete membrane over a hole's cap (see [`fill_hole`]): its new vertices `new`

@@ -21,7 +21,8 @@
 //! 5. [`close_part`], from here on: a vertex where several fans of triangles meet is split into
 //!    one vertex per fan;
 //! 6. each hole (a loop of edges with a triangle on one side only) is closed by rings of
-//!    triangles shrinking to a new vertex at the loop's centroid, flagged in
+//!    triangles shrinking to a new vertex at the loop's centroid (faired to the thin plate
+//!    the surface continues into; the rings further from the loop sparser), flagged in
 //!    [`ClosedMesh::filled`] (for a [`Closing::Disc`], every hole but the one whose loop spans
 //!    the largest area: the disc's rim);
 //! 7. handles are cut (but a [`Closing::Torus`]'s), each along the shortest loop found that

@@ -3,7 +3,7 @@ use super::handles::{
     BlockGrid, BlockSearch, block_edges, block_loop, block_loop_with, cut_handles, genus_zero,
     independent_loops,
 };
-use super::holes::membrane;
+use super::holes::{CAP_STEP_MAX, fill_holes_fine, membrane};
 use super::homology::{Homology, IndependentClasses};
 use super::*;
 
@@ -317,7 +317,8 @@ fn ring_strip(
 /// A hole of thousands of edges is capped by a bounded number of triangles (its first ring
 /// has at most `CAP_RING_MAX` vertices) that close it, wound as the mesh, every one facing
 /// −z as the flat annulus does, none longer than a few of the rim's edges (or of the first
-/// ring's); the faired cap of a flat rim is flat, and stays inside the rim.
+/// ring's) next to the rim, nor than twice the widest step between kept rings further in; the
+/// faired cap of a flat rim is flat, and stays inside the rim.
 #[test]
 fn caps_of_long_holes_stay_small_flat_and_well_shaped() {
     for m in [12, 100, 4000] {
@@ -348,18 +349,19 @@ fn caps_of_long_holes_stay_small_flat_and_well_shaped() {
             t.iter().flat_map(|f| (0..3).map(move |k| (f[k], f[(k + 1) % 3]))).collect();
         directed.sort_unstable();
         assert!(directed.windows(2).all(|w| w[0] != w[1]), "{m}: consistently wound");
-        let rim_edge = std::f64::consts::TAU / m as f64;
+        // The spacing of the fairing's rings: the rim's edges, or the 256 vertices of a long
+        // rim's first ring.
+        let spacing = (std::f64::consts::TAU / m as f64).max(std::f64::consts::TAU / 256.0);
         for f in &t[before..] {
             let [a, b, c] = f.map(|k| p[k as usize]);
             let normal = (b - a).cross(c - a);
             assert!(normal.z < 0.0, "{m}: a cap triangle faces +z");
             let longest = (b - a).length().max((c - b).length()).max((a - c).length());
-            // As wide as the rim's edges, or as the 256 vertices of a long rim's first ring.
-            assert!(
-                longest < 4.0 * rim_edge.max(std::f64::consts::TAU / 256.0),
-                "{m}: {longest} at {}",
-                ((a + b + c) / 3.0).length()
-            );
+            // As wide as that spacing within the two rings kept whole next to the rim, and no
+            // wider than twice the widest step between the rings kept further in.
+            let at = ((a + b + c) / 3.0).length();
+            let bound = if at > 1.0 - 2.5 * spacing { 4.0 } else { 2.0 * CAP_STEP_MAX as f64 };
+            assert!(longest < bound * spacing, "{m}: {longest} at {at}");
         }
         for q in &p[n0..] {
             assert!(q.z.abs() < 1e-9 && q.truncate().length() < 1.0, "{m}: {q} off the flat cap");
@@ -488,11 +490,12 @@ fn sphere_band(around: usize, along: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     })
 }
 
-/// A cap is the thin plate of its rim: the gradient of Σ |U(v)|² over the cap's vertices
-/// (U the umbrella operator, summed over the cap's vertices and its rim's, on the mesh as
-/// closed) vanishes at every new vertex, to rounding. Checked from the closed mesh alone, on
-/// the caps of a band of the sphere: rims of 48 vertices (a cap of rings of as many vertices)
-/// and of 300 (rings of 256, zipped to the rim).
+/// A cap's fairing is the thin plate of its rim: the gradient of Σ |U(v)|² over the cap's
+/// vertices (U the umbrella operator, summed over the cap's vertices and its rim's, on the
+/// mesh as closed) vanishes at every new vertex, to rounding. Checked from the closed mesh
+/// alone (every ring of the fairing kept, [`fill_holes_fine`]), on the caps of a band of the
+/// sphere: rims of 48 vertices (a cap of rings of as many vertices) and of 300 (rings of 256,
+/// zipped to the rim).
 #[test]
 fn caps_are_the_thin_plate_of_their_rim() {
     for around in [48, 300] {
@@ -503,7 +506,7 @@ fn caps_are_the_thin_plate_of_their_rim() {
         let loops = boundary_loops(&t, n0);
         assert_eq!(loops.len(), 2);
         let rims: Vec<u32> = loops.iter().flatten().copied().collect();
-        fill_holes(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
+        fill_holes_fine(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
         assert!(boundary_loops(&t, p.len()).is_empty());
         let mut around_of: Vec<Vec<u32>> = vec![Vec::new(); p.len()];
         for f in &t {
@@ -537,6 +540,108 @@ fn caps_are_the_thin_plate_of_their_rim() {
         for q in &p[n0..] {
             assert!(q.z.abs() > 0.8, "{around}: {q} inside the band");
         }
+    }
+}
+
+/// The distance from `x` to the segment from `a` to `b`.
+fn segment_distance(x: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let d = b - a;
+    let s = if d.length_squared() > 0.0 {
+        ((x - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    x.distance(a + d * s)
+}
+
+/// A cap as it is kept (graded: rings thinning and spreading inwards) lies on its fairing:
+/// every new vertex on an edge of the cap made with every ring of the fairing kept (to
+/// rounding), the rim's triangles the same in both; and it has less than half the fairing's
+/// vertices (a tenth for the long rims), closes the hole consistently wound, and has no angle
+/// smaller than the fairing's smallest. On the caps of a band of the sphere (rims of 48 and
+/// 300 vertices) and of a flat annulus's inner rim of 4000.
+#[test]
+fn graded_caps_lie_on_their_fairing() {
+    let bands = [48, 300].map(|around| (around, sphere_band(around, 12)));
+    let flat = (4000, annulus(4000, 3));
+    for (around, (p0, t0)) in bands.into_iter().chain([flat]) {
+        let n0 = p0.len();
+        let mut loops = boundary_loops(&t0, n0);
+        if around == 4000 {
+            loops.retain(|lp| (p0[lp[0] as usize].length() - 1.0).abs() < 1e-9);
+        }
+        let closed = |fine: bool| {
+            let (mut p, mut t) = (p0.clone(), t0.clone());
+            let mut scan_vertex: Vec<u32> = (0..n0 as u32).collect();
+            let mut filled = vec![false; t.len()];
+            if fine {
+                fill_holes_fine(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
+            } else {
+                fill_holes(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
+            }
+            (p, t)
+        };
+        let (pf, tf) = closed(true);
+        let (pg, tg) = closed(false);
+        let (fine_new, graded_new) = (pf.len() - n0, pg.len() - n0);
+        let fraction = if around >= 300 { 10 } else { 2 };
+        assert!(
+            fraction * graded_new < fine_new,
+            "{around}: {graded_new} of {fine_new} vertices kept"
+        );
+        // Closed (but for the annulus's outer rim) and consistently wound.
+        let open = usize::from(around == 4000);
+        assert_eq!(boundary_loops(&tg, pg.len()).len(), open, "{around}");
+        let mut directed: Vec<(u32, u32)> =
+            tg.iter().flat_map(|f| (0..3).map(move |k| (f[k], f[(k + 1) % 3]))).collect();
+        directed.sort_unstable();
+        assert!(directed.windows(2).all(|w| w[0] != w[1]), "{around}: consistently wound");
+        // The fairing's edges between new vertices or from the rim, each new vertex's nearest
+        // few of the fairing's vertices found by brute force, and their edges searched.
+        let mut edges_of: Vec<Vec<u32>> = vec![Vec::new(); pf.len()];
+        for f in &tf[t0.len()..] {
+            for k in 0..3 {
+                let (a, b) = (f[k], f[(k + 1) % 3]);
+                edges_of[a as usize].push(b);
+                edges_of[b as usize].push(a);
+            }
+        }
+        let scale = pf[n0..].iter().map(|q| q.length()).fold(0.0, f64::max);
+        for q in &pg[n0..] {
+            let mut near: Vec<(f64, usize)> =
+                (n0..pf.len()).map(|k| (pf[k].distance(*q), k)).collect();
+            let few = near.len().min(8);
+            near.select_nth_unstable_by(few - 1, |a, b| a.0.total_cmp(&b.0));
+            let off = near[..few]
+                .iter()
+                .flat_map(|&(_, k)| edges_of[k].iter().map(move |&o| (k, o as usize)))
+                .map(|(k, o)| segment_distance(*q, pf[k], pf[o]))
+                .fold(f64::INFINITY, f64::min);
+            assert!(off < 1e-12 * scale, "{around}: {q} {off:e} off the fairing's edges");
+        }
+        // The triangles on the rim: the same in both (the first ring is kept whole).
+        let on_rim = |f: &&[u32; 3]| f.iter().filter(|&&k| (k as usize) < n0).count() == 2;
+        let rim_f: Vec<[u32; 3]> = tf[t0.len()..].iter().filter(on_rim).copied().collect();
+        let rim_g: Vec<[u32; 3]> = tg[t0.len()..].iter().filter(on_rim).copied().collect();
+        assert_eq!(rim_f.len(), rim_g.len(), "{around}");
+        for (a, b) in rim_f.iter().zip(&rim_g) {
+            for k in 0..3 {
+                assert_eq!(pf[a[k] as usize], pg[b[k] as usize], "{around}: a rim triangle moved");
+            }
+        }
+        let smallest = |p: &[DVec3], t: &[[u32; 3]]| {
+            t.iter()
+                .flat_map(|f| {
+                    let c = f.map(|k| p[k as usize]);
+                    (0..3).map(move |k| {
+                        let (u, v) = (c[(k + 1) % 3] - c[k], c[(k + 2) % 3] - c[k]);
+                        u.angle_between(v).to_degrees()
+                    })
+                })
+                .fold(180.0, f64::min)
+        };
+        let (sg, sf) = (smallest(&pg, &tg[t0.len()..]), smallest(&pf, &tf[t0.len()..]));
+        assert!(sg >= sf, "{around}: a cap angle of {sg}°, the fairing's smallest {sf}°");
     }
 }
 
