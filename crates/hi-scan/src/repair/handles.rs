@@ -459,10 +459,11 @@ impl BlockSearch {
 }
 
 /// The loops found in the faces `block` of a mesh that do not separate them (each alone): their
-/// lengths and vertices, shortest first. They are the shorter half of the greedy system through
-/// the root whose shortest loop is the shortest of a few roots tried ([`HANDLE_ROOTS`]): the
-/// system has two loops per handle (about it and along it), of which one is cut, and cutting
-/// the loops of several handles found in one search takes fewer searches than one at a time.
+/// lengths and vertices, shortest first. They are the greedy system through the root whose
+/// shortest loop is the shortest of a few roots tried ([`HANDLE_ROOTS`]): the system has two
+/// loops per handle (about it and along it), of which at most one is cut ([`cut_handles`]
+/// chooses), and cutting the loops of several handles found in one search takes fewer searches
+/// than one at a time.
 /// The mesh is closed but for at most one boundary loop (the vertices `on_boundary` marks): the
 /// loops avoid its vertices, and the faces about it count as joined, as the band of faces along
 /// the whole loop joins them (so a loop whose sides both reach the boundary does not separate
@@ -546,10 +547,10 @@ pub(super) fn block_loop_with(
             break;
         }
     }
-    // Two loops per handle; one of each pair is cut: the shorter half.
-    let half = best.len().div_ceil(2);
+    // Two loops per handle, crossing each other: at most one of each pair is cut, and both are
+    // offered, so that where the shorter is kept out by another handle's cut (a vertex shared,
+    // or a class their cuts would repeat) the other may still be cut in the same round.
     best.into_iter()
-        .take(half)
         .map(|(length, lp)| (length, lp.iter().map(|&v| verts[v as usize]).collect()))
         .collect()
 }
