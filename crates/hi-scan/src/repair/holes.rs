@@ -157,21 +157,9 @@ pub(super) fn fill_holes(
     fill_holes_with(loops, faces, positions, scan_vertex, filled, true);
 }
 
-/// [`fill_holes`] with every ring of each cap's fairing kept (no grading,
-/// [`CapShape::kept_rings`]): the fairing itself, for the tests.
-#[cfg(test)]
-pub(super) fn fill_holes_fine(
-    loops: &[Vec<u32>],
-    faces: &mut Vec<[u32; 3]>,
-    positions: &mut Vec<DVec3>,
-    scan_vertex: &mut Vec<u32>,
-    filled: &mut Vec<bool>,
-) {
-    fill_holes_with(loops, faces, positions, scan_vertex, filled, false);
-}
-
-/// [`fill_holes`], its caps graded ([`CapShape::kept_rings`]) if `graded`.
-fn fill_holes_with(
+/// [`fill_holes`], its caps graded ([`CapShape::kept_rings`]) if `graded`; else every ring of
+/// each cap's fairing is kept (the fairing itself, for the tests).
+pub(super) fn fill_holes_with(
     loops: &[Vec<u32>],
     faces: &mut Vec<[u32; 3]>,
     positions: &mut Vec<DVec3>,
@@ -444,7 +432,7 @@ fn fill_hole(
 /// inwards, then a fan around the centre; numbered from `first_new`.
 fn graded(lp: &[u32], shape: &CapShape, fine: &[DVec3], first_new: usize) -> Cap {
     let count = shape.count;
-    let mut positions: Vec<DVec3> = Vec::with_capacity(shape.vertices());
+    let mut positions: Vec<DVec3> = Vec::new();
     let mut triangles: Vec<[u32; 3]> = Vec::new();
     let index = |at: usize| u32::try_from(first_new + at).unwrap_or(u32::MAX);
     let mut outer: Vec<u32> = lp.to_vec();

@@ -3,7 +3,7 @@ use super::handles::{
     BlockGrid, BlockSearch, block_edges, block_loop, block_loop_with, cut_handles, genus_zero,
     independent_loops,
 };
-use super::holes::{CAP_STEP_MAX, fill_holes_fine, membrane};
+use super::holes::{CAP_STEP_MAX, fill_holes_with, membrane};
 use super::homology::{Homology, IndependentClasses};
 use super::*;
 
@@ -493,7 +493,7 @@ fn sphere_band(around: usize, along: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
 /// A cap's fairing is the thin plate of its rim: the gradient of Σ |U(v)|² over the cap's
 /// vertices (U the umbrella operator, summed over the cap's vertices and its rim's, on the
 /// mesh as closed) vanishes at every new vertex, to rounding. Checked from the closed mesh
-/// alone (every ring of the fairing kept, [`fill_holes_fine`]), on the caps of a band of the
+/// alone (every ring of the fairing kept, [`fill_holes_with`] ungraded), on the caps of a band of the
 /// sphere: rims of 48 vertices (a cap of rings of as many vertices) and of 300 (rings of 256,
 /// zipped to the rim).
 #[test]
@@ -506,7 +506,7 @@ fn caps_are_the_thin_plate_of_their_rim() {
         let loops = boundary_loops(&t, n0);
         assert_eq!(loops.len(), 2);
         let rims: Vec<u32> = loops.iter().flatten().copied().collect();
-        fill_holes_fine(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
+        fill_holes_with(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled, false);
         assert!(boundary_loops(&t, p.len()).is_empty());
         let mut around_of: Vec<Vec<u32>> = vec![Vec::new(); p.len()];
         for f in &t {
@@ -575,7 +575,7 @@ fn graded_caps_lie_on_their_fairing() {
             let mut scan_vertex: Vec<u32> = (0..n0 as u32).collect();
             let mut filled = vec![false; t.len()];
             if fine {
-                fill_holes_fine(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
+                fill_holes_with(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled, false);
             } else {
                 fill_holes(&loops, &mut t, &mut p, &mut scan_vertex, &mut filled);
             }
