@@ -240,7 +240,8 @@ pub(crate) struct FitArgs {
     #[arg(long, value_name = "K", value_parser = parse_finite)]
     pub(crate) smooth: Option<f64>,
     /// The thin-plate regularisation of the surface: auto (for images made from points, to the
-    /// noise left in the texels, √(6/16) of the scan's estimated noise; none for a mesh's), off,
+    /// noise left in the texels, √(6/16) of the scan's estimated noise, all of it for noise as
+    /// large as the points' spacing; none for a mesh's), off,
     /// gcv (weight by generalised cross-validation), noise=S (to the noise level S), or a
     /// weight W.
     #[arg(long, value_name = "auto|off|gcv|noise=S|W", value_parser = parse_regularisation)]

@@ -425,3 +425,40 @@ fn an_uneven_scan_whose_fine_grid_folds_is_fitted_on_the_median_grid() {
     assert!(mean < 1e-3, "mean {mean} of the diagonal");
     assert!(num(&report["both_ways"]["unreached_fraction"]) < 0.01, "{report}");
 }
+
+#[test]
+fn points_beyond_the_threshold_by_noise_are_said_to_be_noise() {
+    // 20 000 points about the unit sphere, displaced radially by σ = 0.05 (twice their
+    // spacing, 1.45 % of the diagonal of about 3.46): a surface through the middle of the
+    // scatter leaves the points displaced by more than 2 % of the diagonal (1.4 σ, 17 % of them)
+    // beyond it. The warning names the noise as the cause, with its estimate.
+    let sigma = 0.05;
+    let mut text = String::new();
+    for p in hi_testkit::noisy_sphere(20_000, sigma, 11) {
+        writeln!(text, "{} {} {}", p[0], p[1], p[2]).expect("to a string");
+    }
+    let scan = scan_file(&text, "xyz");
+    let out = TempFile::path_with("glb");
+    let run = run(&["fit", scan.path(), "-o", out.path()]);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    let line = stderr.lines().find(|l| l.contains("farther than")).expect("an unreached warning");
+    assert!(line.contains("the scan's noise puts them there"), "{line}");
+    let estimate: f64 = line
+        .split("σ estimated at ")
+        .nth(1)
+        .and_then(|rest| rest.split('%').next())
+        .and_then(|x| x.parse().ok())
+        .expect("the estimate in the line");
+    // The diagonal of the points' bounding box, as the report measures it.
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for line in text.lines() {
+        for (k, x) in line.split(' ').enumerate() {
+            let x: f64 = x.parse().expect("a number");
+            (lo[k], hi[k]) = (lo[k].min(x), hi[k].max(x));
+        }
+    }
+    let diagonal = (0..3).map(|k| (hi[k] - lo[k]).powi(2)).sum::<f64>().sqrt();
+    let expected = 100.0 * sigma / diagonal;
+    assert!((estimate / expected - 1.0).abs() < 0.15, "{line}: σ is {expected:.2}%");
+}

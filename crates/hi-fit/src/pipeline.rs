@@ -157,7 +157,16 @@ pub fn warnings(fitted: &Fit, scan: &str) -> Vec<String> {
     if let Some(errors) = &report.both_ways
         && errors.unreached_fraction > UNREACHED_WARNING
     {
-        let cause = if !report.dropped_parts.is_empty() {
+        // Noise whose three σ pass the threshold leaves points beyond it about any surface
+        // through the middle of the scatter (4.6 % of them at two σ).
+        let diagonal = errors.scan_to_surface.diagonal;
+        let noisy = report.noise.filter(|&sigma| 3.0 * sigma > UNREACHED * diagonal);
+        let cause = if let Some(sigma) = noisy {
+            format!(
+                ": the scan's noise puts them there (σ estimated at {:.2}% of the diagonal)",
+                100.0 * sigma / diagonal
+            )
+        } else if !report.dropped_parts.is_empty() {
             format!(": parts were left out ({})", dropped_list(&report.dropped_parts))
         } else if outer_shell {
             ": they lie inside the outermost shell".to_owned()

@@ -40,7 +40,8 @@ pub enum Regularisation {
     /// None: the surface interpolates the texels (the thesis).
     Off,
     /// Left to the caller: [`crate::fit()`] makes it [`Regularisation::Noise`] with the noise
-    /// left in the texels (√(6/16) of the scan's estimated noise) for images made from points
+    /// left in the texels (√(6/16) of the scan's estimated noise, all of it for noise as large as
+    /// the points' spacing) for images made from points
     /// and [`Regularisation::Off`] for images sampled from a mesh; [`regularise`] itself treats it as [`Regularisation::Gcv`].
     #[default]
     Auto,

@@ -58,13 +58,13 @@ fn the_noise_estimate_finds_the_noise_in_any_units() {
     // 20 000 points on a torus of radii 1 and 0.3, displaced by σ = 0.002 along the normal.
     let sigma = 0.002;
     let points = torus_points(20_000, 1.0, 0.3, sigma, 3);
-    let at_one = noise_estimate(&points);
+    let at_one = noise_estimate(&points).sigma;
     assert!((at_one / sigma - 1.0).abs() < 0.15, "σ estimated as {at_one}, not {sigma}");
     // The same scan in other units: the estimate scales with it (a scan in metres whose
     // neighbourhoods span a millimetre is fitted as well as one in millimetres).
     for scale in [1e-4, 1e3] {
         let scaled: Vec<DVec3> = points.iter().map(|p| *p * scale).collect();
-        let estimate = noise_estimate(&scaled) / scale;
+        let estimate = noise_estimate(&scaled).sigma / scale;
         assert!(
             (estimate / at_one - 1.0).abs() < 1e-6,
             "at scale {scale}: {estimate} against {at_one}"
@@ -78,9 +78,9 @@ fn a_sparse_clean_sample_of_a_curved_surface_has_no_noise() {
     // a quadric misses the circle by far more than rounding. The scales tell that apart
     // from noise: the clean sample's estimate is below a tenth of the noise that a sample with
     // σ = 0.003 gets.
-    let clean = noise_estimate(&torus_points(1_500, 1.0, 0.25, 0.0, 5));
+    let clean = noise_estimate(&torus_points(1_500, 1.0, 0.25, 0.0, 5)).sigma;
     let sigma = 0.003;
-    let noisy = noise_estimate(&torus_points(1_500, 1.0, 0.25, sigma, 5));
+    let noisy = noise_estimate(&torus_points(1_500, 1.0, 0.25, sigma, 5)).sigma;
     assert!(clean < 0.1 * sigma, "clean sample: {clean}");
     assert!((noisy / sigma - 1.0).abs() < 0.35, "σ estimated as {noisy}, not {sigma}");
 }
@@ -101,7 +101,7 @@ fn the_vertices_of_a_mesh_refined_where_it_curves_have_no_noise() {
     let (lo, hi) =
         points.iter().fold((DVec3::MAX, DVec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let diagonal = lo.distance(hi);
-    let estimate = noise_estimate(&points) / diagonal;
+    let estimate = noise_estimate(&points).sigma / diagonal;
     assert!(
         estimate < 1e-5,
         "{} points: noise estimated as {estimate} of the diagonal",
@@ -117,8 +117,54 @@ fn the_vertices_of_a_mesh_refined_where_it_curves_have_no_noise() {
             *p + DVec3::new(gaussian(&mut seed), gaussian(&mut seed), gaussian(&mut seed)) * sigma
         })
         .collect();
-    let found = noise_estimate(&noisy);
+    let found = noise_estimate(&noisy).sigma;
     assert!((found / sigma - 1.0).abs() < 0.35, "σ estimated as {found}, not {sigma}");
+}
+
+#[test]
+fn noise_as_large_as_the_spacing_is_found_at_wider_scales() {
+    // 20 000 points on a torus of radii 1 and 0.3 (spacing about 0.017), displaced along the
+    // normal by σ = 0.02 and 0.04: 24 neighbours make a lump as thick as it is wide, whose
+    // quadric follows the scatter (the four small scales alone found about 0.4 σ); the wider
+    // neighbourhoods find σ. Noise under the spacing keeps its estimate from the small scales.
+    for sigma in [0.02, 0.04] {
+        let found = noise_estimate(&torus_points(20_000, 1.0, 0.3, sigma, 7));
+        assert!(found.lump, "σ = {sigma} not taken as a lump: {found:?}");
+        let found = found.sigma;
+        assert!((found / sigma - 1.0).abs() < 0.12, "σ estimated as {found}, not {sigma}");
+    }
+    // Noise of a tenth of the spacing is no lump, and its estimate is that of the small scales.
+    assert!(!noise_estimate(&torus_points(20_000, 1.0, 0.3, 0.002, 7)).lump);
+    // Points filling a cube are as thick at every scale, and no wider neighbourhood is thin:
+    // no lump of noise about a surface.
+    let mut seed = 9;
+    let cube: Vec<DVec3> =
+        (0..3_000).map(|_| DVec3::new(lcg(&mut seed), lcg(&mut seed), lcg(&mut seed))).collect();
+    assert!(!noise_estimate(&cube).lump);
+    // CGAL's `sphere_20k.xyz`: 21 000 points about the unit sphere whose distances from the
+    // centre scatter by 0.04, twice their spacing. The estimate is that scatter, measured here
+    // directly (the standard deviation of the points' distances from their centroid).
+    let Some(archive) = hi_testkit::cgal_demo_data() else { return };
+    let dir = std::env::temp_dir().join(format!("hi-scan-sphere20k-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let status = std::process::Command::new("tar")
+        .args(["xzf", &archive.to_string_lossy(), "-C", &dir.to_string_lossy()])
+        .arg("data/points_3/sphere_20k.xyz")
+        .status()
+        .expect("tar runs");
+    assert!(status.success(), "tar could not extract sphere_20k.xyz");
+    let scan = hi_scan::scan::read_scan(&dir.join("data/points_3/sphere_20k.xyz"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let points = scan.expect("sphere_20k.xyz reads").points;
+    let centre = points.iter().copied().sum::<DVec3>() / points.len() as f64;
+    let radii: Vec<f64> = points.iter().map(|p| p.distance(centre)).collect();
+    let mean = radii.iter().sum::<f64>() / radii.len() as f64;
+    let scatter =
+        (radii.iter().map(|r| (r - mean).powi(2)).sum::<f64>() / radii.len() as f64).sqrt();
+    let found = noise_estimate(&points);
+    assert!(found.lump, "{found:?}");
+    let found = found.sigma;
+    assert!((found / scatter - 1.0).abs() < 0.1, "σ estimated as {found}, scatter {scatter}");
 }
 
 #[test]

@@ -59,6 +59,34 @@ pub fn fibonacci_sphere(n: usize) -> impl Iterator<Item = [f64; 3]> {
     })
 }
 
+/// `n` points about the unit sphere: the directions of [`fibonacci_sphere`], each at the radius
+/// 1 + σ g, g a standard normal deviate (Box–Muller on a linear congruential sequence started
+/// from `seed`): a noisy scan whose noise is known.
+///
+/// ```
+/// let points = hi_testkit::noisy_sphere(20_000, 0.05, 7);
+/// let radii: Vec<f64> = points.iter().map(|p| p[0].hypot(p[1]).hypot(p[2])).collect();
+/// let mean = radii.iter().sum::<f64>() / 20_000.0;
+/// let sd = (radii.iter().map(|r| (r - mean).powi(2)).sum::<f64>() / 20_000.0).sqrt();
+/// assert!((mean - 1.0).abs() < 0.002 && (sd / 0.05 - 1.0).abs() < 0.03, "{mean} {sd}");
+/// ```
+#[must_use]
+pub fn noisy_sphere(n: usize, sigma: f64, seed: u64) -> Vec<[f64; 3]> {
+    let mut state = seed;
+    let mut uniform = move || {
+        state =
+            state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    fibonacci_sphere(n)
+        .map(|p| {
+            let (u, v) = (uniform(), uniform());
+            let r = 1.0 + sigma * (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos();
+            p.map(|x| r * x)
+        })
+        .collect()
+}
+
 /// The variable that makes every check needing something outside the repository run (a peer
 /// program, a data set): `HI_REQUIRE_PEERS=1`, as CI sets. Without it, such a check that cannot
 /// run says so and passes.

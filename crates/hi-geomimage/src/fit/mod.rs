@@ -24,7 +24,8 @@
 //! Then, per part, the thesis's optional Gaussian smoothing, the regularisation
 //! ([`Regularisation`]: by default, for images made from points, a thin-plate penalty weighed
 //! so that the surface departs from the texels by the noise left in them (the scan's own noise
-//! level, [`hi_scan::noise`], as averaged by the quadric patches the texels lie on), and none
+//! level, [`hi_scan::noise`], as averaged by the quadric patches the texels lie on, or all of
+//! it for a scan as thick as its points are far apart, whose patches follow the scatter), and none
 //! for images sampled from a mesh, whose texels lie exactly on the scan's surface), the
 //! optional reduction, and the harmonic surface through the result.
 //!
@@ -159,8 +160,8 @@ pub struct FitOptions {
     pub smoothing: Option<Smoothing>,
     /// The regularisation of the surface through the image. Default
     /// [`Regularisation::Auto`]: to the noise left in the texels for images made from points
-    /// (the scan's noise level times √(6/16), see [`crate::fit()`]), none for images sampled
-    /// from a mesh.
+    /// (the scan's noise level times √(6/16), or all of it for a lump of noise, see
+    /// [`crate::fit()`]), none for images sampled from a mesh.
     pub regularisation: Regularisation,
     /// Keep about this fraction of the texels by Theorem 5.3 (each side scaled by its square
     /// root; §5.8 keeps 0.25), if any. In (0, 1].
