@@ -462,3 +462,29 @@ fn points_beyond_the_threshold_by_noise_are_said_to_be_noise() {
     let expected = 100.0 * sigma / diagonal;
     assert!((estimate / expected - 1.0).abs() < 0.15, "{line}: σ is {expected:.2}%");
 }
+
+#[test]
+fn points_that_fill_a_volume_are_said_to_fill_it() {
+    // 3 000 points scattered through a cube (as some point sets are, made for meshing a
+    // volume): no surface runs through them. The fit wraps them, and says that they fill a
+    // volume, for the warning and as the cause of the points it leaves far from its surface.
+    let mut seed = 5u64;
+    let mut uniform = move || {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut text = String::new();
+    for _ in 0..3_000 {
+        let (x, y, z) = (uniform(), uniform(), uniform());
+        writeln!(text, "{x} {y} {z}").expect("to a string");
+    }
+    let scan = scan_file(&text, "xyz");
+    let out = TempFile::path_with("glb");
+    let run = run(&["fit", scan.path(), "-o", out.path()]);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(stderr.contains("fill a volume rather than lie on a surface"), "{stderr}");
+    for far in stderr.lines().filter(|l| l.contains("farther than")) {
+        assert!(far.ends_with("they fill a volume"), "{far}");
+    }
+}

@@ -401,7 +401,7 @@ fn a_scan_as_thick_as_its_spacing_is_smoothed_to_its_noise() {
         hi_testkit::noisy_sphere(20_000, sigma, 7).into_iter().map(DVec3::from).collect();
     let scan = Scan { points, ..Scan::default() };
     let result = fit(&scan, &FitOptions::default(), &mut |_| {}).unwrap();
-    let noise = result.report.noise.expect("a point set's noise is estimated");
+    let noise = result.report.noise.expect("a point set's noise is estimated").sigma;
     assert!((noise / sigma - 1.0).abs() < 0.1, "noise estimated as {noise}, not {sigma}");
     let radii: Vec<f64> = result
         .parts

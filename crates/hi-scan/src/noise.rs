@@ -35,10 +35,11 @@
 //! as the lump flattens into a slab), and that scale's residual is the noise. Points that fill
 //! a volume (a cube's or a blob's, as some point sets are, made for other uses) are as thick at
 //! every scale, and so is noise so large that no surface shows through it: should no wider
-//! neighbourhood be thin, or one grow thicker than the one before it (the surface's curvature
-//! showing), the small scales' estimate stands. The residual at the thin scale includes the
-//! surface's own departure from a quadric there, so the estimate errs high rather than low, and
-//! smooths what is noise.
+//! neighbourhood be thin, the small scales' estimate stands and the points are said to fill a
+//! volume ([`Noise::volume`]); should one grow thicker than the one before it (the surface's
+//! curvature showing), the small scales' estimate stands. The residual at the thin scale
+//! includes the surface's own departure from a quadric there, so the estimate errs high rather
+//! than low, and smooths what is noise.
 use std::num::NonZero;
 
 use glam::{DMat3, DVec3};
@@ -74,11 +75,17 @@ pub const LUMPY: f64 = 0.25;
 /// even density.
 pub const LUMP: f64 = 1.25;
 
+/// A wider neighbourhood more than this many times as thick as the one before it shows the
+/// surface's curvature: the lump is a surface's, but its noise is not found (points that fill a
+/// volume are as thick at every scale, to within a few per cent).
+const THICKER: f64 = 1.1;
+
 /// The neighbourhoods tried, smallest first, for a scan thicker than [`THIN`].
 const WIDER: [usize; 5] = [48, 96, 192, 384, 768];
 
 /// How noisy a scan is ([`noise_estimate`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Noise {
     /// The noise σ: the scatter of the points about their surface, in the units of the points.
     pub sigma: f64,
@@ -86,6 +93,11 @@ pub struct Noise {
     /// wider scales. Quadric patches fitted to a few of its points then follow the scatter
     /// rather than average it away, as they do for a scan whose noise is under its spacing.
     pub lump: bool,
+    /// Whether the points fill a volume, or scatter about their surface by more than can be
+    /// told from it: as thick as a lump at 8 and 24 neighbours, and at every wider scale tried
+    /// (up to 768 points, or all of them). `sigma` is then the small scales' estimate, and no
+    /// surface through the points is what they are.
+    pub volume: bool,
 }
 
 /// The scan's noise: the scatter of its points about a local quadric at four scales, the
@@ -132,17 +144,17 @@ pub struct Noise {
 #[must_use]
 pub fn noise_estimate(points: &[DVec3]) -> Noise {
     if points.len() < K || points.iter().any(|p| !p.is_finite()) {
-        return Noise { sigma: 0.0, lump: false };
+        return Noise { sigma: 0.0, lump: false, volume: false };
     }
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> =
         ImmutableKdTree::new_from_slice(crate::distance::as_arrays(points))
     else {
-        return Noise { sigma: 0.0, lump: false };
+        return Noise { sigma: 0.0, lump: false, volume: false };
     };
     let step = points.len().div_ceil(SAMPLES).max(1);
     let samples: Vec<usize> = (0..points.len()).step_by(step).collect();
     let Some(small) = scatter_at(&tree, points, &samples, &SCALES) else {
-        return Noise { sigma: 0.0, lump: false };
+        return Noise { sigma: 0.0, lump: false, volume: false };
     };
     let scatter: [f64; SCALES.len()] = std::array::from_fn(|s| small[s].0);
     // Thickness, the residual over the radius: a lump of noise is as thick at every small
@@ -150,7 +162,7 @@ pub fn noise_estimate(points: &[DVec3]) -> Noise {
     // (as r²: nine times from 8 to 24 neighbours at an even density).
     let thickness = |(residual, radius): (f64, f64)| residual / radius;
     let (first, last) = (thickness(small[0]), thickness(small[SCALES.len() - 1]));
-    let small_scales = Noise { sigma: noise_from_scales(&scatter), lump: false };
+    let small_scales = Noise { sigma: noise_from_scales(&scatter), lump: false, volume: false };
     if !(first > LUMPY && last > THIN && last <= LUMP * first) {
         return small_scales;
     }
@@ -159,18 +171,20 @@ pub fn noise_estimate(points: &[DVec3]) -> Noise {
     // at every scale, or grow thicker again with the surface's curvature: their small scales'
     // estimate stands.
     let mut previous = small[SCALES.len() - 1];
+    let mut tried = 0;
     for k in WIDER.into_iter().take_while(|&k| k <= points.len()) {
         let Some(wider) = scatter_at(&tree, points, &samples, &[k]) else { break };
         let wider = wider[0];
         if thickness(wider) <= THIN {
-            return Noise { sigma: wider.0, lump: true };
+            return Noise { sigma: wider.0, lump: true, volume: false };
         }
-        if thickness(wider) > thickness(previous) {
-            break;
+        if thickness(wider) > THICKER * thickness(previous) {
+            return small_scales;
         }
         previous = wider;
+        tried += 1;
     }
-    small_scales
+    Noise { volume: tried > 0, ..small_scales }
 }
 
 /// For each k of `scales` (increasing), the median over the neighbourhoods of `samples` of the

@@ -397,7 +397,7 @@ pub struct FitReport {
     pub row_points: Option<RowPoints>,
     /// The scan's noise level as estimated for the regularisation ([`hi_scan::noise`]), when
     /// it was.
-    pub noise: Option<f64>,
+    pub noise: Option<hi_scan::noise::Noise>,
     /// The regularisation applied to the largest part.
     pub regularisation: RegularisationReport,
     /// The grid of the largest part's final surface (rows, columns).

@@ -93,13 +93,13 @@ pub(super) fn regularisation_for(
     options: &FitOptions,
     method: Method,
     image_points: &[DVec3],
-) -> (Regularisation, Option<f64>) {
+) -> (Regularisation, Option<hi_scan::noise::Noise>) {
     match (options.regularisation, method) {
         (Regularisation::Auto, Method::Mesh) => (Regularisation::Off, None),
         (Regularisation::Auto, _) => {
             let noise = hi_scan::noise::noise_estimate(image_points);
             let texels = if noise.lump { LUMP_TEXEL_NOISE } else { TEXEL_NOISE };
-            (Regularisation::Noise(texels * noise.sigma), Some(noise.sigma))
+            (Regularisation::Noise(texels * noise.sigma), Some(noise))
         }
         (r, _) => (r, None),
     }
