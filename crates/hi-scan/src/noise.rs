@@ -26,7 +26,7 @@
 //! Noise as large as the points' spacing or larger (a scan as thick as its points are far
 //! apart) is the other end: 24 neighbours then make a lump as thick as it is wide, whose
 //! principal axes and quadric follow the scatter itself, so that every small scale finds a
-//! fraction of the noise (a third to two thirds), the less the smaller the scale. Such a scan
+//! fraction of the noise (two fifths to nine tenths), the less the smaller the scale. Such a scan
 //! shows itself by its thickness, the residual over the neighbourhood's radius: over
 //! [`LUMPY`] at the smallest scale, over [`THIN`] at the largest and not much more than at the
 //! smallest (a clean curved surface grows thicker with the scale, as r²). Its neighbourhoods
@@ -66,8 +66,8 @@ pub const THIN: f64 = 0.16;
 /// A scan is taken as a lump of noise, its noise found at wider scales, when its thickness at
 /// 8 neighbours is over this, and its thickness at 24 neighbours is over [`THIN`] and at most
 /// [`LUMP`] times that at 8 (a sphere's points displaced by their spacing or twice it: 0.3 at
-/// 8 neighbours; a sparse mesh's vertices displaced by half their spacing, whose small scales
-/// find the noise: 0.22).
+/// 8 neighbours; a sparse mesh's vertices displaced by a quarter of their spacing, whose
+/// small scales find the noise: 0.22).
 pub const LUMPY: f64 = 0.25;
 
 /// How much thicker at 24 neighbours than at 8 a lump of noise ([`LUMPY`]) may be: a noisy
