@@ -145,7 +145,8 @@ pub fn warnings(fitted: &Fit, scan: &str) -> Vec<String> {
             dropped_list(&report.dropped_parts)
         ));
     }
-    if report.noise.is_some_and(|n| n.volume) {
+    let volume = report.noise.is_some_and(|n| n.volume);
+    if volume {
         lines.push(format!(
             "warning: the points of {scan} fill a volume rather than lie on a surface (as thick as they are wide in neighbourhoods of every size tried): no surface follows them, and the one fitted only wraps them"
         ));
@@ -165,9 +166,9 @@ pub fn warnings(fitted: &Fit, scan: &str) -> Vec<String> {
         // Noise whose three σ pass the threshold leaves points beyond it about any surface
         // through the middle of the scatter (4.6 % of them at two σ).
         let diagonal = errors.scan_to_surface.diagonal;
-        let noise = report.noise.filter(|n| !n.volume).map(|n| n.sigma);
-        let noisy = noise.filter(|&sigma| 3.0 * sigma > UNREACHED * diagonal);
-        let cause = if report.noise.is_some_and(|n| n.volume) {
+        let noisy =
+            report.noise.map(|n| n.sigma).filter(|&sigma| 3.0 * sigma > UNREACHED * diagonal);
+        let cause = if volume {
             ": they fill a volume".to_owned()
         } else if let Some(sigma) = noisy {
             format!(
