@@ -286,6 +286,44 @@ impl PointSurface {
         self.patches.is_empty()
     }
 
+    /// The spacing of the points about point `k`: r/√2, r the distance to its 8th nearest
+    /// neighbour (the median of these over the points is [`PointSurface::spacing`]); smaller
+    /// than the median where the points are denser.
+    ///
+    /// # Panics
+    ///
+    /// If `k` is not below [`PointSurface::len`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_scan::implicit::PointSurface;
+    ///
+    /// // The plane z = 0 on a unit grid for x < 0 and on a grid of step 1/4 for x ≥ 0: the
+    /// // spacing of a square grid is its step, far from the seam.
+    /// let mut points = Vec::new();
+    /// for j in 0..40 {
+    ///     for i in 0..40 {
+    ///         points.push(DVec3::new(i as f64 - 40.0, j as f64, 0.0));
+    ///     }
+    /// }
+    /// for j in 0..160 {
+    ///     for i in 0..160 {
+    ///         points.push(DVec3::new(i as f64 / 4.0, j as f64 / 4.0, 0.0));
+    ///     }
+    /// }
+    /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    /// let sparse = 20 * 40 + 20; // (−20, 20)
+    /// let dense = 1600 + 80 * 160 + 80; // (20, 20)
+    /// assert!((surface.local_spacing(sparse) - 1.0).abs() < 1e-12);
+    /// assert!((surface.local_spacing(dense) - 0.25).abs() < 1e-12);
+    /// ```
+    #[must_use]
+    pub fn local_spacing(&self, k: usize) -> f64 {
+        self.patches[k].local
+    }
+
     /// The unit normal of the patch about point `k` (the side it faces).
     ///
     /// # Panics
