@@ -439,10 +439,10 @@ const PULL_CANDIDATES: NonZero<usize> = NonZero::new(4).unwrap();
 /// Step 3 of the module documentation: each point the surface `x` left more than [`PULL_FROM`]
 /// spacings off it (the points' median spacing, or the spacing of the points about it where
 /// that is smaller: [`PointSurface::local_spacing`]), along the normal of its nearest texel
-/// (not flagged `filled`), pulls the one of its [`PULL_CANDIDATES`] nearest texels whose normal's line passes nearest to it
-/// (within [`PULL_SIDE`] spacings, the point's patch facing the texel's way) onto it, if its
-/// nearest texel is within [`PULL_UNTIL`] spacings (onto the mean of the points pulling it, its
-/// mirror with it). Returns the number of texels moved.
+/// (not flagged `filled`), pulls the one of its [`PULL_CANDIDATES`] nearest texels whose
+/// normal's line passes nearest to it (within [`PULL_SIDE`] spacings, the point's patch facing
+/// the texel's way) onto it, if its nearest texel is within [`PULL_UNTIL`] spacings (onto the
+/// mean of the points pulling it, its mirror with it). Returns the number of texels moved.
 fn pull(
     patches: &PointSurface,
     points: &[DVec3],
@@ -487,7 +487,9 @@ fn pull(
             let off = (*p - x[t]).dot(normals[t]);
             // Where the points are denser than the median (a crease or a rim sampled finely),
             // a point off the surface by most of their spacing there is detail it missed.
-            let from = PULL_FROM * spacing.min(patches.local_spacing(k));
+            // (A point with fewer than 8 others has no spacing of its own: the median's.)
+            let local = patches.local_spacing(k);
+            let from = PULL_FROM * if local > 0.0 { spacing.min(local) } else { spacing };
             if off.abs() <= from || first.distance.sqrt() >= PULL_UNTIL * spacing {
                 return None;
             }

@@ -288,7 +288,8 @@ impl PointSurface {
 
     /// The spacing of the points about point `k`: r/√2, r the distance to its 8th nearest
     /// neighbour (the median of these over the points is [`PointSurface::spacing`]); smaller
-    /// than the median where the points are denser.
+    /// than the median where the points are denser; 0 for a point with fewer than 8 others, or
+    /// with 8 at its own place.
     ///
     /// # Panics
     ///
