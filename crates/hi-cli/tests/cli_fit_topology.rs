@@ -469,12 +469,9 @@ fn points_that_fill_a_volume_are_said_to_fill_it() {
     // volume): no surface runs through them. The fit wraps them, and says that they fill a
     // volume, for the warning and as the cause of the points it leaves far from its surface.
     let mut seed = 5u64;
-    let mut uniform = move || {
-        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
     let mut text = String::new();
     for _ in 0..3_000 {
+        let mut uniform = || hi_testkit::lcg(&mut seed);
         let (x, y, z) = (uniform(), uniform(), uniform());
         writeln!(text, "{x} {y} {z}").expect("to a string");
     }

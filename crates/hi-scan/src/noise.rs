@@ -100,6 +100,9 @@ pub struct Noise {
     pub volume: bool,
 }
 
+/// No noise found, and neither a lump nor a volume.
+const NO_NOISE: Noise = Noise { sigma: 0.0, lump: false, volume: false };
+
 /// The scan's noise: the scatter of its points about a local quadric at four scales, the
 /// surface's own departure from a quadric, which grows with the scale, separated from it (see
 /// the module documentation), in the units of the points; for a scan as thick as its points
@@ -144,17 +147,17 @@ pub struct Noise {
 #[must_use]
 pub fn noise_estimate(points: &[DVec3]) -> Noise {
     if points.len() < K || points.iter().any(|p| !p.is_finite()) {
-        return Noise { sigma: 0.0, lump: false, volume: false };
+        return NO_NOISE;
     }
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> =
         ImmutableKdTree::new_from_slice(crate::distance::as_arrays(points))
     else {
-        return Noise { sigma: 0.0, lump: false, volume: false };
+        return NO_NOISE;
     };
     let step = points.len().div_ceil(SAMPLES).max(1);
     let samples: Vec<usize> = (0..points.len()).step_by(step).collect();
     let Some(small) = scatter_at(&tree, points, &samples, &SCALES) else {
-        return Noise { sigma: 0.0, lump: false, volume: false };
+        return NO_NOISE;
     };
     let scatter: [f64; SCALES.len()] = std::array::from_fn(|s| small[s].0);
     // Thickness, the residual over the radius: a lump of noise is as thick at every small
@@ -162,7 +165,7 @@ pub fn noise_estimate(points: &[DVec3]) -> Noise {
     // (as r²: nine times from 8 to 24 neighbours at an even density).
     let thickness = |(residual, radius): (f64, f64)| residual / radius;
     let (first, last) = (thickness(small[0]), thickness(small[SCALES.len() - 1]));
-    let small_scales = Noise { sigma: noise_from_scales(&scatter), lump: false, volume: false };
+    let small_scales = Noise { sigma: noise_from_scales(&scatter), ..NO_NOISE };
     if !(first > LUMPY && last > THIN && last <= LUMP * first) {
         return small_scales;
     }

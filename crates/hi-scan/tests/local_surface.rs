@@ -8,12 +8,7 @@ use std::f64::consts::TAU;
 use glam::DVec3;
 use hi_scan::implicit::PointSurface;
 use hi_scan::noise::noise_estimate;
-
-/// A deterministic pseudo-random sequence in [0, 1).
-fn lcg(seed: &mut u64) -> f64 {
-    *seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
-    (*seed >> 11) as f64 / (1u64 << 53) as f64
-}
+use hi_testkit::lcg;
 
 /// A standard normal deviate (Box–Muller).
 fn gaussian(seed: &mut u64) -> f64 {

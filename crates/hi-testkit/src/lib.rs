@@ -59,6 +59,20 @@ pub fn fibonacci_sphere(n: usize) -> impl Iterator<Item = [f64; 3]> {
     })
 }
 
+/// The next of a linear congruential sequence (Knuth's MMIX constants) from `seed`, which it
+/// advances: uniform in [0, 1), its 53 highest bits.
+///
+/// ```
+/// let mut seed = 1;
+/// let xs: Vec<f64> = (0..10_000).map(|_| hi_testkit::lcg(&mut seed)).collect();
+/// assert!(xs.iter().all(|x| (0.0..1.0).contains(x)));
+/// assert!((xs.iter().sum::<f64>() / 10_000.0 - 0.5).abs() < 0.01);
+/// ```
+pub fn lcg(seed: &mut u64) -> f64 {
+    *seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+    (*seed >> 11) as f64 / (1u64 << 53) as f64
+}
+
 /// `n` points about the unit sphere: the directions of [`fibonacci_sphere`], each at the radius
 /// 1 + σ g, g a standard normal deviate (Box–Muller on a linear congruential sequence started
 /// from `seed`): a noisy scan whose noise is known.
@@ -73,11 +87,8 @@ pub fn fibonacci_sphere(n: usize) -> impl Iterator<Item = [f64; 3]> {
 #[must_use]
 pub fn noisy_sphere(n: usize, sigma: f64, seed: u64) -> Vec<[f64; 3]> {
     let mut state = seed;
-    let mut uniform = move || {
-        state =
-            state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
-        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-    };
+    // In (0, 1), for the logarithm.
+    let mut uniform = move || lcg(&mut state) + 0.5 / (1u64 << 53) as f64;
     fibonacci_sphere(n)
         .map(|p| {
             let (u, v) = (uniform(), uniform());
