@@ -100,7 +100,7 @@ Output (stdout, and --report): {\"scan\": …, \"method\": \"mesh\" | \"shrink-w
   \"domains\": [\"sphere\" | \"torus\" | \"sheet\", ...]},
   \"parts\": [{\"name\", \"domain\", \"why\", \"area_fraction\", \"genus\", \"boundary_loops\",
   \"holes_filled\", \"handles_cut\", \"image\", \"surface\", \"hole_fraction\", \"both_ways\"}, …],
-  \"dropped_parts\": [{\"name\", \"vertices\", \"area_fraction\", \"reason\"}, …], \"files\": [...]}
+  \"dropped_parts\": [{\"name\", \"vertices\", \"area_fraction\", \"point_fraction\", \"reason\"}, …], \"files\": [...]}
   Image, surface, mesh, regularisation and reduction are the largest part's.
   Every part of the scan of at least 0.05% of its area is fitted on its own (part 1 the
   largest): a mesh's connected parts, or the parts of the zero set of a point set's signed

@@ -11,6 +11,8 @@ pub(super) struct Sourced {
     pub(super) domain: Domain,
     pub(super) why: String,
     pub(super) area_fraction: f64,
+    /// Its share of the scan's points ([`DroppedPart::point_fraction`]).
+    pub(super) point_fraction: f64,
     pub(super) genus: usize,
     pub(super) boundary_loops: usize,
     pub(super) repair: Repair,
@@ -76,7 +78,8 @@ fn mesh_sources(
     let parts: MeshParts = clock.run(StageKind::Parts, (0, 1), || mesh_parts(points, triangles))?;
     let (planned, dropped) = clock.run(StageKind::Parts, (0, 1), || {
         let floor = (PART_FLOOR, MESH_PART_MIN_VERTICES);
-        plan(&parts, options.boundary, options.layout, floor, MAX_HANDLES, 0.0)
+        let points = vertex_counts(&parts);
+        plan(&parts, &points, options.boundary, options.layout, floor, MAX_HANDLES, 0.0)
     });
     let kept: f64 = planned.iter().map(|p| p.area_fraction).sum();
     if planned.is_empty() || (!force && kept < MIN_AREA_KEPT) {
@@ -119,6 +122,7 @@ fn mesh_sources(
             domain: part.domain,
             why: part.why.clone(),
             area_fraction: part.area_fraction,
+            point_fraction: part.point_fraction,
             genus: part.topology.genus,
             boundary_loops: part.topology.loops.len(),
             repair,
@@ -239,12 +243,14 @@ fn point_sources_on(
             let handles = if last { COARSEST_GRID_HANDLES } else { MAX_HANDLES };
             let parts = coarse.take().unwrap_or_else(|| zero_set_parts(coarser));
             planned = parts.map(|mut parts| {
-                fragments = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
+                let nearest;
+                (fragments, nearest) = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
                 let floor = (PART_FLOOR, PART_MIN_VERTICES);
                 // On a grid with a coarser one to come, a zero set whose parts of few
                 // enough handles hold too little of it is given up at once.
                 let least = if last { 0.0 } else { MIN_AREA_KEPT };
-                plan(&parts, options.boundary, options.layout, floor, handles, least)
+                let (boundary, layout) = (options.boundary, options.layout);
+                plan(&parts, &nearest, boundary, layout, floor, handles, least)
             });
             if planned.as_ref().is_ok_and(|(p, _)| kept(p) >= MIN_AREA_KEPT) {
                 break;
@@ -295,6 +301,7 @@ fn point_sources_on(
             domain: part.domain,
             why: part.why.clone(),
             area_fraction: part.area_fraction,
+            point_fraction: part.point_fraction,
             genus: part.topology.genus,
             boundary_loops: part.topology.loops.len(),
             repair: part.closed.repair,
@@ -359,6 +366,7 @@ fn wrapped_source(
             domain: Domain::Sphere(options.layout),
             why: "rays from the centre, wrapped onto the points".to_owned(),
             area_fraction: 1.0,
+            point_fraction: 1.0,
             genus: 0,
             boundary_loops: 0,
             repair: Repair::default(),
@@ -494,6 +502,7 @@ fn ray_sources(
             domain: Domain::Sphere(options.layout),
             why: "rays from the centre".to_owned(),
             area_fraction: 1.0,
+            point_fraction: 1.0,
             genus: 0,
             boundary_loops: 0,
             repair: Repair::default(),
@@ -569,6 +578,7 @@ pub(super) fn leave_out_guesswork(
                 name: p.name.clone(),
                 vertices: 0,
                 area_fraction: p.area_fraction,
+                point_fraction: p.point_fraction,
                 reason: format!(
                     "{:.0} % of its image found no scan data",
                     100.0 * p.source.hole_fraction()

@@ -71,7 +71,7 @@ use crate::spherical::{Layout, SphericalOptions, spherical_image};
 use crate::{Error, GeometryImage, Smoothing};
 use hi_scan::repair::ClosedMesh;
 use images::{Sourced, Sources, leave_out_guesswork, sources};
-use parts::{PlannedPart, drop_fragments, part_image_or_sphere, plan};
+use parts::{PlannedPart, drop_fragments, part_image_or_sphere, plan, vertex_counts};
 use report::{measure_error, part_report, row_points};
 use surfaces::{Surfaced, filled_on_grid, regularisation_for, surface_of};
 

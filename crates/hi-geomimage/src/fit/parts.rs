@@ -93,6 +93,12 @@ pub struct DroppedPart {
     pub vertices: usize,
     /// Its share of the scan's area.
     pub area_fraction: f64,
+    /// Its share of the scan's points: of a mesh's vertices, those on it; of a point set's
+    /// points (or of their summary, for a cloud summarised first), those nearer to it than to
+    /// any other part of the zero set. A part left out may hold much of the area and few of the
+    /// points, or the reverse: this says how many of the points the fit leaves without a
+    /// surface through it.
+    pub point_fraction: f64,
     /// Why it was left out.
     pub reason: String,
 }
@@ -110,6 +116,8 @@ pub(crate) struct PlannedPart {
     pub(crate) topology: Topology,
     /// Its share of the scan's area.
     pub(crate) area_fraction: f64,
+    /// Its share of the scan's points ([`DroppedPart::point_fraction`]).
+    pub(crate) point_fraction: f64,
     /// Why the domain, in words.
     pub(crate) why: String,
     /// The part as the scan has it, before repair: closed again as a sphere should its
@@ -171,8 +179,11 @@ fn choices(
 /// genus (but a torus) is refused by every closing before anything is done to it, so this is
 /// known from the parts' topology alone: when the others hold less than `least_kept` of the
 /// area, nothing is planned (both lists empty) rather than every other part closed for nothing.
+/// `points` holds the scan's points on (or nearest to) each part, in the order of `parts`: the
+/// parts' shares of the points ([`DroppedPart::point_fraction`]).
 pub(crate) fn plan(
     parts: &MeshParts,
+    points: &[usize],
     boundary: Boundary,
     layout: Layout,
     (floor, min_vertices): (f64, usize),
@@ -180,6 +191,10 @@ pub(crate) fn plan(
     least_kept: f64,
 ) -> (Vec<PlannedPart>, Vec<DroppedPart>) {
     let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
+    #[expect(clippy::cast_precision_loss, reason = "point counts")]
+    let point_fraction = |k: usize| {
+        points.get(k).map_or(0.0, |&n| n as f64) / points.iter().sum::<usize>().max(1) as f64
+    };
     let topologies: Vec<Option<Topology>> = parts
         .parts
         .par_iter()
@@ -206,10 +221,12 @@ pub(crate) fn plan(
         .map(|(k, (part, topology))| {
             let name = format!("part {}", k + 1);
             let area_fraction = part.area / total;
+            let point_fraction = point_fraction(k);
             let dropped = |reason: String| DroppedPart {
                 name: name.clone(),
                 vertices: part.positions.len(),
                 area_fraction,
+                point_fraction,
                 reason,
             };
             let Some(topology) = topology else {
@@ -252,6 +269,7 @@ pub(crate) fn plan(
                             domain,
                             topology,
                             area_fraction,
+                            point_fraction,
                             why,
                             part: part.clone(),
                             max_handles,
@@ -274,18 +292,25 @@ pub(crate) fn plan(
     (planned, dropped)
 }
 
+/// The number of each part's vertices, in order: a mesh's points on each of its parts, for
+/// [`plan`].
+pub(crate) fn vertex_counts(parts: &MeshParts) -> Vec<usize> {
+    parts.parts.iter().map(|p| p.positions.len()).collect()
+}
+
 /// Leaves out of a point set's zero set the parts fewer than `min_points` of the points are
 /// nearest to (a few cells where the points' signed distance crosses zero off their surface,
 /// between two sheets or over a stray point): not parts of the point set, which its own gaps
-/// split, but of the grid. Returns how many were left out and the points nearest to them; the
-/// rest keep their order. With one part there is nothing to do.
+/// split, but of the grid. Returns how many were left out and the points nearest to them, and
+/// the points nearest to each part kept, in order (for [`plan`]); the parts kept keep their
+/// order. With one part nothing is left out, and every point is nearest to it.
 pub(crate) fn drop_fragments(
     parts: &mut MeshParts,
     points: &[DVec3],
     min_points: usize,
-) -> (usize, usize) {
+) -> ((usize, usize), Vec<usize>) {
     if parts.parts.len() < 2 {
-        return (0, 0);
+        return ((0, 0), vec![points.len(); parts.parts.len()]);
     }
     let (mut vertices, mut owner) = (Vec::new(), Vec::new());
     for (k, part) in parts.parts.iter().enumerate() {
@@ -294,7 +319,7 @@ pub(crate) fn drop_fragments(
     }
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(&vertices)
     else {
-        return (0, 0);
+        return ((0, 0), vertex_counts(parts));
     };
     let nearest: Vec<usize> = points
         .par_iter()
@@ -319,7 +344,8 @@ pub(crate) fn drop_fragments(
         stray += n;
         false
     });
-    (fragments, stray)
+    owned.retain(|&n| n >= min_points);
+    ((fragments, stray), owned)
 }
 
 /// A part's geometry image sampled from its parameterisation.
@@ -538,18 +564,19 @@ mod tests {
         let mut points = octahedron_points(10);
         points.push(DVec3::new(5.05, 0.02, 0.02));
         let mut parts = two_parts();
-        assert_eq!(drop_fragments(&mut parts, &points, 12), (1, 1));
+        // 80 points on the octahedron, one by the tetrahedron.
+        assert_eq!(drop_fragments(&mut parts, &points, 12), ((1, 1), vec![80]));
         assert_eq!(parts.parts.len(), 1);
         assert_eq!(parts.parts[0].positions.len(), 6, "the octahedron kept");
         // Twelve points about the tetrahedron: a part of the point set.
         points.extend((1..12).map(|k| DVec3::new(5.0 + 0.005 * k as f64, 0.03, 0.03)));
         let mut parts = two_parts();
-        assert_eq!(drop_fragments(&mut parts, &points, 12), (0, 0));
+        assert_eq!(drop_fragments(&mut parts, &points, 12), ((0, 0), vec![80, 12]));
         assert_eq!(parts.parts.len(), 2);
         // One part: nothing to do, whatever the points.
         let mut one = two_parts();
         one.parts.truncate(1);
-        assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), (0, 0));
+        assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), ((0, 0), vec![1]));
     }
 
     /// A part whose sheet map fails (here a closed octahedron taken for a sheet: a disc map
@@ -558,8 +585,15 @@ mod tests {
     #[test]
     fn a_part_whose_sheet_map_fails_is_fitted_as_a_sphere() {
         let parts = two_parts();
-        let (mut planned, dropped) =
-            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES, 0.0);
+        let (mut planned, dropped) = plan(
+            &parts,
+            &vertex_counts(&parts),
+            Boundary::Auto,
+            Layout::FlatOctahedron,
+            (0.0, 4),
+            MAX_HANDLES,
+            0.0,
+        );
         assert!(dropped.is_empty());
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
@@ -639,8 +673,15 @@ mod tests {
         }
         let parts = mesh_parts(&p, &t).unwrap();
         assert_eq!(parts.parts.len(), 1);
-        let (mut planned, _) =
-            plan(&parts, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES, 0.0);
+        let (mut planned, _) = plan(
+            &parts,
+            &vertex_counts(&parts),
+            Boundary::Auto,
+            Layout::FlatOctahedron,
+            (0.0, 4),
+            MAX_HANDLES,
+            0.0,
+        );
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sheet, "{}", part.why);
         let sheet =
