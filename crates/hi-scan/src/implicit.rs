@@ -106,6 +106,19 @@ const FINE_MIN: f64 = 0.5;
 /// spacing's grid again where the finer grid's zero set cannot be parameterised.
 const EVEN: f64 = 0.8;
 
+/// The median of `spacings` (points' own spacings, reordered) and the spacing of their denser
+/// parts ([`PointSurface::fine_spacing`]): the 10th percentile over [`RANDOM_TENTH`], at least
+/// [`FINE_MIN`] of the median, or the median itself when that ratio is [`EVEN`] of it or more.
+/// Both are at least the least positive number; `spacings` must not be empty.
+fn median_and_fine(spacings: &mut [f64]) -> (f64, f64) {
+    spacings.sort_by(f64::total_cmp);
+    let spacing = spacings[spacings.len() / 2].max(f64::MIN_POSITIVE);
+    // The denser tenth against a random sample's: evenly dense above EVEN.
+    let evenness = spacings[spacings.len() / 10] / (RANDOM_TENTH * spacing);
+    let fine = if evenness >= EVEN { spacing } else { evenness.max(FINE_MIN) * spacing };
+    (spacing, fine.max(f64::MIN_POSITIVE))
+}
+
 /// Patches blended per projection.
 const BLEND: usize = 3;
 
@@ -220,11 +233,7 @@ impl PointSurface {
             })
             .collect();
         let mut spacings: Vec<f64> = fitted.iter().map(|f| f.1).collect();
-        spacings.sort_by(f64::total_cmp);
-        let spacing = spacings[spacings.len() / 2].max(f64::MIN_POSITIVE);
-        // The denser tenth against a random sample's: evenly dense above EVEN.
-        let evenness = spacings[spacings.len() / 10] / (RANDOM_TENTH * spacing);
-        let fine = if evenness >= EVEN { spacing } else { evenness.max(FINE_MIN) * spacing };
+        let (spacing, fine) = median_and_fine(&mut spacings);
         let (mut patches, nearest): (Vec<Patch>, Vec<[u32; TREE_NEIGHBOURS]>) =
             fitted.into_iter().map(|f| (f.0, f.2)).unzip();
         let mut areas: Vec<f64> = patches.iter().map(|p| p.area).collect();
@@ -271,6 +280,22 @@ impl PointSurface {
     #[must_use]
     pub fn zero_set_cell(&self) -> f64 {
         CELL * self.fine
+    }
+
+    /// The grid spacing at which [`PointSurface::zero_set_about`] follows every detail that the
+    /// points `about` (indices) resolve: [`CELL`] times the [`PointSurface::fine_spacing`] of
+    /// those points alone (from their own spacings, [`PointSurface::local_spacing`]); `None`
+    /// when `about` is empty or names no point. A part of a scan sampled more sparsely than
+    /// the rest (an aircraft's fuselage beside its finely sampled wings) gets a coarser grid
+    /// than [`PointSurface::zero_set_cell`], which follows the densest parts.
+    #[must_use]
+    pub fn zero_set_cell_of(&self, about: &[u32]) -> Option<f64> {
+        let mut spacings: Vec<f64> =
+            about.iter().filter_map(|&k| self.patches.get(k as usize)).map(|p| p.local).collect();
+        if spacings.is_empty() {
+            return None;
+        }
+        Some(CELL * median_and_fine(&mut spacings).1)
     }
 
     /// The number of points (and patches).
@@ -648,6 +673,61 @@ impl PointSurface {
     /// assert_eq!(vertices.len() as i64 - triangles.len() as i64 / 2, 2);
     /// ```
     pub fn zero_set(&self, cell: f64) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Error> {
+        self.zero_set_of(cell, &self.patches.iter().collect::<Vec<_>>())
+    }
+
+    /// [`PointSurface::zero_set`] in the band about the points `about` (indices) only: the
+    /// zero set of the same signed distance (every point's patch still counts where it is the
+    /// nearest), on a grid that spans those points, so that a part of the scan can be taken
+    /// again on a grid of its own ([`PointSurface::zero_set_cell_of`]). Indices beyond
+    /// [`PointSurface::len`] are skipped.
+    ///
+    /// # Errors
+    ///
+    /// As [`PointSurface::zero_set`]'s; [`Error::Degenerate`] when `about` names no point.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use hi_scan::implicit::PointSurface;
+    ///
+    /// // Two unit spheres 4 apart, 2000 points each (Fibonacci): the zero set about the
+    /// // second's points is the second sphere alone.
+    /// let sphere = |c: DVec3| {
+    ///     (0..2000).map(move |k| {
+    ///         let z = 1.0 - (2 * k + 1) as f64 / 2000.0;
+    ///         let phi = k as f64 * 2.399_963_229_728_653;
+    ///         let s = (1.0 - z * z).sqrt();
+    ///         c + DVec3::new(s * phi.cos(), s * phi.sin(), z)
+    ///     })
+    /// };
+    /// let points: Vec<DVec3> = sphere(DVec3::ZERO).chain(sphere(4.0 * DVec3::X)).collect();
+    /// let surface = PointSurface::try_new(&points, None, 16).unwrap();
+    /// let second: Vec<u32> = (2000..4000).collect();
+    /// let cell = surface.zero_set_cell_of(&second).unwrap();
+    /// let (vertices, _) = surface.zero_set_about(cell, &second).unwrap();
+    /// assert!(vertices.iter().all(|p| ((*p - 4.0 * DVec3::X).length() - 1.0).abs() < 0.02));
+    /// ```
+    pub fn zero_set_about(
+        &self,
+        cell: f64,
+        about: &[u32],
+    ) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Error> {
+        let seeds: Vec<&Patch> =
+            about.iter().filter_map(|&k| self.patches.get(k as usize)).collect();
+        if seeds.is_empty() {
+            return Err(Error::Degenerate { what: "no point to take the zero set about" });
+        }
+        self.zero_set_of(cell, &seeds)
+    }
+
+    /// [`PointSurface::zero_set`] on the band about the patches `seeds`.
+    fn zero_set_of(
+        &self,
+        cell: f64,
+        seeds: &[&Patch],
+    ) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), Error> {
         if !(cell.is_finite() && cell > 0.0) {
             return Err(Error::InvalidOption {
                 name: "zero-set cell",
@@ -656,8 +736,7 @@ impl PointSurface {
             });
         }
         let h = cell;
-        let (lo, hi) = self
-            .patches
+        let (lo, hi) = seeds
             .iter()
             .map(|p| p.origin)
             .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
@@ -678,7 +757,7 @@ impl PointSurface {
         }
         // The band's nodes are marked +∞, then given their value or NaN.
         let mut grid = crate::surfacenets::SparseGrid::new(origin, h, dims);
-        for patch in &self.patches {
+        for patch in seeds {
             let p = patch.origin;
             #[expect(clippy::cast_possible_truncation, reason = "inside the grid")]
             let c = ((p - origin) / h).floor().to_array().map(|x| x as isize);

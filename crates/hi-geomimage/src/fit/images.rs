@@ -245,6 +245,10 @@ fn point_sources_on(
             planned = parts.map(|mut parts| {
                 let nearest;
                 (fragments, nearest) = drop_fragments(&mut parts, reps, PART_MIN_VERTICES);
+                let (more, nearest) =
+                    regrid_sparse_parts(&surface, reps, &mut parts, nearest, coarser * cell);
+                fragments = (fragments.0 + more.0, fragments.1 + more.1);
+                let nearest: Vec<usize> = nearest.iter().map(Vec::len).collect();
                 let floor = (PART_FLOOR, PART_MIN_VERTICES);
                 // On a grid with a coarser one to come, a zero set whose parts of few
                 // enough handles hold too little of it is given up at once.
@@ -316,6 +320,99 @@ fn point_sources_on(
         reason,
         image_points: Vec::new(),
     })
+}
+
+/// Each part of the zero set `parts` (taken on a grid of `cell`) whose nearest points (`nearest`,
+/// indices into `reps`, one list per part) are sparse enough for a grid [`REGRID_RATIO`] times
+/// as coarse or more ([`PointSurface::zero_set_cell_of`], scaled as `cell` is from
+/// [`PointSurface::zero_set_cell`]) taken again on a coarser grid about its points alone
+/// ([`retaken`]): a cell that follows the points' density part by part, fine on the finely
+/// sampled parts and coarse on the rest, where the one grid of the densest parts would put
+/// many vertices per point (and as many handles to cut and vertices to parameterise) for no
+/// detail (parts of at least [`REGRID_MIN_POINTS`] points only). Returns the fragments left out
+/// of the parts taken again (count, points) and the points nearest to each part, the parts
+/// again largest first.
+fn regrid_sparse_parts(
+    surface: &PointSurface,
+    reps: &[DVec3],
+    parts: &mut MeshParts,
+    nearest: Vec<Vec<u32>>,
+    cell: f64,
+) -> ((usize, usize), Vec<Vec<u32>>) {
+    let scale = cell / surface.zero_set_cell();
+    let again: Vec<Option<Retaken>> = parts
+        .parts
+        .par_iter()
+        .zip(&nearest)
+        .map(|(part, about)| {
+            let own = scale * surface.zero_set_cell_of(about)?;
+            if about.len() < REGRID_MIN_POINTS || own < REGRID_RATIO * cell {
+                return None;
+            }
+            retaken(surface, reps, part, about, (own, REGRID_RATIO * cell))
+        })
+        .collect();
+    if again.iter().all(Option::is_none) {
+        return ((0, 0), nearest);
+    }
+    let mut fragments = (0, 0);
+    let mut both: Vec<(MeshPart, Vec<u32>)> = Vec::new();
+    for ((part, about), again) in
+        std::mem::take(&mut parts.parts).into_iter().zip(nearest).zip(again)
+    {
+        match again {
+            Some(Retaken { parts: taken, nearest: within, fragments: dropped }) => {
+                fragments = (fragments.0 + dropped.0, fragments.1 + dropped.1);
+                let within =
+                    within.into_iter().map(|w| w.into_iter().map(|k| about[k as usize]).collect());
+                both.extend(taken.parts.into_iter().zip(within));
+            }
+            None => both.push((part, about)),
+        }
+    }
+    // Largest first again.
+    both.sort_by(|a, b| b.0.area.total_cmp(&a.0.area));
+    let nearest;
+    (parts.parts, nearest) = both.into_iter().unzip();
+    (fragments, nearest)
+}
+
+/// A part of a zero set taken again ([`retaken`]).
+struct Retaken {
+    /// What it became: one part or more, largest first.
+    parts: MeshParts,
+    /// The points nearest to each (indices into the points it was taken about).
+    nearest: Vec<Vec<u32>>,
+    /// The fragments of the grid left out: how many, and the points nearest to them.
+    fragments: (usize, usize),
+}
+
+/// The part `part` of a zero set taken again about its points `about` (indices into `reps`) on
+/// the coarsest grid of cell `own`, `own` · [`REGRID_STEP`], `own` · [`REGRID_STEP`]², … (down
+/// to `least`) whose largest part ([`drop_fragments`] leaving out the grid's fragments) keeps
+/// at least [`REGRID_AREA`] of its area: a coarser grid must not cut it in two where it is
+/// thinner than the cell (a fin joined by a narrow root) nor lose a thin part of it; a speck it
+/// parts from the rest is a part of its own. `None` when no grid keeps it.
+fn retaken(
+    surface: &PointSurface,
+    reps: &[DVec3],
+    part: &MeshPart,
+    about: &[u32],
+    (own, least): (f64, f64),
+) -> Option<Retaken> {
+    let points: Vec<DVec3> = about.iter().map(|&k| reps[k as usize]).collect();
+    let mut cell = own;
+    while cell >= least {
+        let taken = surface.zero_set_about(cell, about).and_then(|(v, t)| mesh_parts(&v, &t));
+        if let Ok(mut taken) = taken {
+            let (dropped, within) = drop_fragments(&mut taken, &points, PART_MIN_VERTICES);
+            if taken.parts.first().is_some_and(|one| one.area >= REGRID_AREA * part.area) {
+                return Some(Retaken { parts: taken, nearest: within, fragments: dropped });
+            }
+        }
+        cell *= REGRID_STEP;
+    }
+    None
 }
 
 /// Whether a zero set on a grid finer than that of the zero set `parts` (split into parts)
@@ -654,5 +751,55 @@ mod tests {
             assert_eq!(hi_scan::repair::part_topology(&parts.parts[0]).genus, g as usize);
             assert_eq!(finer_may_keep(&parts, floor), tried, "genus {g}");
         }
+    }
+
+    /// Two unit spheres 5 apart, one sampled by 4000 points and one by 500: the zero set's
+    /// grid follows the dense one's spacing, which puts about 8 times as many vertices on the
+    /// sparse one as its own points need (the spacings' ratio √8, squared); taken again, the
+    /// sparse sphere's part has a quarter of its vertices or fewer, still on the sphere and
+    /// closed, while the dense sphere's part is left as it was.
+    #[test]
+    fn a_part_sampled_more_sparsely_than_the_rest_is_taken_again_on_a_coarser_grid() {
+        let centre = DVec3::new(5.0, 0.0, 0.0);
+        let points: Vec<DVec3> = hi_testkit::fibonacci_sphere(4000)
+            .map(DVec3::from_array)
+            .chain(hi_testkit::fibonacci_sphere(500).map(|p| DVec3::from_array(p) + centre))
+            .collect();
+        let surface = PointSurface::try_new(&points, None, NEIGHBOURS).unwrap();
+        let cell = surface.zero_set_cell();
+        let (v, t) = surface.zero_set(cell).unwrap();
+        let mut parts = mesh_parts(&v, &t).unwrap();
+        let (_, nearest) = drop_fragments(&mut parts, &points, PART_MIN_VERTICES);
+        assert_eq!(parts.parts.len(), 2);
+        let sparse = |parts: &MeshParts| {
+            parts.parts.iter().position(|p| p.positions[0].x > 2.5).expect("the sparse sphere")
+        };
+        let before = parts.clone();
+        let k = sparse(&before);
+        let (_, nearest) = regrid_sparse_parts(&surface, &points, &mut parts, nearest, cell);
+        assert_eq!(parts.parts.len(), 2);
+        let j = sparse(&parts);
+        let (old, new) = (&before.parts[k], &parts.parts[j]);
+        assert!(
+            4 * new.positions.len() <= old.positions.len(),
+            "{} vertices, {} before",
+            new.positions.len(),
+            old.positions.len()
+        );
+        // Each vertex the mean of crossings at most a cell's diagonal h√3 apart on a sphere of
+        // radius 1: within 3h²/8 inside it (the sag of a chord that long), and a little for
+        // the points' patches.
+        let h = surface.zero_set_cell_of(&nearest[j]).unwrap();
+        assert!(h > 2.0 * cell, "{h} against {cell}");
+        for p in &new.positions {
+            let off = (*p - centre).length() - 1.0;
+            assert!((-3.0 * h * h / 8.0 - 0.005..0.005).contains(&off), "{p}: {off}, h {h}");
+        }
+        // Closed, genus 0: V − E + F = 2 with E = 3F/2.
+        assert_eq!(new.positions.len() as i64 - new.triangles.len() as i64 / 2, 2);
+        assert_eq!(parts.parts[1 - j], before.parts[1 - k], "the dense sphere's part");
+        // The points nearest to each part: the sparse sphere's are its own 500.
+        assert_eq!(nearest[j], (4000..4500).collect::<Vec<u32>>());
+        assert_eq!(nearest[1 - j], (0..4000).collect::<Vec<u32>>());
     }
 }

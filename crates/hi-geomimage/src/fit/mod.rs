@@ -51,7 +51,7 @@ use hi_par::*;
 use hi_scan::cloud::{cell_for_count, merge_duplicates, summarise};
 use hi_scan::distance::{Distances, bounding_diagonal};
 use hi_scan::implicit::{CELL, MovingLeastSquares, PointSurface};
-use hi_scan::repair::{MAX_HANDLES, MeshParts, Repair, mesh_parts};
+use hi_scan::repair::{MAX_HANDLES, MeshPart, MeshParts, Repair, mesh_parts};
 use hi_scan::scan::Scan;
 use hi_surface::HarmonicSurface;
 
@@ -500,6 +500,23 @@ pub const MAX_HOLE_FRACTION: f64 = 0.5;
 /// above the floor that can be made surfaces hold [`MIN_AREA_KEPT`] of its area (else the rays
 /// are wrapped).
 const ZERO_SET_COARSER: [f64; 2] = [1.0, 2.0];
+
+/// A part of a point set's zero set is taken again on a grid of its own when its points are
+/// sparse enough for a grid this many times as coarse as the one it was found on (see
+/// `regrid_sparse_parts`).
+const REGRID_RATIO: f64 = 1.5;
+
+/// The grids a part of a point set's zero set is taken again on (see `retaken`), each this
+/// times the cell of the one before.
+const REGRID_STEP: f64 = 0.8;
+
+/// The least share of its area a part of a point set's zero set taken again on a coarser grid
+/// must keep (see `retaken`).
+const REGRID_AREA: f64 = 0.9;
+
+/// A part of a point set's zero set nearest to fewer points keeps the grid it was found on:
+/// too few to say how densely the part is sampled.
+const REGRID_MIN_POINTS: usize = 64;
 
 /// A point set's zero set on a finer grid of [`ZERO_SET_COARSER`] is taken to have at least
 /// this many times the handles of its zero set on the coarsest, which is taken first: when

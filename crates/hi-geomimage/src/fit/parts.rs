@@ -302,15 +302,18 @@ pub(crate) fn vertex_counts(parts: &MeshParts) -> Vec<usize> {
 /// nearest to (a few cells where the points' signed distance crosses zero off their surface,
 /// between two sheets or over a stray point): not parts of the point set, which its own gaps
 /// split, but of the grid. Returns how many were left out and the points nearest to them, and
-/// the points nearest to each part kept, in order (for [`plan`]); the parts kept keep their
-/// order. With one part nothing is left out, and every point is nearest to it.
+/// the points (indices) nearest to each part kept, in order (their counts are [`plan`]'s
+/// `points`); the parts kept keep their order. With one part nothing is left out, and every
+/// point is nearest to it.
 pub(crate) fn drop_fragments(
     parts: &mut MeshParts,
     points: &[DVec3],
     min_points: usize,
-) -> ((usize, usize), Vec<usize>) {
+) -> ((usize, usize), Vec<Vec<u32>>) {
+    #[expect(clippy::cast_possible_truncation, reason = "point indices fit in u32")]
+    let all = || (0..points.len() as u32).collect::<Vec<u32>>();
     if parts.parts.len() < 2 {
-        return ((0, 0), vec![points.len(); parts.parts.len()]);
+        return ((0, 0), parts.parts.iter().map(|_| all()).collect());
     }
     let (mut vertices, mut owner) = (Vec::new(), Vec::new());
     for (k, part) in parts.parts.iter().enumerate() {
@@ -319,7 +322,7 @@ pub(crate) fn drop_fragments(
     }
     let Ok(tree): Result<ImmutableKdTree<f64, 3>, _> = ImmutableKdTree::new_from_slice(&vertices)
     else {
-        return ((0, 0), vertex_counts(parts));
+        return ((0, 0), vec![Vec::new(); parts.parts.len()]);
     };
     let nearest: Vec<usize> = points
         .par_iter()
@@ -328,14 +331,15 @@ pub(crate) fn drop_fragments(
             owner[n.item as usize]
         })
         .collect();
-    let mut owned = vec![0usize; parts.parts.len()];
-    for k in nearest {
-        owned[k] += 1;
+    let mut owned = vec![Vec::new(); parts.parts.len()];
+    for (i, k) in nearest.into_iter().enumerate() {
+        #[expect(clippy::cast_possible_truncation, reason = "point indices fit in u32")]
+        owned[k].push(i as u32);
     }
     let mut k = 0;
     let (mut fragments, mut stray) = (0, 0);
     parts.parts.retain(|_| {
-        let n = owned[k];
+        let n = owned[k].len();
         k += 1;
         if n >= min_points {
             return true;
@@ -344,7 +348,7 @@ pub(crate) fn drop_fragments(
         stray += n;
         false
     });
-    owned.retain(|&n| n >= min_points);
+    owned.retain(|o| o.len() >= min_points);
     ((fragments, stray), owned)
 }
 
@@ -565,18 +569,22 @@ mod tests {
         points.push(DVec3::new(5.05, 0.02, 0.02));
         let mut parts = two_parts();
         // 80 points on the octahedron, one by the tetrahedron.
-        assert_eq!(drop_fragments(&mut parts, &points, 12), ((1, 1), vec![80]));
+        let (dropped, nearest) = drop_fragments(&mut parts, &points, 12);
+        assert_eq!(dropped, (1, 1));
+        assert_eq!(nearest, vec![(0..80).collect::<Vec<u32>>()]);
         assert_eq!(parts.parts.len(), 1);
         assert_eq!(parts.parts[0].positions.len(), 6, "the octahedron kept");
         // Twelve points about the tetrahedron: a part of the point set.
         points.extend((1..12).map(|k| DVec3::new(5.0 + 0.005 * k as f64, 0.03, 0.03)));
         let mut parts = two_parts();
-        assert_eq!(drop_fragments(&mut parts, &points, 12), ((0, 0), vec![80, 12]));
+        let (dropped, nearest) = drop_fragments(&mut parts, &points, 12);
+        assert_eq!(dropped, (0, 0));
+        assert_eq!(nearest, vec![(0..80).collect::<Vec<u32>>(), (80..92).collect()]);
         assert_eq!(parts.parts.len(), 2);
         // One part: nothing to do, whatever the points.
         let mut one = two_parts();
         one.parts.truncate(1);
-        assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), ((0, 0), vec![1]));
+        assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), ((0, 0), vec![vec![0]]));
     }
 
     /// A part whose sheet map fails (here a closed octahedron taken for a sheet: a disc map
