@@ -587,21 +587,19 @@ mod tests {
         assert_eq!(drop_fragments(&mut one, &[DVec3::ZERO], 12), ((0, 0), vec![vec![0]]));
     }
 
+    /// [`plan`] with every part above the floor, each one's points its vertices.
+    fn plan_every_part(parts: &MeshParts) -> (Vec<PlannedPart>, Vec<DroppedPart>) {
+        let points = vertex_counts(parts);
+        plan(parts, &points, Boundary::Auto, Layout::FlatOctahedron, (0.0, 4), MAX_HANDLES, 0.0)
+    }
+
     /// A part whose sheet map fails (here a closed octahedron taken for a sheet: a disc map
     /// needs a boundary) is closed as a sphere and mapped over it, and says so; its image is
     /// the sphere's, every texel on the octahedron.
     #[test]
     fn a_part_whose_sheet_map_fails_is_fitted_as_a_sphere() {
         let parts = two_parts();
-        let (mut planned, dropped) = plan(
-            &parts,
-            &vertex_counts(&parts),
-            Boundary::Auto,
-            Layout::FlatOctahedron,
-            (0.0, 4),
-            MAX_HANDLES,
-            0.0,
-        );
+        let (mut planned, dropped) = plan_every_part(&parts);
         assert!(dropped.is_empty());
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sphere(Layout::FlatOctahedron));
@@ -681,15 +679,7 @@ mod tests {
         }
         let parts = mesh_parts(&p, &t).unwrap();
         assert_eq!(parts.parts.len(), 1);
-        let (mut planned, _) = plan(
-            &parts,
-            &vertex_counts(&parts),
-            Boundary::Auto,
-            Layout::FlatOctahedron,
-            (0.0, 4),
-            MAX_HANDLES,
-            0.0,
-        );
+        let (mut planned, _) = plan_every_part(&parts);
         let mut part = planned.swap_remove(0);
         assert_eq!(part.domain, Domain::Sheet, "{}", part.why);
         let sheet =
