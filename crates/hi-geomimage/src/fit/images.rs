@@ -339,17 +339,24 @@ fn regrid_sparse_parts(
     nearest: Vec<Vec<u32>>,
     cell: f64,
 ) -> ((usize, usize), Vec<Vec<u32>>) {
+    // A lone part's points are all of them, whose grid `cell` is.
+    if parts.parts.len() < 2 {
+        return ((0, 0), nearest);
+    }
     let scale = cell / surface.zero_set_cell();
     let again: Vec<Option<Retaken>> = parts
         .parts
         .par_iter()
         .zip(&nearest)
         .map(|(part, about)| {
-            let own = scale * surface.zero_set_cell_of(about)?;
-            if about.len() < REGRID_MIN_POINTS || own < REGRID_RATIO * cell {
+            if about.len() < REGRID_MIN_POINTS {
                 return None;
             }
-            retaken(surface, reps, part, about, (own, REGRID_RATIO * cell))
+            let own = scale * surface.zero_set_cell_of(about)?;
+            if own < REGRID_RATIO * cell {
+                return None;
+            }
+            retaken(surface, reps, part.area, about, (own, REGRID_RATIO * cell))
         })
         .collect();
     if again.iter().all(Option::is_none) {
@@ -387,16 +394,16 @@ struct Retaken {
     fragments: (usize, usize),
 }
 
-/// The part `part` of a zero set taken again about its points `about` (indices into `reps`) on
-/// the coarsest grid of cell `own`, `own` · [`REGRID_STEP`], `own` · [`REGRID_STEP`]², … (down
-/// to `least`) whose largest part ([`drop_fragments`] leaving out the grid's fragments) keeps
-/// at least [`REGRID_AREA`] of its area: a coarser grid must not cut it in two where it is
+/// A part of a zero set, of area `area`, taken again about its points `about` (indices into
+/// `reps`) on the coarsest grid of cell `own`, `own` · [`REGRID_STEP`], `own` ·
+/// [`REGRID_STEP`]², … (down to `least`) whose largest part ([`drop_fragments`] leaving out the
+/// grid's fragments) keeps at least [`REGRID_AREA`] of that area: a coarser grid must not cut it in two where it is
 /// thinner than the cell (a fin joined by a narrow root) nor lose a thin part of it; a speck it
 /// parts from the rest is a part of its own. `None` when no grid keeps it.
 fn retaken(
     surface: &PointSurface,
     reps: &[DVec3],
-    part: &MeshPart,
+    area: f64,
     about: &[u32],
     (own, least): (f64, f64),
 ) -> Option<Retaken> {
@@ -406,7 +413,7 @@ fn retaken(
         let taken = surface.zero_set_about(cell, about).and_then(|(v, t)| mesh_parts(&v, &t));
         if let Ok(mut taken) = taken {
             let (dropped, within) = drop_fragments(&mut taken, &points, PART_MIN_VERTICES);
-            if taken.parts.first().is_some_and(|one| one.area >= REGRID_AREA * part.area) {
+            if taken.parts.first().is_some_and(|one| one.area >= REGRID_AREA * area) {
                 return Some(Retaken { parts: taken, nearest: within, fragments: dropped });
             }
         }

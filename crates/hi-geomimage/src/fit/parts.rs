@@ -191,10 +191,10 @@ pub(crate) fn plan(
     least_kept: f64,
 ) -> (Vec<PlannedPart>, Vec<DroppedPart>) {
     let total: f64 = parts.parts.iter().map(|p| p.area).sum::<f64>().max(f64::MIN_POSITIVE);
-    #[expect(clippy::cast_precision_loss, reason = "point counts")]
-    let point_fraction = |k: usize| {
-        points.get(k).map_or(0.0, |&n| n as f64) / points.iter().sum::<usize>().max(1) as f64
-    };
+    #[expect(clippy::cast_precision_loss, reason = "a point count")]
+    let every = points.iter().sum::<usize>().max(1) as f64;
+    #[expect(clippy::cast_precision_loss, reason = "a point count")]
+    let point_fraction = |k: usize| points.get(k).map_or(0.0, |&n| n as f64) / every;
     let topologies: Vec<Option<Topology>> = parts
         .parts
         .par_iter()
